@@ -1,0 +1,74 @@
+#include "PsiTable.h"
+
+#include "PsiIntegration.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <thread>
+
+namespace psi
+{
+
+double PsiTable::Lookup(double gammab, double gammaf) const
+{
+  auto coord = [this](double g, int& i0, double& w) {
+    const double x = std::min(std::max(g, 0.0), 1.0) * (this->N - 1);
+    i0 = std::min(static_cast<int>(std::floor(x)), this->N - 2);
+    w = x - i0;
+  };
+  int i, j;
+  double wi, wj;
+  coord(gammab, i, wi);
+  coord(gammaf, j, wj);
+  const float* v = this->Values.data();
+  const double a = v[j * N + i] * (1 - wi) + v[j * N + i + 1] * wi;
+  const double b = v[(j + 1) * N + i] * (1 - wi) + v[(j + 1) * N + i + 1] * wi;
+  return a * (1 - wj) + b * wj;
+}
+
+PsiTable BuildPsiTable(int n)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  PsiTable t;
+  t.N = std::max(n, 2);
+  t.Values.resize(static_cast<size_t>(t.N) * t.N);
+  const int threads = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> pool;
+  for (int w = 0; w < threads; ++w)
+  {
+    pool.emplace_back([&t, w, threads] {
+      for (int j = w; j < t.N; j += threads)
+      {
+        const double taufD = TauDOf(static_cast<double>(j) / (t.N - 1));
+        for (int i = 0; i < t.N; ++i)
+        {
+          const double taubD = TauDOf(static_cast<double>(i) / (t.N - 1));
+          t.Values[static_cast<size_t>(j) * t.N + i] = static_cast<float>(Psi(taubD, taufD));
+        }
+      }
+    });
+  }
+  for (auto& th : pool)
+  {
+    th.join();
+  }
+  t.BuildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return t;
+}
+
+const PsiTable& GetDefaultPsiTable()
+{
+  static const PsiTable table = [] {
+    int n = 1024;
+    if (const char* e = std::getenv("PSI_TABLE_SIZE"))
+    {
+      n = std::max(2, std::atoi(e));
+    }
+    return BuildPsiTable(n);
+  }();
+  return table;
+}
+
+} // namespace psi

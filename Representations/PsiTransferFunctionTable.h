@@ -1,0 +1,35 @@
+// PsiTransferFunctionTable: samples a ParaView color map and opacity function into one RGBA
+// float table over a scalar range: rgb = luminance L(s), a = attenuation tau(s).
+//
+// tau = opacity / ScalarOpacityUnitDistance, the convention of VTK's unstructured-grid ray
+// integrators (vtkUnstructuredGridLinearRayIntegrator::GetTransferFunction), so that 'Psi Volume'
+// and ParaView's 'Volume' agree on what an opacity function means.
+#ifndef PsiTransferFunctionTable_h
+#define PsiTransferFunctionTable_h
+
+#include "PsiVolumeRepresentationsModule.h"
+
+#include <vector>
+
+class vtkVolumeProperty;
+
+namespace psi
+{
+
+struct PSIVOLUMEREPRESENTATIONS_EXPORT TransferFunctionTable
+{
+  double Range[2] = { 0, 1 }; ///< scalar at the first and the last sample
+  int Size = 0;
+  std::vector<float> Rgba; ///< Size * 4 values: L.r, L.g, L.b, tau
+
+  /// Linear interpolation at scalar s (clamped at the ends), as the GPU's linear filter does.
+  void Lookup(double s, double out[4]) const;
+};
+
+/// Samples component 0 of `property` at `size` evenly spaced scalars over `range`.
+PSIVOLUMEREPRESENTATIONS_EXPORT TransferFunctionTable SampleTransferFunction(
+  vtkVolumeProperty* property, const double range[2], int size);
+
+} // namespace psi
+
+#endif

@@ -1,0 +1,31 @@
+// PsiVisibilitySort: back-to-front ordering of tetrahedra for projected-tetrahedra compositing.
+//
+// Centroid sort (HAPT, seed 002 §3.1): each tetrahedron is keyed by the distance from the eye to
+// its centroid (perspective) or by the centroid's depth along the view direction (parallel), and
+// the keys are sorted in parallel (vtkSMPTools::Sort). Approximate: adjacent cells of very
+// different size can be misordered; MPVONC (exact for convex meshes) is its own sort method.
+#ifndef PsiVisibilitySort_h
+#define PsiVisibilitySort_h
+
+#include "PsiVolumeRepresentationsModule.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace psi
+{
+
+/// Centroids (x, y, z per tetrahedron) of `numTets` cells given by 4 point ids each.
+PSIVOLUMEREPRESENTATIONS_EXPORT std::vector<float> ComputeCentroids(
+  const float* points4, const uint32_t* tets, size_t numTets);
+
+/// Fills `order` with the ids of all tetrahedra, farthest first.
+/// eye: camera position (perspective) or, with parallel = true, the view direction (from the eye
+/// into the scene), all in the same coordinates as the centroids.
+PSIVOLUMEREPRESENTATIONS_EXPORT void SortBackToFront(const std::vector<float>& centroids,
+  const double eye[3], bool parallel, std::vector<uint32_t>& order);
+
+} // namespace psi
+
+#endif

@@ -1,0 +1,645 @@
+#include "vtkPsiVolumeMapper.h"
+
+#include "PsiCompositeFS.h"
+#include "PsiIntegrateAverage.h"
+#include "PsiIntegratePartialPreIntegration.h"
+#include "PsiProjectionClasses.h"
+#include "PsiTable.h"
+#include "PsiTransferFunctionTable.h"
+#include "PsiVisibilitySort.h"
+#include "PsiVolumeFS.h"
+#include "PsiVolumeGS.h"
+#include "PsiVolumeVS.h"
+
+#include "vtkCamera.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkIdList.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLCamera.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point t0)
+{
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// Replaces the first occurrence of `tag` in `src`.
+void Substitute(std::string& src, const std::string& tag, const std::string& with)
+{
+  const auto pos = src.find(tag);
+  if (pos != std::string::npos)
+  {
+    src.replace(pos, tag.size(), with);
+  }
+}
+
+const char* IntegratorSource(int method)
+{
+  switch (method)
+  {
+    case vtkPsiVolumeMapper::AVERAGE:
+      return PsiIntegrateAverage;
+    default:
+      return PsiIntegratePartialPreIntegration;
+  }
+}
+
+// The mesh as uploaded: points (shifted model xyz + scalar) and 4 point ids per tetrahedron.
+struct MeshData
+{
+  std::vector<float> Points4;
+  std::vector<uint32_t> Tets;
+  double Shift[3] = { 0, 0, 0 };
+  double ScalarRange[2] = { 0, 1 };
+  vtkIdType NonTetCells = 0;
+  vtkIdType NonFiniteTets = 0;
+};
+
+// Gathers tetrahedra and scalars; non-tetrahedral cells and tetrahedra with NaN/Inf scalars are
+// skipped and counted. Cell scalars give each tetrahedron four private points.
+MeshData GatherMesh(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cellScalars)
+{
+  MeshData m;
+  double b[6];
+  input->GetBounds(b);
+  for (int k = 0; k < 3; ++k)
+  {
+    m.Shift[k] = 0.5 * (b[2 * k] + b[2 * k + 1]);
+  }
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  const vtkIdType np = input->GetNumberOfPoints(), nc = input->GetNumberOfCells();
+  std::vector<float> pointScalar;
+  std::vector<char> pointFinite;
+  if (!cellScalars)
+  {
+    pointScalar.resize(np);
+    pointFinite.resize(np);
+    for (vtkIdType i = 0; i < np; ++i)
+    {
+      const double s = scalars->GetComponent(i, 0);
+      pointFinite[i] = std::isfinite(s) && std::abs(s) < 1e37;
+      pointScalar[i] = pointFinite[i] ? static_cast<float>(s) : 0.0f;
+    }
+    m.Points4.resize(4 * static_cast<size_t>(np));
+    for (vtkIdType i = 0; i < np; ++i)
+    {
+      double p[3];
+      input->GetPoint(i, p);
+      float* o = &m.Points4[4 * i];
+      o[0] = static_cast<float>(p[0] - m.Shift[0]);
+      o[1] = static_cast<float>(p[1] - m.Shift[1]);
+      o[2] = static_cast<float>(p[2] - m.Shift[2]);
+      o[3] = pointScalar[i];
+    }
+  }
+  m.Tets.reserve(4 * static_cast<size_t>(nc));
+  vtkNew<vtkIdList> ids;
+  vtkUnstructuredGrid* ug = vtkUnstructuredGrid::SafeDownCast(input);
+  for (vtkIdType c = 0; c < nc; ++c)
+  {
+    if (input->GetCellType(c) != VTK_TETRA)
+    {
+      ++m.NonTetCells;
+      continue;
+    }
+    vtkIdType pts[4];
+    if (ug)
+    {
+      vtkIdType npts;
+      const vtkIdType* p;
+      ug->GetCellPoints(c, npts, p);
+      std::copy(p, p + 4, pts);
+    }
+    else
+    {
+      input->GetCellPoints(c, ids);
+      for (int v = 0; v < 4; ++v)
+      {
+        pts[v] = ids->GetId(v);
+      }
+    }
+    if (cellScalars)
+    {
+      const double s = scalars->GetComponent(c, 0);
+      if (!std::isfinite(s) || std::abs(s) >= 1e37)
+      {
+        ++m.NonFiniteTets;
+        continue;
+      }
+      lo = std::min(lo, s);
+      hi = std::max(hi, s);
+      const uint32_t base = static_cast<uint32_t>(m.Points4.size() / 4);
+      for (int v = 0; v < 4; ++v)
+      {
+        double p[3];
+        input->GetPoint(pts[v], p);
+        m.Points4.insert(m.Points4.end(),
+          { static_cast<float>(p[0] - m.Shift[0]), static_cast<float>(p[1] - m.Shift[1]),
+            static_cast<float>(p[2] - m.Shift[2]), static_cast<float>(s) });
+        m.Tets.push_back(base + v);
+      }
+      continue;
+    }
+    bool finite = true;
+    for (int v = 0; v < 4; ++v)
+    {
+      finite = finite && pointFinite[pts[v]];
+    }
+    if (!finite)
+    {
+      ++m.NonFiniteTets;
+      continue;
+    }
+    for (int v = 0; v < 4; ++v)
+    {
+      m.Tets.push_back(static_cast<uint32_t>(pts[v]));
+      lo = std::min<double>(lo, pointScalar[pts[v]]);
+      hi = std::max<double>(hi, pointScalar[pts[v]]);
+    }
+  }
+  if (!(lo <= hi))
+  {
+    lo = 0;
+    hi = 1;
+  }
+  if (hi <= lo)
+  {
+    hi = lo + std::max(1e-6 * std::abs(lo), 1e-12);
+  }
+  m.ScalarRange[0] = lo;
+  m.ScalarRange[1] = hi;
+  return m;
+}
+
+// Row-major 4x4 product a * b.
+void Multiply(const double a[16], const double b[16], double out[16])
+{
+  vtkMatrix4x4::Multiply4x4(a, b, out);
+}
+} // namespace
+
+struct vtkPsiVolumeMapper::Internals
+{
+  // Mesh
+  MeshData Mesh;
+  std::vector<float> Centroids;
+  std::vector<uint32_t> Order;
+  vtkMTimeType MeshTime = 0;
+  std::string MeshArrayKey;
+  vtkNew<vtkOpenGLBufferObject> PointsBuffer;
+  vtkNew<vtkTextureObject> PointsTexture;
+  GLuint TetBuffer = 0;
+  GLuint IndexBuffer = 0;
+  GLuint VAO = 0;
+  bool MeshOnGPU = false;
+
+  // Visibility order
+  std::array<double, 16> SortedMCVC{};
+  bool SortedParallel = false;
+  bool OrderOnGPU = false;
+
+  // Transfer function and Psi table
+  vtkNew<vtkTextureObject> TransferTexture;
+  vtkMTimeType TransferTime = 0;
+  double TransferRange[2] = { 0, 0 };
+  int TransferSamples = 0;
+  vtkNew<vtkTextureObject> PsiTexture;
+  int PsiSize = 0;
+
+  // Frame buffers
+  vtkNew<vtkTextureObject> DepthTexture;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+  int Size[2] = { 0, 0 };
+  std::unique_ptr<vtkOpenGLQuadHelper> Composite;
+
+  vtkShaderProgram* Program = nullptr;
+  int ProgramMethod = -1;
+  std::array<int, 81> ClassTable{};
+  vtkWindow* Context = nullptr;
+
+  void Release(vtkWindow* win)
+  {
+    if (this->Context && this->MeshOnGPU)
+    {
+      glDeleteBuffers(1, &this->TetBuffer);
+      glDeleteBuffers(1, &this->IndexBuffer);
+      glDeleteVertexArrays(1, &this->VAO);
+    }
+    this->TetBuffer = this->IndexBuffer = this->VAO = 0;
+    this->PointsBuffer->ReleaseGraphicsResources();
+    this->PointsTexture->ReleaseGraphicsResources(win);
+    this->TransferTexture->ReleaseGraphicsResources(win);
+    this->PsiTexture->ReleaseGraphicsResources(win);
+    this->DepthTexture->ReleaseGraphicsResources(win);
+    if (this->Framebuffer)
+    {
+      this->Framebuffer->ReleaseGraphicsResources(win);
+      this->Framebuffer = nullptr;
+    }
+    this->Composite.reset();
+    this->Program = nullptr;
+    this->ProgramMethod = -1;
+    this->MeshOnGPU = this->OrderOnGPU = false;
+    this->MeshTime = this->TransferTime = 0;
+    this->PsiSize = 0;
+    this->Size[0] = this->Size[1] = 0;
+    this->Context = nullptr;
+  }
+};
+
+vtkStandardNewMacro(vtkPsiVolumeMapper);
+
+vtkPsiVolumeMapper::vtkPsiVolumeMapper()
+  : Impl(new Internals)
+{
+  const auto& table = psi::GetProjectionClassTable();
+  for (int i = 0; i < 81; ++i)
+  {
+    this->Impl->ClassTable[i] = psi::PackProjectionClass(table[i]);
+  }
+}
+
+vtkPsiVolumeMapper::~vtkPsiVolumeMapper() = default;
+
+const char* vtkPsiVolumeMapper::GetIntegrationMethodName(int method)
+{
+  switch (method)
+  {
+    case AVERAGE:
+      return "Average";
+    case PARTIAL_PRE_INTEGRATION:
+      return "Partial Pre-Integration";
+    default:
+      return "Unknown";
+  }
+}
+
+void vtkPsiVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
+{
+  this->Impl->Release(win);
+  this->Superclass::ReleaseGraphicsResources(win);
+}
+
+void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
+{
+  const auto t0 = Clock::now();
+  Internals& I = *this->Impl;
+  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkUnstructuredGridBase* input = this->GetInput();
+  if (!renWin || !input)
+  {
+    return;
+  }
+  if (I.Context && I.Context != renWin)
+  {
+    I.Release(I.Context);
+  }
+  I.Context = renWin;
+
+  // ---- 1. Mesh: gathered and uploaded once, again only when the data or array changes.
+  int cellFlag = 0;
+  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(input, this->ScalarMode,
+    this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+  if (input->GetNumberOfCells() == 0)
+  {
+    this->NumberOfTetrahedra = 0;
+    return; // nothing to draw; an empty grid is not an error
+  }
+  if (!scalars)
+  {
+    vtkErrorMacro("Psi Volume needs a scalar array to color by: choose a point or cell array "
+                  "(Coloring) for this representation.");
+    return;
+  }
+  const std::string arrayKey = std::string(scalars->GetName() ? scalars->GetName() : "") + "|" +
+    std::to_string(cellFlag) + "|" + std::to_string(this->ScalarMode);
+  const vtkMTimeType meshTime = std::max(input->GetMTime(), scalars->GetMTime());
+  if (!I.MeshOnGPU || meshTime > I.MeshTime || arrayKey != I.MeshArrayKey)
+  {
+    I.Mesh = GatherMesh(input, scalars, cellFlag == 1);
+    I.MeshTime = meshTime;
+    I.MeshArrayKey = arrayKey;
+    this->NumberOfSkippedCells = I.Mesh.NonTetCells + I.Mesh.NonFiniteTets;
+    if (I.Mesh.NonTetCells)
+    {
+      vtkWarningMacro("Psi Volume skipped " << I.Mesh.NonTetCells
+                                            << " cells that are not linear tetrahedra; use the "
+                                               "'Volume' representation's tetrahedralization or the "
+                                               "Tetrahedralize filter first.");
+    }
+    if (I.Mesh.NonFiniteTets)
+    {
+      vtkWarningMacro("Psi Volume skipped " << I.Mesh.NonFiniteTets
+                                            << " tetrahedra with NaN or infinite scalars.");
+    }
+    const size_t ntets = I.Mesh.Tets.size() / 4;
+    GLint maxTexels = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+    if (I.Mesh.Points4.size() / 4 > static_cast<size_t>(maxTexels) || ntets > 0xffffffffu)
+    {
+      vtkErrorMacro("Psi Volume: mesh too large for this GPU (" << I.Mesh.Points4.size() / 4
+                                                                << " points; the limit is "
+                                                                << maxTexels << ").");
+      I.Mesh = MeshData();
+    }
+    this->NumberOfTetrahedra = static_cast<vtkIdType>(I.Mesh.Tets.size() / 4);
+    I.Centroids = psi::ComputeCentroids(
+      I.Mesh.Points4.data(), I.Mesh.Tets.data(), I.Mesh.Tets.size() / 4);
+    if (!I.MeshOnGPU)
+    {
+      glGenBuffers(1, &I.TetBuffer);
+      glGenBuffers(1, &I.IndexBuffer);
+      glGenVertexArrays(1, &I.VAO);
+    }
+    I.PointsBuffer->Upload(I.Mesh.Points4.empty() ? std::vector<float>(4, 0.f) : I.Mesh.Points4,
+      vtkOpenGLBufferObject::TextureBuffer);
+    I.PointsTexture->SetContext(renWin);
+    I.PointsTexture->CreateTextureBuffer(
+      static_cast<unsigned int>(std::max<size_t>(I.Mesh.Points4.size() / 4, 1)), 4, VTK_FLOAT,
+      I.PointsBuffer);
+    glBindBuffer(GL_ARRAY_BUFFER, I.TetBuffer);
+    glBufferData(GL_ARRAY_BUFFER, I.Mesh.Tets.size() * sizeof(uint32_t), I.Mesh.Tets.data(),
+      GL_STATIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    I.MeshOnGPU = true;
+    I.OrderOnGPU = false;
+  }
+  const size_t ntets = I.Mesh.Tets.size() / 4;
+  if (ntets == 0)
+  {
+    return;
+  }
+
+  // ---- 2. Camera: model (shifted) -> view and view -> clip matrices.
+  vtkOpenGLCamera* cam = vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera());
+  vtkMatrix4x4 *wcvc, *vcdc, *wcdc;
+  vtkMatrix3x3* norms;
+  cam->GetKeyMatrices(ren, wcvc, norms, vcdc, wcdc); // transposed (OpenGL order)
+  double shift[16];
+  vtkMatrix4x4::Identity(shift);
+  shift[3] = I.Mesh.Shift[0];
+  shift[7] = I.Mesh.Shift[1];
+  shift[11] = I.Mesh.Shift[2];
+  double view[16], modelShift[16], mcvc[16];
+  vtkMatrix4x4::Transpose(wcvc->GetData(), view);
+  Multiply(vol->GetMatrix()->GetData(), shift, modelShift);
+  Multiply(view, modelShift, mcvc);
+  const bool parallel = cam->GetParallelProjection() != 0;
+
+  // ---- 3. Visibility order, redone only when the view changes (HAPT §3.1, centroid sort).
+  std::array<double, 16> mcvcKey;
+  std::copy(mcvc, mcvc + 16, mcvcKey.begin());
+  if (!I.OrderOnGPU || mcvcKey != I.SortedMCVC || parallel != I.SortedParallel)
+  {
+    const auto ts = Clock::now();
+    double inv[16];
+    vtkMatrix4x4::Invert(mcvc, inv);
+    double eye[3];
+    if (parallel)
+    {
+      // view direction (0, 0, -1) in model coordinates
+      eye[0] = -inv[2];
+      eye[1] = -inv[6];
+      eye[2] = -inv[10];
+    }
+    else
+    {
+      eye[0] = inv[3] / inv[15];
+      eye[1] = inv[7] / inv[15];
+      eye[2] = inv[11] / inv[15];
+    }
+    psi::SortBackToFront(I.Centroids, eye, parallel, I.Order);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, I.IndexBuffer);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, I.Order.size() * sizeof(uint32_t), I.Order.data(),
+      GL_STREAM_DRAW);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+    I.SortedMCVC = mcvcKey;
+    I.SortedParallel = parallel;
+    I.OrderOnGPU = true;
+    this->LastSortSeconds = SecondsSince(ts);
+  }
+
+  // ---- 4. Transfer function table and, for partial pre-integration, the Psi table.
+  vtkVolumeProperty* property = vol->GetProperty();
+  if (property->GetMTime() > I.TransferTime || I.TransferRange[0] != I.Mesh.ScalarRange[0] ||
+    I.TransferRange[1] != I.Mesh.ScalarRange[1] ||
+    I.TransferSamples != this->TransferFunctionSamples)
+  {
+    const psi::TransferFunctionTable tf =
+      psi::SampleTransferFunction(property, I.Mesh.ScalarRange, this->TransferFunctionSamples);
+    I.TransferTexture->SetContext(renWin);
+    I.TransferTexture->Create2DFromRaw(
+      tf.Size, 1, 4, VTK_FLOAT, const_cast<float*>(tf.Rgba.data()));
+    I.TransferTexture->SetMinificationFilter(vtkTextureObject::Linear);
+    I.TransferTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+    I.TransferTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    I.TransferTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    I.TransferTime = property->GetMTime();
+    I.TransferRange[0] = I.Mesh.ScalarRange[0];
+    I.TransferRange[1] = I.Mesh.ScalarRange[1];
+    I.TransferSamples = this->TransferFunctionSamples;
+  }
+  const bool needPsi = this->IntegrationMethod == PARTIAL_PRE_INTEGRATION;
+  if (needPsi && I.PsiSize == 0)
+  {
+    const psi::PsiTable& table = psi::GetDefaultPsiTable();
+    I.PsiTexture->SetContext(renWin);
+    I.PsiTexture->Create2DFromRaw(
+      table.N, table.N, 1, VTK_FLOAT, const_cast<float*>(table.Values.data()));
+    I.PsiTexture->SetMinificationFilter(vtkTextureObject::Linear);
+    I.PsiTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+    I.PsiTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    I.PsiTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    I.PsiSize = table.N;
+  }
+
+  // ---- 5. Frame buffers: the scene's depth, and a float target for the volume.
+  int w, h, x0, y0;
+  ren->GetTiledSizeAndOrigin(&w, &h, &x0, &y0);
+  if (w <= 0 || h <= 0)
+  {
+    return;
+  }
+  vtkOpenGLState* ostate = renWin->GetState();
+  I.DepthTexture->SetContext(renWin);
+  if (I.Size[0] != w || I.Size[1] != h || !I.Framebuffer)
+  {
+    I.DepthTexture->AllocateDepth(w, h, vtkTextureObject::Float32);
+    ostate->PushFramebufferBindings();
+    if (!I.Framebuffer)
+    {
+      I.Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      I.Framebuffer->SetContext(renWin);
+      I.Framebuffer->PopulateFramebuffer(w, h, true, 1, VTK_FLOAT, false, 0, 0);
+    }
+    else
+    {
+      I.Framebuffer->Bind();
+      I.Framebuffer->Resize(w, h);
+    }
+    ostate->PopFramebufferBindings();
+    I.Size[0] = w;
+    I.Size[1] = h;
+  }
+  I.DepthTexture->Activate();
+  I.DepthTexture->CopyFromFrameBuffer(x0, y0, 0, 0, w, h);
+
+  // ---- 6. Shader program for this feature set (cached by VTK's shader cache).
+  if (!I.Program || I.ProgramMethod != this->IntegrationMethod)
+  {
+    std::string fs = PsiVolumeFS;
+    Substitute(fs, "//PSI::Integrator::Impl", IntegratorSource(this->IntegrationMethod));
+    I.Program = renWin->GetShaderCache()->ReadyShaderProgram(PsiVolumeVS, fs.c_str(), PsiVolumeGS);
+    I.ProgramMethod = this->IntegrationMethod;
+    if (!I.Program)
+    {
+      vtkErrorMacro("Psi Volume: the shader program failed to compile (see above).");
+      return;
+    }
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(I.Program);
+  }
+  vtkShaderProgram* prog = I.Program;
+
+  vtkNew<vtkMatrix4x4> mcvcGL, dcvcGL;
+  vtkMatrix4x4::Transpose(mcvc, mcvcGL->GetData()); // to OpenGL (column-major) order
+  double proj[16], invProj[16];
+  vtkMatrix4x4::Transpose(vcdc->GetData(), proj);
+  vtkMatrix4x4::Invert(proj, invProj);
+  vtkMatrix4x4::Transpose(invProj, dcvcGL->GetData());
+  prog->SetUniformMatrix("MCVCMatrix", mcvcGL);
+  prog->SetUniformMatrix("VCDCMatrix", vcdc);
+  prog->SetUniformMatrix("DCVCMatrix", dcvcGL);
+  prog->SetUniform1iv("classTable", 81, I.ClassTable.data());
+  I.PointsTexture->Activate();
+  prog->SetUniformi("points", I.PointsTexture->GetTextureUnit());
+  I.TransferTexture->Activate();
+  prog->SetUniformi("transferFunction", I.TransferTexture->GetTextureUnit());
+  const double n = I.TransferSamples, r0 = I.TransferRange[0], r1 = I.TransferRange[1];
+  const double scale = (n - 1) / (n * (r1 - r0));
+  const float tfScaleShift[2] = { static_cast<float>(scale),
+    static_cast<float>(0.5 / n - r0 * scale) };
+  prog->SetUniform2f("tfScaleShift", tfScaleShift);
+  if (needPsi)
+  {
+    I.PsiTexture->Activate();
+    prog->SetUniformi("psiTable", I.PsiTexture->GetTextureUnit());
+    const float psiScaleShift[2] = { static_cast<float>((I.PsiSize - 1.0) / I.PsiSize),
+      static_cast<float>(0.5 / I.PsiSize) };
+    prog->SetUniform2f("psiScaleShift", psiScaleShift);
+  }
+  prog->SetUniformi("sceneDepth", I.DepthTexture->GetTextureUnit());
+  const float viewport[2] = { static_cast<float>(w), static_cast<float>(h) };
+  prog->SetUniform2f("viewportSize", viewport);
+
+  // ---- 7. Draw back to front into the float target; premultiplied "over" blending.
+  {
+    vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable cull(ostate, GL_CULL_FACE);
+    vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
+    vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
+    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+    vtkOpenGLState::ScopedglClearColor clearColor(ostate);
+
+    ostate->PushFramebufferBindings();
+    I.Framebuffer->Bind();
+    I.Framebuffer->ActivateDrawBuffer(0);
+    ostate->vtkglViewport(0, 0, w, h);
+    ostate->vtkglDisable(GL_SCISSOR_TEST);
+    ostate->vtkglClearColor(0, 0, 0, 0);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ostate->vtkglDepthMask(GL_FALSE);
+    ostate->vtkglDisable(GL_CULL_FACE);
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+
+    glBindVertexArray(I.VAO);
+    glBindBuffer(GL_ARRAY_BUFFER, I.TetBuffer);
+    const GLint loc = glGetAttribLocation(prog->GetHandle(), "tetPointIds");
+    glEnableVertexAttribArray(loc);
+    glVertexAttribIPointer(loc, 4, GL_UNSIGNED_INT, 0, nullptr);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, I.IndexBuffer);
+    // Streamed in chunks so that no single draw call is unbounded (huge meshes).
+    const size_t chunk = size_t(1) << 22;
+    for (size_t first = 0; first < ntets; first += chunk)
+    {
+      const size_t count = std::min(chunk, ntets - first);
+      glDrawElements(GL_POINTS, static_cast<GLsizei>(count), GL_UNSIGNED_INT,
+        reinterpret_cast<const void*>(first * sizeof(uint32_t)));
+    }
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    ostate->PopFramebufferBindings();
+
+    // ---- 8. Composite the volume image (premultiplied) over the scene.
+    ostate->vtkglViewport(x0, y0, w, h);
+    if (!I.Composite)
+    {
+      I.Composite.reset(new vtkOpenGLQuadHelper(renWin, nullptr, PsiCompositeFS, ""));
+    }
+    else
+    {
+      renWin->GetShaderCache()->ReadyShaderProgram(I.Composite->Program);
+    }
+    if (I.Composite->Program)
+    {
+      vtkTextureObject* color = I.Framebuffer->GetColorAttachmentAsTextureObject(0);
+      color->Activate();
+      I.Composite->Program->SetUniformi("volumeImage", color->GetTextureUnit());
+      I.Composite->Render();
+      color->Deactivate();
+    }
+  }
+  I.PointsTexture->Deactivate();
+  I.TransferTexture->Deactivate();
+  I.DepthTexture->Deactivate();
+  if (needPsi)
+  {
+    I.PsiTexture->Deactivate();
+  }
+  this->LastRenderSeconds = SecondsSince(t0);
+}
+
+void vtkPsiVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "IntegrationMethod: " << GetIntegrationMethodName(this->IntegrationMethod)
+     << "\n";
+  os << indent << "TransferFunctionSamples: " << this->TransferFunctionSamples << "\n";
+  os << indent << "NumberOfTetrahedra: " << this->NumberOfTetrahedra << "\n";
+  os << indent << "NumberOfSkippedCells: " << this->NumberOfSkippedCells << "\n";
+}

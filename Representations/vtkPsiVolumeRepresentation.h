@@ -1,0 +1,50 @@
+/**
+ * @class   vtkPsiVolumeRepresentation
+ * @brief   ParaView's unstructured-grid volume representation, drawn by vtkPsiVolumeMapper.
+ *
+ * Everything a ParaView user knows from 'Volume' is inherited from
+ * vtkUnstructuredGridVolumeRepresentation: the color map and opacity function, the
+ * ScalarOpacityUnitDistance, tetrahedralization of non-tetrahedral input on the way in
+ * (vtkVolumeRepresentationPreprocessor), ordered compositing in parallel, and state files.
+ * This subclass registers its own mapper as the only volume mapper and forwards its options.
+ */
+#ifndef vtkPsiVolumeRepresentation_h
+#define vtkPsiVolumeRepresentation_h
+
+#include "PsiVolumeRepresentationsModule.h"
+#include "vtkNew.h"
+#include "vtkUnstructuredGridVolumeRepresentation.h"
+
+class vtkPsiVolumeMapper;
+
+class PSIVOLUMEREPRESENTATIONS_EXPORT vtkPsiVolumeRepresentation
+  : public vtkUnstructuredGridVolumeRepresentation
+{
+public:
+  static vtkPsiVolumeRepresentation* New();
+  vtkTypeMacro(vtkPsiVolumeRepresentation, vtkUnstructuredGridVolumeRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The mapper is fixed to vtkPsiVolumeMapper; the inherited 'SelectMapper' is ignored.
+  void SetActiveVolumeMapper(const char*) override;
+
+  ///@{
+  /// See vtkPsiVolumeMapper::IntegrationMethods.
+  void SetIntegrationMethod(int method);
+  int GetIntegrationMethod();
+  ///@}
+
+  vtkPsiVolumeMapper* GetPsiVolumeMapper();
+
+protected:
+  vtkPsiVolumeRepresentation();
+  ~vtkPsiVolumeRepresentation() override;
+
+  vtkNew<vtkPsiVolumeMapper> PsiMapper;
+
+private:
+  vtkPsiVolumeRepresentation(const vtkPsiVolumeRepresentation&) = delete;
+  void operator=(const vtkPsiVolumeRepresentation&) = delete;
+};
+
+#endif

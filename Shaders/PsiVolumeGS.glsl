@@ -1,0 +1,164 @@
+//VTK::System::Dec
+// PsiVolumeGS: projects one tetrahedron and emits its Shirley-Tuchman decomposition
+// (1-4 triangles, HAPT seed 002 §3.2) carrying front scalar, back scalar and thickness.
+//
+// Classification: the four orientation tests of PTINT (Marroquim et al., seed 003 Fig. 3) index
+// the 81-entry ternary truth table, derived and tested on the CPU (PsiProjectionClasses.cxx) and
+// passed as `classTable`: entry = class | p0<<4 | p1<<6 | p2<<8 | p3<<10.
+//   class 1: p3 inside triangle p0 p1 p2          -> fan of 3 around p3      (thick vertex p3)
+//   class 2: segment p0p1 crosses segment p2p3    -> fan of 4 around the crossing
+//   class 3: p3 on segment p0p1                    -> fan of 2 around p3
+//   class 4: p2 and p3 project to the same point   -> 1 triangle, thick vertex p2/p3
+// Thin vertices carry (s, s, 0); the thick vertex carries (s_front, s_back, length). Screen-space
+// positions are interpolated back into 3D with perspective-correct weights (lambda_i / w_i).
+
+layout(points) in;
+layout(triangle_strip, max_vertices = 8) out;
+
+in vec4 vsP0[];
+in vec4 vsP1[];
+in vec4 vsP2[];
+in vec4 vsP3[];
+
+uniform mat4 VCDCMatrix;
+uniform int classTable[81];
+
+noperspective out vec3 segment; // front scalar, back scalar, thickness
+
+vec4 clipP[4];
+vec3 viewP[4];
+float scalar[4];
+vec2 ndc[4];
+
+float cross2(vec2 a, vec2 b)
+{
+  return a.x * b.y - a.y * b.x;
+}
+
+// 3D point and scalar at screen-space parameter t along the projected edge a->b.
+void alongEdge(int a, int b, float t, out vec3 p, out float s)
+{
+  float wa = clipP[a].w, wb = clipP[b].w;
+  float tc = (t / wb) / ((1.0 - t) / wa + t / wb); // perspective-correct parameter
+  p = mix(viewP[a], viewP[b], tc);
+  s = mix(scalar[a], scalar[b], tc);
+}
+
+// Parameter of the projection of point m on projected edge a->b.
+float edgeParam(int a, int b, int m)
+{
+  vec2 e = ndc[b] - ndc[a];
+  return clamp(dot(ndc[m] - ndc[a], e) / max(dot(e, e), 1e-30), 0.0, 1.0);
+}
+
+// Eye distance along the ray (larger is farther). In parallel projection w is constant, so the
+// view-space depth decides; in perspective the clip w is the view depth too.
+float farness(vec3 p)
+{
+  return -p.z;
+}
+
+void emitThin(int i)
+{
+  segment = vec3(scalar[i], scalar[i], 0.0);
+  gl_Position = clipP[i];
+  EmitVertex();
+}
+
+vec3 thickFront;
+vec3 thickSeg;
+
+void emitThick()
+{
+  segment = thickSeg;
+  gl_Position = VCDCMatrix * vec4(thickFront, 1.0);
+  EmitVertex();
+}
+
+// Orders the two ends of the thick ray segment into front and back.
+void setThick(vec3 pa, float sa, vec3 pb, float sb)
+{
+  float len = distance(pa, pb);
+  if (farness(pa) <= farness(pb))
+  {
+    thickFront = pa;
+    thickSeg = vec3(sa, sb, len);
+  }
+  else
+  {
+    thickFront = pb;
+    thickSeg = vec3(sb, sa, len);
+  }
+}
+
+void main()
+{
+  vec4 raw[4] = vec4[4](vsP0[0], vsP1[0], vsP2[0], vsP3[0]);
+  for (int i = 0; i < 4; ++i)
+  {
+    viewP[i] = raw[i].xyz;
+    scalar[i] = raw[i].w;
+    clipP[i] = VCDCMatrix * vec4(viewP[i], 1.0);
+    if (clipP[i].w <= 0.0)
+    {
+      return; // behind the eye: handled by the near-plane path, not here
+    }
+    ndc[i] = clipP[i].xy / clipP[i].w;
+  }
+  // seed 003 Fig. 3
+  int t1 = int(sign(cross2(ndc[1] - ndc[0], ndc[2] - ndc[0]))) + 1;
+  int t2 = int(sign(cross2(ndc[1] - ndc[0], ndc[3] - ndc[0]))) + 1;
+  int t3 = int(sign(cross2(ndc[2] - ndc[0], ndc[3] - ndc[0]))) + 1;
+  int t4 = int(sign(cross2(ndc[1] - ndc[2], ndc[1] - ndc[3]))) + 1;
+  int entry = classTable[27 * t1 + 9 * t2 + 3 * t3 + t4];
+  int cls = entry & 15;
+  int p0 = (entry >> 4) & 3, p1 = (entry >> 6) & 3, p2 = (entry >> 8) & 3, p3 = (entry >> 10) & 3;
+
+  if (cls == 1)
+  {
+    // Ray through p3 meets face p0 p1 p2: screen barycentrics, made perspective-correct.
+    vec2 a = ndc[p0], b = ndc[p1], c = ndc[p2], m = ndc[p3];
+    float area = cross2(b - a, c - a);
+    vec3 l = vec3(cross2(b - m, c - m), cross2(c - m, a - m), cross2(a - m, b - m)) / area;
+    l /= vec3(clipP[p0].w, clipP[p1].w, clipP[p2].w);
+    l /= (l.x + l.y + l.z);
+    vec3 h = l.x * viewP[p0] + l.y * viewP[p1] + l.z * viewP[p2];
+    float sh = l.x * scalar[p0] + l.y * scalar[p1] + l.z * scalar[p2];
+    setThick(viewP[p3], scalar[p3], h, sh);
+    emitThin(p0); emitThin(p1); emitThick(); emitThin(p2); emitThin(p0);
+    EndPrimitive();
+  }
+  else if (cls == 2)
+  {
+    // Crossing of projected edges p0p1 and p2p3 (seed 003 Fig. 4, class 2).
+    vec2 d1 = ndc[p1] - ndc[p0], d2 = ndc[p3] - ndc[p2];
+    float den = cross2(d1, d2);
+    float t = cross2(ndc[p2] - ndc[p0], d2) / den;
+    float u = cross2(ndc[p2] - ndc[p0], d1) / den;
+    vec3 pa, pb;
+    float sa, sb;
+    alongEdge(p0, p1, clamp(t, 0.0, 1.0), pa, sa);
+    alongEdge(p2, p3, clamp(u, 0.0, 1.0), pb, sb);
+    setThick(pa, sa, pb, sb);
+    // silhouette quad p0 p2 p1 p3 around the crossing
+    emitThin(p0); emitThin(p2); emitThick(); emitThin(p1); emitThin(p3);
+    EndPrimitive();
+    emitThin(p3); emitThin(p0); emitThick();
+    EndPrimitive();
+  }
+  else if (cls == 3)
+  {
+    vec3 h;
+    float sh;
+    alongEdge(p0, p1, edgeParam(p0, p1, p3), h, sh);
+    setThick(viewP[p3], scalar[p3], h, sh);
+    emitThin(p1); emitThin(p2); emitThick(); emitThin(p0);
+    EndPrimitive();
+  }
+  else if (cls == 4)
+  {
+    setThick(viewP[p2], scalar[p2], viewP[p3], scalar[p3]);
+    emitThin(p0); emitThin(p1); emitThick();
+    EndPrimitive();
+  }
+}
