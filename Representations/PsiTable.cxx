@@ -6,15 +6,26 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <thread>
 
 namespace psi
 {
 
+double WarpOfGamma(double gamma)
+{
+  return 1.0 - std::sqrt(std::max(1.0 - gamma, 0.0));
+}
+
+double TauDOfWarp(double u)
+{
+  return u >= 1.0 ? std::numeric_limits<double>::infinity() : 1.0 / ((1.0 - u) * (1.0 - u)) - 1.0;
+}
+
 double PsiTable::Lookup(double gammab, double gammaf) const
 {
   auto coord = [this](double g, int& i0, double& w) {
-    const double x = std::min(std::max(g, 0.0), 1.0) * (this->N - 1);
+    const double x = WarpOfGamma(std::min(std::max(g, 0.0), 1.0)) * (this->N - 1);
     i0 = std::min(static_cast<int>(std::floor(x)), this->N - 2);
     w = x - i0;
   };
@@ -41,10 +52,10 @@ PsiTable BuildPsiTable(int n)
     pool.emplace_back([&t, w, threads] {
       for (int j = w; j < t.N; j += threads)
       {
-        const double taufD = TauDOf(static_cast<double>(j) / (t.N - 1));
+        const double taufD = TauDOfWarp(static_cast<double>(j) / (t.N - 1));
         for (int i = 0; i < t.N; ++i)
         {
-          const double taubD = TauDOf(static_cast<double>(i) / (t.N - 1));
+          const double taubD = TauDOfWarp(static_cast<double>(i) / (t.N - 1));
           t.Values[static_cast<size_t>(j) * t.N + i] = static_cast<float>(Psi(taubD, taufD));
         }
       }

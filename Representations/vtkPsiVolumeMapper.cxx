@@ -76,6 +76,7 @@ const char* IntegratorSource(int method)
 // The mesh as uploaded: points (shifted model xyz + scalar) and 4 point ids per tetrahedron.
 struct MeshData
 {
+  double Bounds[6] = { 0, 0, 0, 0, 0, 0 }; // of the shifted points
   std::vector<float> Points4;
   std::vector<uint32_t> Tets;
   double Shift[3] = { 0, 0, 0 };
@@ -186,6 +187,11 @@ MeshData GatherMesh(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool 
       hi = std::max<double>(hi, pointScalar[pts[v]]);
     }
   }
+  for (int k = 0; k < 3; ++k)
+  {
+    m.Bounds[2 * k] = b[2 * k] - m.Shift[k];
+    m.Bounds[2 * k + 1] = b[2 * k + 1] - m.Shift[k];
+  }
   if (!(lo <= hi))
   {
     lo = 0;
@@ -242,7 +248,7 @@ struct vtkPsiVolumeMapper::Internals
   std::unique_ptr<vtkOpenGLQuadHelper> Composite;
 
   vtkShaderProgram* Program = nullptr;
-  int ProgramMethod = -1;
+  std::string ProgramKey;
   std::array<int, 81> ClassTable{};
   vtkWindow* Context = nullptr;
 
@@ -267,7 +273,7 @@ struct vtkPsiVolumeMapper::Internals
     }
     this->Composite.reset();
     this->Program = nullptr;
-    this->ProgramMethod = -1;
+    this->ProgramKey.clear();
     this->MeshOnGPU = this->OrderOnGPU = false;
     this->MeshTime = this->TransferTime = 0;
     this->PsiSize = 0;
@@ -513,13 +519,37 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   I.DepthTexture->Activate();
   I.DepthTexture->CopyFromFrameBuffer(x0, y0, 0, 0, w, h);
 
-  // ---- 6. Shader program for this feature set (cached by VTK's shader cache).
-  if (!I.Program || I.ProgramMethod != this->IntegrationMethod)
+  // ---- 6. Shader program for this feature set (cached by VTK's shader cache). Only what the
+  // scene calls for is compiled in: the near-plane path only when the near plane cuts the mesh.
+  double proj[16], invProj[16];
+  vtkMatrix4x4::Transpose(vcdc->GetData(), proj);
+  vtkMatrix4x4::Invert(proj, invProj);
+  const double nearZ = (invProj[2] * -1 + invProj[3]) / (invProj[14] * -1 + invProj[15]);
+  bool nearClip = false;
+  for (int corner = 0; corner < 8 && !nearClip; ++corner)
   {
-    std::string fs = PsiVolumeFS;
+    const double* b = I.Mesh.Bounds;
+    const double p[4] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)],
+      1 };
+    const double z = mcvc[8] * p[0] + mcvc[9] * p[1] + mcvc[10] * p[2] + mcvc[11];
+    nearClip = z > nearZ;
+  }
+  this->LastUsedNearPlaneClipping = nearClip;
+  std::string defines;
+  if (nearClip)
+  {
+    defines += "#define PSI_NEAR_CLIP\n";
+  }
+  const std::string key = defines + std::to_string(this->IntegrationMethod);
+  if (!I.Program || I.ProgramKey != key)
+  {
+    std::string vs = PsiVolumeVS, gs = PsiVolumeGS, fs = PsiVolumeFS;
+    Substitute(gs, "//PSI::Features::Dec", defines);
+    Substitute(fs, "//PSI::Features::Dec", defines);
     Substitute(fs, "//PSI::Integrator::Impl", IntegratorSource(this->IntegrationMethod));
-    I.Program = renWin->GetShaderCache()->ReadyShaderProgram(PsiVolumeVS, fs.c_str(), PsiVolumeGS);
-    I.ProgramMethod = this->IntegrationMethod;
+    I.Program =
+      renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
+    I.ProgramKey = key;
     if (!I.Program)
     {
       vtkErrorMacro("Psi Volume: the shader program failed to compile (see above).");
@@ -534,10 +564,9 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 
   vtkNew<vtkMatrix4x4> mcvcGL, dcvcGL;
   vtkMatrix4x4::Transpose(mcvc, mcvcGL->GetData()); // to OpenGL (column-major) order
-  double proj[16], invProj[16];
-  vtkMatrix4x4::Transpose(vcdc->GetData(), proj);
-  vtkMatrix4x4::Invert(proj, invProj);
   vtkMatrix4x4::Transpose(invProj, dcvcGL->GetData());
+  prog->SetUniformf("nearZ", static_cast<float>(nearZ));
+  prog->SetUniformi("parallelProjection", parallel ? 1 : 0);
   prog->SetUniformMatrix("MCVCMatrix", mcvcGL);
   prog->SetUniformMatrix("VCDCMatrix", vcdc);
   prog->SetUniformMatrix("DCVCMatrix", dcvcGL);

@@ -60,6 +60,8 @@ public:
   vtkGetMacro(NumberOfSkippedCells, vtkIdType);
   vtkGetMacro(LastSortSeconds, double);
   vtkGetMacro(LastRenderSeconds, double);
+  /// Whether the last frame needed the near-plane path (camera inside or close to the mesh).
+  vtkGetMacro(LastUsedNearPlaneClipping, bool);
   ///@}
 
 protected:
@@ -72,6 +74,7 @@ protected:
   vtkIdType NumberOfSkippedCells = 0;
   double LastSortSeconds = 0;
   double LastRenderSeconds = 0;
+  bool LastUsedNearPlaneClipping = false;
 
 private:
   vtkPsiVolumeMapper(const vtkPsiVolumeMapper&) = delete;

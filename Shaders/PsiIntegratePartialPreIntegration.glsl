@@ -1,13 +1,12 @@
 // Partial pre-integration (Moreland & Angel, seed 000 §4, Eqs. 7, 8, 11, 12):
-//   zeta = exp(-(tau_b + tau_f) D / 2),  Psi = table(gamma_b, gamma_f),
+//   zeta = exp(-(tau_b + tau_f) D / 2),  Psi = table(gamma_b, gamma_f) (warped, PsiTable.h),
 //   color = Lb (Psi - zeta) + Lf (1 - Psi),  alpha = 1 - zeta.
 vec4 integrateSegment(float sf, float sb, float D)
 {
   vec4 f = transfer(sf);
   vec4 b = transfer(sb);
   vec2 tauD = vec2(b.a, f.a) * D;
-  vec2 gamma = gammaOf(tauD);
-  float psi = texture(psiTable, gamma * psiScaleShift.x + psiScaleShift.y).r;
+  float psi = texture(psiTable, psiCoord(tauD)).r;
   float zeta = exp(-0.5 * (tauD.x + tauD.y));
   return vec4(b.rgb * (psi - zeta) + f.rgb * (1.0 - psi), 1.0 - zeta);
 }

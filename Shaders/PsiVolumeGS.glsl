@@ -1,4 +1,5 @@
 //VTK::System::Dec
+//PSI::Features::Dec
 // PsiVolumeGS: projects one tetrahedron and emits its Shirley-Tuchman decomposition
 // (1-4 triangles, HAPT seed 002 §3.2) carrying front scalar, back scalar and thickness.
 //
@@ -24,6 +25,18 @@ uniform mat4 VCDCMatrix;
 uniform int classTable[81];
 
 noperspective out vec3 segment; // front scalar, back scalar, thickness
+
+#ifdef PSI_NEAR_CLIP
+// Tetrahedra that cross the near plane cannot be projected: they are drawn as a screen quad
+// covering their near-clipped projection, and the fragment shader intersects each ray with the
+// tetrahedron exactly (clipped = 1, the four vertices passed flat).
+uniform float nearZ; // view-space z of the near plane (negative)
+flat out int clipped;
+flat out vec4 tetV0;
+flat out vec4 tetV1;
+flat out vec4 tetV2;
+flat out vec4 tetV3;
+#endif
 
 vec4 clipP[4];
 vec3 viewP[4];
@@ -58,8 +71,20 @@ float farness(vec3 p)
   return -p.z;
 }
 
+void setFlat(int isClipped)
+{
+#ifdef PSI_NEAR_CLIP
+  clipped = isClipped;
+  tetV0 = vec4(viewP[0], scalar[0]);
+  tetV1 = vec4(viewP[1], scalar[1]);
+  tetV2 = vec4(viewP[2], scalar[2]);
+  tetV3 = vec4(viewP[3], scalar[3]);
+#endif
+}
+
 void emitThin(int i)
 {
+  setFlat(0);
   segment = vec3(scalar[i], scalar[i], 0.0);
   gl_Position = clipP[i];
   EmitVertex();
@@ -70,6 +95,7 @@ vec3 thickSeg;
 
 void emitThick()
 {
+  setFlat(0);
   segment = thickSeg;
   gl_Position = VCDCMatrix * vec4(thickFront, 1.0);
   EmitVertex();
@@ -91,17 +117,82 @@ void setThick(vec3 pa, float sa, vec3 pb, float sb)
   }
 }
 
+#ifdef PSI_NEAR_CLIP
+// Extends the screen box lo..hi by the projection of view-space point p (in front of the eye).
+void includePoint(vec3 p, inout vec2 lo, inout vec2 hi)
+{
+  vec4 c = VCDCMatrix * vec4(p, 1.0);
+  vec2 q = c.xy / c.w;
+  lo = min(lo, q);
+  hi = max(hi, q);
+}
+
+// Emits the screen box of the part of the tetrahedron beyond the near plane.
+void emitClipped()
+{
+  vec2 lo = vec2(1e30), hi = vec2(-1e30);
+  for (int i = 0; i < 4; ++i)
+  {
+    if (viewP[i].z <= nearZ)
+    {
+      includePoint(viewP[i], lo, hi);
+    }
+    for (int j = i + 1; j < 4; ++j)
+    {
+      float di = viewP[i].z - nearZ, dj = viewP[j].z - nearZ;
+      if (di * dj < 0.0)
+      {
+        includePoint(mix(viewP[i], viewP[j], di / (di - dj)), lo, hi);
+      }
+    }
+  }
+  lo = max(lo, vec2(-1.0));
+  hi = min(hi, vec2(1.0));
+  if (lo.x > hi.x || lo.y > hi.y)
+  {
+    return;
+  }
+  vec2 corner[4] = vec2[4](lo, vec2(hi.x, lo.y), vec2(lo.x, hi.y), hi);
+  for (int k = 0; k < 4; ++k)
+  {
+    setFlat(1);
+    segment = vec3(0.0);
+    gl_Position = vec4(corner[k], 0.0, 1.0);
+    EmitVertex();
+  }
+  EndPrimitive();
+}
+#endif
+
 void main()
 {
   vec4 raw[4] = vec4[4](vsP0[0], vsP1[0], vsP2[0], vsP3[0]);
+  int inFront = 0;
   for (int i = 0; i < 4; ++i)
   {
     viewP[i] = raw[i].xyz;
     scalar[i] = raw[i].w;
+#ifdef PSI_NEAR_CLIP
+    inFront += viewP[i].z > nearZ ? 1 : 0;
+#endif
+  }
+#ifdef PSI_NEAR_CLIP
+  if (inFront == 4)
+  {
+    return; // wholly between the eye and the near plane (or behind the eye)
+  }
+  if (inFront > 0)
+  {
+    emitClipped();
+    return;
+  }
+#endif
+  for (int i = 0; i < 4; ++i)
+  {
     clipP[i] = VCDCMatrix * vec4(viewP[i], 1.0);
     if (clipP[i].w <= 0.0)
     {
-      return; // behind the eye: handled by the near-plane path, not here
+      return; // behind the eye; only reachable without PSI_NEAR_CLIP, which the mapper prevents
     }
     ndc[i] = clipP[i].xy / clipP[i].w;
   }

@@ -1,0 +1,306 @@
+#include "PsiReferenceRaycaster.h"
+
+#include "PsiIntegration.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace psi
+{
+namespace
+{
+using Vec3 = std::array<double, 3>;
+
+Vec3 Sub(const Vec3& a, const Vec3& b)
+{
+  return { { a[0] - b[0], a[1] - b[1], a[2] - b[2] } };
+}
+double Dot(const Vec3& a, const Vec3& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+Vec3 CrossP(const Vec3& a, const Vec3& b)
+{
+  return { { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] } };
+}
+
+// Homogeneous transform of (x, y, z, 1) by a row-major matrix, divided by w.
+Vec3 Transform(const std::array<double, 16>& m, double x, double y, double z)
+{
+  double o[4];
+  for (int r = 0; r < 4; ++r)
+  {
+    o[r] = m[4 * r] * x + m[4 * r + 1] * y + m[4 * r + 2] * z + m[4 * r + 3];
+  }
+  return { { o[0] / o[3], o[1] / o[3], o[2] / o[3] } };
+}
+
+struct Piece
+{
+  double t0, t1, s0, s1;
+};
+
+struct TetGeometry
+{
+  Vec3 Normal[4]; // outward face normals, face i opposite vertex i
+  Vec3 Anchor[4]; // a point of face i
+  Vec3 Gradient;  // of the linear scalar
+  Vec3 Origin;    // vertex 0
+  double S0;
+  bool Valid;
+};
+
+TetGeometry MakeTet(const ReferenceScene& sc, const std::array<int, 4>& t)
+{
+  TetGeometry g{};
+  Vec3 V[4];
+  for (int i = 0; i < 4; ++i)
+  {
+    V[i] = sc.Points[t[i]];
+  }
+  const Vec3 e1 = Sub(V[1], V[0]), e2 = Sub(V[2], V[0]), e3 = Sub(V[3], V[0]);
+  const double det = Dot(e1, CrossP(e2, e3));
+  g.Valid = std::abs(det) > 0 && std::isfinite(det);
+  if (!g.Valid)
+  {
+    return g;
+  }
+  for (int i = 0; i < 4; ++i)
+  {
+    const Vec3 &a = V[(i + 1) % 4], &b = V[(i + 2) % 4], &c = V[(i + 3) % 4];
+    Vec3 n = CrossP(Sub(b, a), Sub(c, a));
+    if (Dot(n, Sub(V[i], a)) > 0)
+    {
+      n = { { -n[0], -n[1], -n[2] } };
+    }
+    g.Normal[i] = n;
+    g.Anchor[i] = a;
+  }
+  // Gradient: solve [e1 e2 e3]^T g = ds by Cramer's rule.
+  const double ds[3] = { sc.Scalars[t[1]] - sc.Scalars[t[0]], sc.Scalars[t[2]] - sc.Scalars[t[0]],
+    sc.Scalars[t[3]] - sc.Scalars[t[0]] };
+  const Vec3 c23 = CrossP(e2, e3), c31 = CrossP(e3, e1), c12 = CrossP(e1, e2);
+  for (int k = 0; k < 3; ++k)
+  {
+    g.Gradient[k] = (ds[0] * c23[k] + ds[1] * c31[k] + ds[2] * c12[k]) / det;
+  }
+  g.Origin = V[0];
+  g.S0 = sc.Scalars[t[0]];
+  return g;
+}
+} // namespace
+
+std::vector<double> RenderReference(const ReferenceScene& sc, const ReferenceCamera& cam)
+{
+  const int W = cam.Width, H = cam.Height;
+  std::vector<std::vector<Piece>> pixels(static_cast<size_t>(W) * H);
+  // Screen boxes: tetrahedra are binned into the pixels they may cover.
+  std::array<double, 16> worldToNdc{};
+  {
+    // invert NdcToWorld (4x4 Gauss-Jordan, partial pivoting)
+    double a[4][8];
+    for (int r = 0; r < 4; ++r)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        a[r][c] = cam.NdcToWorld[4 * r + c];
+        a[r][c + 4] = r == c;
+      }
+    }
+    for (int c = 0; c < 4; ++c)
+    {
+      int p = c;
+      for (int r = c + 1; r < 4; ++r)
+      {
+        if (std::abs(a[r][c]) > std::abs(a[p][c]))
+        {
+          p = r;
+        }
+      }
+      std::swap(a[c], a[p]);
+      const double d = a[c][c];
+      for (double& v : a[c])
+      {
+        v /= d;
+      }
+      for (int r = 0; r < 4; ++r)
+      {
+        if (r != c)
+        {
+          const double f = a[r][c];
+          for (int k = 0; k < 8; ++k)
+          {
+            a[r][k] -= f * a[c][k];
+          }
+        }
+      }
+    }
+    for (int r = 0; r < 4; ++r)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        worldToNdc[4 * r + c] = a[r][c + 4];
+      }
+    }
+  }
+  auto rayOf = [&](int i, int j, Vec3& o, Vec3& d, double& len) {
+    const double x = (i + 0.5) / W * 2 - 1, y = (j + 0.5) / H * 2 - 1;
+    o = Transform(cam.NdcToWorld, x, y, -1);
+    const Vec3 f = Transform(cam.NdcToWorld, x, y, 1);
+    d = Sub(f, o);
+    len = std::sqrt(Dot(d, d));
+    d = { { d[0] / len, d[1] / len, d[2] / len } };
+  };
+  for (const auto& t : sc.Tets)
+  {
+    const TetGeometry g = MakeTet(sc, t);
+    if (!g.Valid)
+    {
+      continue;
+    }
+    // Screen box; a tetrahedron reaching behind the near plane may cover any pixel.
+    double lo[2] = { 1e300, 1e300 }, hi[2] = { -1e300, -1e300 };
+    bool whole = false;
+    for (int v = 0; v < 4; ++v)
+    {
+      const Vec3& p = sc.Points[t[v]];
+      double c[4];
+      for (int r = 0; r < 4; ++r)
+      {
+        c[r] = worldToNdc[4 * r] * p[0] + worldToNdc[4 * r + 1] * p[1] +
+          worldToNdc[4 * r + 2] * p[2] + worldToNdc[4 * r + 3];
+      }
+      if (c[3] <= 0 || c[2] < -c[3])
+      {
+        whole = true;
+        break;
+      }
+      for (int k = 0; k < 2; ++k)
+      {
+        lo[k] = std::min(lo[k], c[k] / c[3]);
+        hi[k] = std::max(hi[k], c[k] / c[3]);
+      }
+    }
+    int i0 = 0, i1 = W - 1, j0 = 0, j1 = H - 1;
+    if (!whole)
+    {
+      i0 = std::max(0, static_cast<int>(std::floor((lo[0] + 1) / 2 * W - 0.5)));
+      i1 = std::min(W - 1, static_cast<int>(std::ceil((hi[0] + 1) / 2 * W - 0.5)));
+      j0 = std::max(0, static_cast<int>(std::floor((lo[1] + 1) / 2 * H - 0.5)));
+      j1 = std::min(H - 1, static_cast<int>(std::ceil((hi[1] + 1) / 2 * H - 0.5)));
+    }
+    for (int j = j0; j <= j1; ++j)
+    {
+      for (int i = i0; i <= i1; ++i)
+      {
+        Vec3 o, d;
+        double len;
+        rayOf(i, j, o, d, len);
+        double tin = 0, tout = len;
+        bool hit = true;
+        for (int f = 0; f < 4 && hit; ++f)
+        {
+          const double den = Dot(g.Normal[f], d);
+          const double num = Dot(g.Normal[f], Sub(g.Anchor[f], o));
+          if (den == 0)
+          {
+            hit = num >= 0;
+            continue;
+          }
+          const double tf = num / den;
+          if (den < 0)
+          {
+            tin = std::max(tin, tf);
+          }
+          else
+          {
+            tout = std::min(tout, tf);
+          }
+          hit = tout > tin;
+        }
+        if (!hit)
+        {
+          continue;
+        }
+        auto scalarAt = [&](double tt) {
+          const Vec3 p = { { o[0] + tt * d[0], o[1] + tt * d[1], o[2] + tt * d[2] } };
+          return g.S0 + Dot(g.Gradient, Sub(p, g.Origin));
+        };
+        pixels[static_cast<size_t>(j) * W + i].push_back(
+          { tin, tout, scalarAt(tin), scalarAt(tout) });
+      }
+    }
+  }
+
+  std::vector<double> image(3 * static_cast<size_t>(W) * H);
+  std::vector<double> bps = sc.Breakpoints;
+  std::sort(bps.begin(), bps.end());
+  for (int j = 0; j < H; ++j)
+  {
+    for (int i = 0; i < W; ++i)
+    {
+      const size_t px = static_cast<size_t>(j) * W + i;
+      auto& list = pixels[px];
+      std::sort(list.begin(), list.end(), [](const Piece& a, const Piece& b) { return a.t0 < b.t0; });
+      Vec3 o, d;
+      double len;
+      rayOf(i, j, o, d, len);
+      double tOpaque = 1e300;
+      if (!cam.OpaqueDepth.empty() && cam.OpaqueDepth[px] < 1.0f)
+      {
+        const double x = (i + 0.5) / W * 2 - 1, y = (j + 0.5) / H * 2 - 1;
+        const Vec3 q = Transform(cam.NdcToWorld, x, y, 2.0 * cam.OpaqueDepth[px] - 1.0);
+        tOpaque = std::sqrt(Dot(Sub(q, o), Sub(q, o)));
+      }
+      Rgba acc{ { 0, 0, 0, 0 } };
+      for (const Piece& p : list)
+      {
+        if (p.t0 >= tOpaque || acc[3] > 1 - 1e-12)
+        {
+          break;
+        }
+        const double t1 = std::min(p.t1, tOpaque);
+        const double s1 = p.s0 + (p.s1 - p.s0) * (t1 - p.t0) / (p.t1 - p.t0);
+        // Split points along the segment: every breakpoint strictly between the end scalars.
+        std::vector<double> ts = { p.t0 };
+        const double smin = std::min(p.s0, s1), smax = std::max(p.s0, s1);
+        for (auto it = std::upper_bound(bps.begin(), bps.end(), smin);
+             it != bps.end() && *it < smax; ++it)
+        {
+          ts.push_back(p.t0 + (t1 - p.t0) * (*it - p.s0) / (s1 - p.s0));
+        }
+        ts.push_back(t1);
+        std::sort(ts.begin(), ts.end());
+        for (size_t k = 0; k + 1 < ts.size(); ++k)
+        {
+          const double sa = p.s0 + (s1 - p.s0) * (ts[k] - p.t0) / (t1 - p.t0);
+          const double sb = p.s0 + (s1 - p.s0) * (ts[k + 1] - p.t0) / (t1 - p.t0);
+          double f[4], b[4];
+          sc.Transfer(sa, f);
+          sc.Transfer(sb, b);
+          Segment seg;
+          seg.Lf = { { f[0], f[1], f[2] } };
+          seg.Lb = { { b[0], b[1], b[2] } };
+          seg.tauf = f[3];
+          seg.taub = b[3];
+          seg.D = ts[k + 1] - ts[k];
+          const Rgba c = IntegrateWithPsi(seg, Psi(seg.taub * seg.D, seg.tauf * seg.D));
+          acc = Over(acc, c);
+        }
+      }
+      Vec3 behind = cam.Background;
+      if (!cam.OpaqueColor.empty() && !cam.OpaqueDepth.empty() && cam.OpaqueDepth[px] < 1.0f)
+      {
+        behind = { { cam.OpaqueColor[3 * px], cam.OpaqueColor[3 * px + 1],
+          cam.OpaqueColor[3 * px + 2] } };
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        image[3 * px + k] = acc[k] + (1 - acc[3]) * behind[k];
+      }
+    }
+  }
+  return image;
+}
+
+} // namespace psi

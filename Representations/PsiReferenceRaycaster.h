@@ -1,0 +1,53 @@
+// PsiReferenceRaycaster: an exact CPU ray integration of a tetrahedral mesh, the reference that
+// GPU images are measured against.
+//
+// Each pixel's ray starts on the near plane (so a camera inside the mesh is handled) and is
+// intersected with every tetrahedron whose screen box covers the pixel (exact ray / face-plane
+// clipping in double precision). Within a tetrahedron the scalar is linear along the ray; the
+// segment is split at every transfer-function breakpoint, so color and attenuation are linear on
+// each piece and the piece is integrated exactly (seed 000 Eq. 7 with Psi by quadrature,
+// psi::Psi). Pieces are composited front to back, then over the background.
+#ifndef PsiReferenceRaycaster_h
+#define PsiReferenceRaycaster_h
+
+#include "PsiVolumeRepresentationsModule.h"
+
+#include <array>
+#include <functional>
+#include <vector>
+
+namespace psi
+{
+
+struct ReferenceScene
+{
+  std::vector<std::array<double, 3>> Points; ///< world coordinates
+  std::vector<double> Scalars;              ///< one per point
+  std::vector<std::array<int, 4>> Tets;
+  /// Transfer function: luminance rgb and attenuation tau at scalar s.
+  std::function<void(double s, double rgbTau[4])> Transfer;
+  /// Scalars where the transfer function is not linear (control points, table samples).
+  std::vector<double> Breakpoints;
+};
+
+struct ReferenceCamera
+{
+  int Width = 64, Height = 64;
+  /// Row-major inverse of (projection * view): normalized device coordinates -> world.
+  std::array<double, 16> NdcToWorld{};
+  /// Optional per-pixel window depth (0..1) of opaque geometry (row-major from the bottom row);
+  /// empty means none. Rays stop there.
+  std::vector<float> OpaqueDepth;
+  std::array<double, 3> Background{ { 0, 0, 0 } };
+  /// Optional per-pixel opaque color (rgb per pixel) shown behind the volume instead of the
+  /// background where OpaqueDepth < 1.
+  std::vector<float> OpaqueColor;
+};
+
+/// Renders rgb (3 doubles per pixel, rows from the bottom) in [0, 1] (not clamped).
+PSIVOLUMEREPRESENTATIONS_EXPORT std::vector<double> RenderReference(
+  const ReferenceScene& scene, const ReferenceCamera& camera);
+
+} // namespace psi
+
+#endif
