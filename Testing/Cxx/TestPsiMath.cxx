@@ -221,18 +221,23 @@ void TestPsiTable()
   // Bilinear lookup error over the whole domain, including off-sample points and gamma -> 1.
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> U(0, 1);
-  double worst = 0;
+  double worstInterior = 0, worstEdge = 0;
   for (int n = 0; n < 20000; ++n)
   {
-    const double gb = n < 100 ? 1 - 1e-6 * U(rng) : U(rng);
+    const bool edge = n < 200; // gamma_b within 1e-6 of 1: tau_b D > 1e6
+    const double gb = edge ? 1 - 1e-6 * U(rng) : U(rng);
     const double gf = U(rng);
     const double exact = psi::Psi(psi::TauDOf(gb), psi::TauDOf(gf));
+    double& worst = edge ? worstEdge : worstInterior;
     worst = std::max(worst, std::abs(t.Lookup(gb, gf) - exact));
   }
-  // Uniform-gamma sampling misses by 1.4e-2 near gamma_b = 1; the warped sampling must not.
-  PSI_CHECK(worst < 5e-5, "Psi table (512^2) lookup error %g", worst);
+  // Uniform-gamma sampling (Moreland's) misses by 1.4e-2 near gamma_b = 1; the warped sampling
+  // must stay far below one 8-bit step (3.9e-3) everywhere, and near 1e-5 off the extreme edge.
+  PSI_CHECK(worstInterior < 2e-5, "Psi table (512^2) lookup error %g", worstInterior);
+  PSI_CHECK(worstEdge < 5e-4, "Psi table (512^2) lookup error at tau_b D > 1e6: %g", worstEdge);
+  std::printf("Psi table: max bilinear lookup error %.2g (%.2g where tau_b D > 1e6)\n",
+    worstInterior, worstEdge);
   PSI_CHECK(t.Values[0] == 1.0f, "Psi(0,0) sample %g", t.Values[0]);
-  std::printf("Psi table: max bilinear lookup error %.2g over the gamma domain\n", worst);
 }
 } // namespace
 
