@@ -536,6 +536,10 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   this->LastUsedNearPlaneClipping = nearClip;
   std::string defines;
+  if (!parallel && this->ExactPerspectiveSegments)
+  {
+    defines += "#define PSI_EXACT_SEGMENTS\n";
+  }
   if (nearClip)
   {
     defines += "#define PSI_NEAR_CLIP\n";

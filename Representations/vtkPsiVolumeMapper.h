@@ -45,6 +45,13 @@ public:
   vtkGetMacro(IntegrationMethod, int);
   static const char* GetIntegrationMethodName(int method);
 
+  /// In perspective, reconstruct each fragment's segment exactly from the two face planes of its
+  /// fan triangle (default on) instead of HAPT's screen-linear interpolation of front scalar,
+  /// back scalar and thickness, which is exact only in parallel projection (where it is used).
+  vtkSetMacro(ExactPerspectiveSegments, bool);
+  vtkGetMacro(ExactPerspectiveSegments, bool);
+  vtkBooleanMacro(ExactPerspectiveSegments, bool);
+
   /// Number of samples of the transfer function table (default 1024).
   vtkSetClampMacro(TransferFunctionSamples, int, 2, 1 << 16);
   vtkGetMacro(TransferFunctionSamples, int);
@@ -70,6 +77,7 @@ protected:
 
   int IntegrationMethod = PARTIAL_PRE_INTEGRATION;
   int TransferFunctionSamples = 1024;
+  bool ExactPerspectiveSegments = true;
   vtkIdType NumberOfTetrahedra = 0;
   vtkIdType NumberOfSkippedCells = 0;
   double LastSortSeconds = 0;

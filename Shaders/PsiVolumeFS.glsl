@@ -17,6 +17,13 @@ uniform vec2 viewportSize;
 uniform mat4 VCDCMatrix;
 uniform int parallelProjection;
 
+#ifdef PSI_EXACT_SEGMENTS
+flat in vec4 facePlaneA;
+flat in vec4 facePlaneB;
+flat in vec4 scalarPlane;
+flat in float maxThickness;
+#endif
+
 #ifdef PSI_NEAR_CLIP
 flat in int clipped;
 flat in vec4 tetV0;
@@ -102,9 +109,29 @@ bool clipSegment(out float sf, out float sb, out float D, out float frontDepth)
 }
 #endif
 
+#ifdef PSI_EXACT_SEGMENTS
+// The ray through this pixel crosses the two face planes of the fan triangle's edge: the nearer
+// crossing is the entry, the farther the exit (exact in perspective).
+void exactSegment(out float sf, out float sb, out float D)
+{
+  vec3 o = parallelProjection == 1 ? viewPointAt(0.0) : vec3(0.0);
+  vec3 dir = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : normalize(viewPointAt(gl_FragCoord.z));
+  float ta = (facePlaneA.w - dot(facePlaneA.xyz, o)) / dot(facePlaneA.xyz, dir);
+  float tb = (facePlaneB.w - dot(facePlaneB.xyz, o)) / dot(facePlaneB.xyz, dir);
+  float t0 = min(ta, tb), t1 = max(ta, tb);
+  D = min(t1 - t0, maxThickness); // guards the grazing rays at a silhouette edge
+  vec3 pf = o + t0 * dir;
+  sf = dot(scalarPlane.xyz, pf) + scalarPlane.w;
+  sb = dot(scalarPlane.xyz, pf + D * dir) + scalarPlane.w;
+}
+#endif
+
 void main()
 {
   float sf = segment.x, sb = segment.y, D = segment.z;
+#ifdef PSI_EXACT_SEGMENTS
+  exactSegment(sf, sb, D);
+#endif
   float frontDepth = gl_FragCoord.z;
 #ifdef PSI_NEAR_CLIP
   if (clipped == 1 && !clipSegment(sf, sb, D, frontDepth))

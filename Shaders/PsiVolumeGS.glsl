@@ -26,6 +26,18 @@ uniform int classTable[81];
 
 noperspective out vec3 segment; // front scalar, back scalar, thickness
 
+#ifdef PSI_EXACT_SEGMENTS
+// Perspective: screen-linear interpolation of thickness is only approximate (it is exact in
+// parallel projection). Every fan triangle has two thin vertices a, b, and the rays through it
+// enter and leave the tetrahedron through the two faces sharing edge ab; those two planes and the
+// tetrahedron's linear scalar function let the fragment shader reconstruct the segment exactly.
+flat out vec4 facePlaneA;   // n . x = w, view space
+flat out vec4 facePlaneB;
+flat out vec4 scalarPlane;  // s(x) = dot(xyz, x) + w
+flat out float maxThickness;
+vec4 scalarFn;
+#endif
+
 #ifdef PSI_NEAR_CLIP
 // Tetrahedra that cross the near plane cannot be projected: they are drawn as a screen quad
 // covering their near-clipped projection, and the fragment shader intersects each ray with the
@@ -42,6 +54,9 @@ vec4 clipP[4];
 vec3 viewP[4];
 float scalar[4];
 vec2 ndc[4];
+
+vec3 thickFront;
+vec3 thickSeg;
 
 float cross2(vec2 a, vec2 b)
 {
@@ -71,6 +86,32 @@ float farness(vec3 p)
   return -p.z;
 }
 
+#ifdef PSI_EXACT_SEGMENTS
+vec4 facePlane(int a, int b, int c)
+{
+  vec3 n = cross(viewP[b] - viewP[a], viewP[c] - viewP[a]);
+  return vec4(n, dot(n, viewP[a]));
+}
+#endif
+
+// Flat data of the triangle completed by the next vertex (the provoking, last, vertex): the two
+// faces that share its thin edge a-b.
+void setEdge(int a, int b)
+{
+#ifdef PSI_EXACT_SEGMENTS
+  int c = 0;
+  while (c == a || c == b)
+  {
+    ++c;
+  }
+  int d = 6 - a - b - c;
+  facePlaneA = facePlane(a, b, c);
+  facePlaneB = facePlane(a, b, d);
+  scalarPlane = scalarFn;
+  maxThickness = 2.0 * thickSeg.z;
+#endif
+}
+
 void setFlat(int isClipped)
 {
 #ifdef PSI_NEAR_CLIP
@@ -89,9 +130,6 @@ void emitThin(int i)
   gl_Position = clipP[i];
   EmitVertex();
 }
-
-vec3 thickFront;
-vec3 thickSeg;
 
 void emitThick()
 {
@@ -196,6 +234,23 @@ void main()
     }
     ndc[i] = clipP[i].xy / clipP[i].w;
   }
+#ifdef PSI_EXACT_SEGMENTS
+  {
+    // s(x) = s0 + g . (x - V0) with g from the three edge equations (Cramer's rule); a
+    // zero-volume tetrahedron has no interior to integrate and is skipped.
+    vec3 e1 = viewP[1] - viewP[0], e2 = viewP[2] - viewP[0], e3 = viewP[3] - viewP[0];
+    vec3 c23 = cross(e2, e3), c31 = cross(e3, e1), c12 = cross(e1, e2);
+    float det = dot(e1, c23);
+    float scale = max(max(dot(e1, e1), dot(e2, e2)), dot(e3, e3));
+    if (abs(det) <= 1e-7 * scale * sqrt(scale))
+    {
+      return;
+    }
+    vec3 g = ((scalar[1] - scalar[0]) * c23 + (scalar[2] - scalar[0]) * c31 +
+               (scalar[3] - scalar[0]) * c12) / det;
+    scalarFn = vec4(g, scalar[0] - dot(g, viewP[0]));
+  }
+#endif
   // seed 003 Fig. 3
   int t1 = int(sign(cross2(ndc[1] - ndc[0], ndc[2] - ndc[0]))) + 1;
   int t2 = int(sign(cross2(ndc[1] - ndc[0], ndc[3] - ndc[0]))) + 1;
@@ -216,7 +271,8 @@ void main()
     vec3 h = l.x * viewP[p0] + l.y * viewP[p1] + l.z * viewP[p2];
     float sh = l.x * scalar[p0] + l.y * scalar[p1] + l.z * scalar[p2];
     setThick(viewP[p3], scalar[p3], h, sh);
-    emitThin(p0); emitThin(p1); emitThick(); emitThin(p2); emitThin(p0);
+    emitThin(p0); emitThin(p1); setEdge(p0, p1); emitThick();
+    setEdge(p1, p2); emitThin(p2); setEdge(p2, p0); emitThin(p0);
     EndPrimitive();
   }
   else if (cls == 2)
@@ -232,9 +288,10 @@ void main()
     alongEdge(p2, p3, clamp(u, 0.0, 1.0), pb, sb);
     setThick(pa, sa, pb, sb);
     // silhouette quad p0 p2 p1 p3 around the crossing
-    emitThin(p0); emitThin(p2); emitThick(); emitThin(p1); emitThin(p3);
+    emitThin(p0); emitThin(p2); setEdge(p0, p2); emitThick();
+    setEdge(p2, p1); emitThin(p1); setEdge(p1, p3); emitThin(p3);
     EndPrimitive();
-    emitThin(p3); emitThin(p0); emitThick();
+    emitThin(p3); emitThin(p0); setEdge(p3, p0); emitThick();
     EndPrimitive();
   }
   else if (cls == 3)
@@ -243,13 +300,14 @@ void main()
     float sh;
     alongEdge(p0, p1, edgeParam(p0, p1, p3), h, sh);
     setThick(viewP[p3], scalar[p3], h, sh);
-    emitThin(p1); emitThin(p2); emitThick(); emitThin(p0);
+    emitThin(p1); emitThin(p2); setEdge(p1, p2); emitThick();
+    setEdge(p2, p0); emitThin(p0);
     EndPrimitive();
   }
   else if (cls == 4)
   {
     setThick(viewP[p2], scalar[p2], viewP[p3], scalar[p3]);
-    emitThin(p0); emitThin(p1); emitThick();
+    emitThin(p0); emitThin(p1); setEdge(p0, p1); emitThick();
     EndPrimitive();
   }
 }
