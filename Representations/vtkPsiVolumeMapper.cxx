@@ -21,6 +21,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLCamera.h"
+#include "vtkPropCollection.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -206,6 +207,31 @@ MeshData GatherMesh(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool 
   return m;
 }
 
+// Whether any visible opaque prop other than `vol` overlaps the volume's bounds: only then can
+// opaque geometry cut through cells, which needs the scene depth in the fragment shader.
+bool OpaqueGeometryInside(vtkRenderer* ren, vtkVolume* vol)
+{
+  double vb[6];
+  vol->GetBounds(vb);
+  vtkPropCollection* props = ren->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* p = props->GetNextProp(it))
+  {
+    if (p == vol || !p->GetVisibility() || p->IsA("vtkVolume") || !p->HasOpaqueGeometry())
+    {
+      continue;
+    }
+    const double* b = p->GetBounds();
+    if (b && b[0] <= vb[1] && vb[0] <= b[1] && b[2] <= vb[3] && vb[2] <= b[3] && b[4] <= vb[5] &&
+      vb[4] <= b[5])
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 // Row-major 4x4 product a * b.
 void Multiply(const double a[16], const double b[16], double out[16])
 {
@@ -241,8 +267,10 @@ struct vtkPsiVolumeMapper::Internals
   vtkNew<vtkTextureObject> PsiTexture;
   int PsiSize = 0;
 
-  // Frame buffers
+  // Frame buffers: the scene's depth as the float target's depth attachment (hardware depth test),
+  // and a second copy to sample when a shader variant reads it.
   vtkNew<vtkTextureObject> DepthTexture;
+  vtkNew<vtkTextureObject> DepthSampleTexture;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   int Size[2] = { 0, 0 };
   std::unique_ptr<vtkOpenGLQuadHelper> Composite;
@@ -266,6 +294,7 @@ struct vtkPsiVolumeMapper::Internals
     this->TransferTexture->ReleaseGraphicsResources(win);
     this->PsiTexture->ReleaseGraphicsResources(win);
     this->DepthTexture->ReleaseGraphicsResources(win);
+    this->DepthSampleTexture->ReleaseGraphicsResources(win);
     if (this->Framebuffer)
     {
       this->Framebuffer->ReleaseGraphicsResources(win);
@@ -497,9 +526,11 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   vtkOpenGLState* ostate = renWin->GetState();
   I.DepthTexture->SetContext(renWin);
+  I.DepthSampleTexture->SetContext(renWin);
   if (I.Size[0] != w || I.Size[1] != h || !I.Framebuffer)
   {
     I.DepthTexture->AllocateDepth(w, h, vtkTextureObject::Float32);
+    I.DepthSampleTexture->AllocateDepth(w, h, vtkTextureObject::Float32);
     ostate->PushFramebufferBindings();
     if (!I.Framebuffer)
     {
@@ -507,17 +538,17 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       I.Framebuffer->SetContext(renWin);
       I.Framebuffer->PopulateFramebuffer(w, h, true, 1, VTK_FLOAT, false, 0, 0);
     }
-    else
-    {
-      I.Framebuffer->Bind();
-      I.Framebuffer->Resize(w, h);
-    }
+    I.Framebuffer->Bind();
+    I.Framebuffer->Resize(w, h);
+    I.Framebuffer->AddDepthAttachment(I.DepthTexture);
     ostate->PopFramebufferBindings();
     I.Size[0] = w;
     I.Size[1] = h;
   }
+  // The scene's depth, read from the framebuffer bound for reading (the one being rendered).
   I.DepthTexture->Activate();
   I.DepthTexture->CopyFromFrameBuffer(x0, y0, 0, 0, w, h);
+  I.DepthTexture->Deactivate();
 
   // ---- 6. Shader program for this feature set (cached by VTK's shader cache). Only what the
   // scene calls for is compiled in: the near-plane path only when the near plane cuts the mesh.
@@ -535,7 +566,19 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     nearClip = z > nearZ;
   }
   this->LastUsedNearPlaneClipping = nearClip;
+  const bool opaqueClip = OpaqueGeometryInside(ren, vol);
+  this->LastUsedOpaqueClipping = opaqueClip;
+  const bool sampleDepth = nearClip || opaqueClip;
+  if (sampleDepth)
+  {
+    I.DepthSampleTexture->Activate();
+    I.DepthSampleTexture->CopyFromFrameBuffer(x0, y0, 0, 0, w, h);
+  }
   std::string defines;
+  if (opaqueClip)
+  {
+    defines += "#define PSI_OPAQUE_CLIP\n";
+  }
   if (!parallel && this->ExactPerspectiveSegments)
   {
     defines += "#define PSI_EXACT_SEGMENTS\n";
@@ -592,7 +635,10 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       static_cast<float>(0.5 / I.PsiSize) };
     prog->SetUniform2f("psiScaleShift", psiScaleShift);
   }
-  prog->SetUniformi("sceneDepth", I.DepthTexture->GetTextureUnit());
+  if (sampleDepth)
+  {
+    prog->SetUniformi("sceneDepth", I.DepthSampleTexture->GetTextureUnit());
+  }
   const float viewport[2] = { static_cast<float>(w), static_cast<float>(h) };
   prog->SetUniform2f("viewportSize", viewport);
 
@@ -604,6 +650,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
     vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
     vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
+    vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
     vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
     vtkOpenGLState::ScopedglClearColor clearColor(ostate);
 
@@ -614,7 +661,8 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     ostate->vtkglDisable(GL_SCISSOR_TEST);
     ostate->vtkglClearColor(0, 0, 0, 0);
     ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ostate->vtkglEnable(GL_DEPTH_TEST); // against the scene's opaque geometry
+    ostate->vtkglDepthFunc(GL_LESS);
     ostate->vtkglDepthMask(GL_FALSE);
     ostate->vtkglDisable(GL_CULL_FACE);
     ostate->vtkglEnable(GL_BLEND);
@@ -640,6 +688,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 
     // ---- 8. Composite the volume image (premultiplied) over the scene.
     ostate->vtkglViewport(x0, y0, w, h);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
     if (!I.Composite)
     {
       I.Composite.reset(new vtkOpenGLQuadHelper(renWin, nullptr, PsiCompositeFS, ""));
@@ -659,7 +708,10 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   I.PointsTexture->Deactivate();
   I.TransferTexture->Deactivate();
-  I.DepthTexture->Deactivate();
+  if (sampleDepth)
+  {
+    I.DepthSampleTexture->Deactivate();
+  }
   if (needPsi)
   {
     I.PsiTexture->Deactivate();

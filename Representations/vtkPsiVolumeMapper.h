@@ -69,6 +69,8 @@ public:
   vtkGetMacro(LastRenderSeconds, double);
   /// Whether the last frame needed the near-plane path (camera inside or close to the mesh).
   vtkGetMacro(LastUsedNearPlaneClipping, bool);
+  /// Whether the last frame clipped segments at opaque geometry overlapping the volume.
+  vtkGetMacro(LastUsedOpaqueClipping, bool);
   ///@}
 
 protected:
@@ -83,6 +85,7 @@ protected:
   double LastSortSeconds = 0;
   double LastRenderSeconds = 0;
   bool LastUsedNearPlaneClipping = false;
+  bool LastUsedOpaqueClipping = false;
 
 private:
   vtkPsiVolumeMapper(const vtkPsiVolumeMapper&) = delete;

@@ -37,6 +37,26 @@ int vtkPsiVolumeRepresentation::GetIntegrationMethod()
   return this->PsiMapper->GetIntegrationMethod();
 }
 
+vtkIdType vtkPsiVolumeRepresentation::GetNumberOfTetrahedra()
+{
+  return this->PsiMapper->GetNumberOfTetrahedra();
+}
+
+vtkIdType vtkPsiVolumeRepresentation::GetNumberOfSkippedCells()
+{
+  return this->PsiMapper->GetNumberOfSkippedCells();
+}
+
+double vtkPsiVolumeRepresentation::GetLastRenderSeconds()
+{
+  return this->PsiMapper->GetLastRenderSeconds();
+}
+
+double vtkPsiVolumeRepresentation::GetLastSortSeconds()
+{
+  return this->PsiMapper->GetLastSortSeconds();
+}
+
 vtkPsiVolumeMapper* vtkPsiVolumeRepresentation::GetPsiVolumeMapper()
 {
   return this->PsiMapper;

@@ -34,6 +34,14 @@ public:
   int GetIntegrationMethod();
   ///@}
 
+  ///@{
+  /// Read-outs of the last frame (information properties of the proxy).
+  vtkIdType GetNumberOfTetrahedra();
+  vtkIdType GetNumberOfSkippedCells();
+  double GetLastRenderSeconds();
+  double GetLastSortSeconds();
+  ///@}
+
   vtkPsiVolumeMapper* GetPsiVolumeMapper();
 
 protected:

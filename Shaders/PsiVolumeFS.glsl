@@ -5,23 +5,24 @@
 // thickness interpolated from the geometry shader) and outputs premultiplied color, blended
 // back to front with (ONE, ONE_MINUS_SRC_ALPHA) into a floating-point target.
 
-noperspective in vec3 segment;
+#ifndef PSI_EXACT_SEGMENTS
+noperspective in vec3 segment; // front scalar, back scalar, thickness (HAPT)
+#endif
 
 uniform sampler2D transferFunction; // N x 1, rgb = luminance, a = attenuation (1/length)
 uniform vec2 tfScaleShift;          // texcoord = s * scale + shift (texel centers)
 uniform sampler2D psiTable;         // Psi(gamma_b, gamma_f), seed 000 Eq. 12
 uniform vec2 psiScaleShift;         // texcoord = u * scale + shift (texel centers)
-uniform sampler2D sceneDepth;       // depth of the opaque geometry already drawn
+uniform sampler2D sceneDepth;       // depth of the opaque geometry (PSI_OPAQUE_CLIP, PSI_NEAR_CLIP)
 uniform mat4 DCVCMatrix;            // inverse projection: window depth -> view distance
 uniform vec2 viewportSize;
 uniform mat4 VCDCMatrix;
 uniform int parallelProjection;
 
 #ifdef PSI_EXACT_SEGMENTS
-flat in vec4 facePlaneA;
-flat in vec4 facePlaneB;
-flat in vec4 scalarPlane;
-flat in float maxThickness;
+smooth in vec4 frontPoint;
+flat in vec4 backPlane;
+flat in vec4 scalarGrad;
 #endif
 
 #ifdef PSI_NEAR_CLIP
@@ -110,27 +111,27 @@ bool clipSegment(out float sf, out float sb, out float D, out float frontDepth)
 #endif
 
 #ifdef PSI_EXACT_SEGMENTS
-// The ray through this pixel crosses the two face planes of the fan triangle's edge: the nearer
-// crossing is the entry, the farther the exit (exact in perspective).
+// Exact segment in perspective: the ray from the eye through the (exactly interpolated) front
+// point leaves through the back plane.
 void exactSegment(out float sf, out float sb, out float D)
 {
-  vec3 o = parallelProjection == 1 ? viewPointAt(0.0) : vec3(0.0);
-  vec3 dir = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : normalize(viewPointAt(gl_FragCoord.z));
-  float ta = (facePlaneA.w - dot(facePlaneA.xyz, o)) / dot(facePlaneA.xyz, dir);
-  float tb = (facePlaneB.w - dot(facePlaneB.xyz, o)) / dot(facePlaneB.xyz, dir);
-  float t0 = min(ta, tb), t1 = max(ta, tb);
-  D = min(t1 - t0, maxThickness); // guards the grazing rays at a silhouette edge
-  vec3 pf = o + t0 * dir;
-  sf = dot(scalarPlane.xyz, pf) + scalarPlane.w;
-  sb = dot(scalarPlane.xyz, pf + D * dir) + scalarPlane.w;
+  vec3 dir = normalize(frontPoint.xyz);
+  D = (backPlane.w - dot(backPlane.xyz, frontPoint.xyz)) / dot(backPlane.xyz, dir);
+  D = clamp(D, 0.0, scalarGrad.w); // guards grazing rays at a silhouette edge
+  sf = frontPoint.w;
+  sb = sf + D * dot(scalarGrad.xyz, dir);
 }
 #endif
 
 void main()
 {
-  float sf = segment.x, sb = segment.y, D = segment.z;
+  float sf, sb, D;
 #ifdef PSI_EXACT_SEGMENTS
   exactSegment(sf, sb, D);
+#else
+  sf = segment.x;
+  sb = segment.y;
+  D = segment.z;
 #endif
   float frontDepth = gl_FragCoord.z;
 #ifdef PSI_NEAR_CLIP
@@ -139,12 +140,16 @@ void main()
     discard;
   }
 #endif
-  // Opaque geometry: nothing behind it is seen, and a cell it cuts is integrated only up to it.
+  // Fragments behind opaque geometry are rejected by the depth test against the scene's depth.
+  // Where opaque geometry cuts through the volume, a cell it cuts is integrated only up to it.
+#if defined(PSI_OPAQUE_CLIP) || defined(PSI_NEAR_CLIP)
   float opaque = texelFetch(sceneDepth, ivec2(gl_FragCoord.xy), 0).r;
   if (frontDepth >= opaque)
   {
     discard;
   }
+#endif
+#ifdef PSI_OPAQUE_CLIP
   if (opaque < 1.0)
   {
     float toOpaque = distance(viewPointAt(frontDepth), viewPointAt(opaque));
@@ -154,6 +159,7 @@ void main()
       D = toOpaque;
     }
   }
+#endif
   vec4 c = integrateSegment(sf, sb, max(D, 0.0));
   if (!(c.a > 0.0))
   {

@@ -24,18 +24,21 @@ in vec4 vsP3[];
 uniform mat4 VCDCMatrix;
 uniform int classTable[81];
 
+#ifndef PSI_EXACT_SEGMENTS
 noperspective out vec3 segment; // front scalar, back scalar, thickness
+#endif
 
 #ifdef PSI_EXACT_SEGMENTS
 // Perspective: screen-linear interpolation of thickness is only approximate (it is exact in
-// parallel projection). Every fan triangle has two thin vertices a, b, and the rays through it
-// enter and leave the tetrahedron through the two faces sharing edge ab; those two planes and the
-// tetrahedron's linear scalar function let the fragment shader reconstruct the segment exactly.
-flat out vec4 facePlaneA;   // n . x = w, view space
-flat out vec4 facePlaneB;
-flat out vec4 scalarPlane;  // s(x) = dot(xyz, x) + w
-flat out float maxThickness;
-vec4 scalarFn;
+// parallel projection, where HAPT's (s_f, s_b, l) triple is used). Every fan triangle lies in the
+// tetrahedron's front face for its rays, so perspective-correct interpolation of the view-space
+// front point and front scalar is exact; the rays leave through the other face sharing the
+// triangle's thin edge a-b (the back plane), where one plane intersection per fragment gives the
+// exact thickness and, with the scalar gradient, the back scalar.
+smooth out vec4 frontPoint; // view-space xyz, w = scalar
+flat out vec4 backPlane;    // n . x = w
+flat out vec4 scalarGrad;   // xyz: gradient of the scalar, w: bound on the thickness
+vec3 gradient;
 #endif
 
 #ifdef PSI_NEAR_CLIP
@@ -92,10 +95,16 @@ vec4 facePlane(int a, int b, int c)
   vec3 n = cross(viewP[b] - viewP[a], viewP[c] - viewP[a]);
   return vec4(n, dot(n, viewP[a]));
 }
+
+float planeDistance(vec4 plane, vec3 p)
+{
+  return abs(dot(plane.xyz, p) - plane.w) * inversesqrt(max(dot(plane.xyz, plane.xyz), 1e-37));
+}
 #endif
 
-// Flat data of the triangle completed by the next vertex (the provoking, last, vertex): the two
-// faces that share its thin edge a-b.
+// Flat data of the triangle completed by the next vertex (the provoking, last, vertex): of the
+// two faces sharing its thin edge a-b, the one through the thick front point is the front face,
+// the other the back face.
 void setEdge(int a, int b)
 {
 #ifdef PSI_EXACT_SEGMENTS
@@ -105,10 +114,9 @@ void setEdge(int a, int b)
     ++c;
   }
   int d = 6 - a - b - c;
-  facePlaneA = facePlane(a, b, c);
-  facePlaneB = facePlane(a, b, d);
-  scalarPlane = scalarFn;
-  maxThickness = 2.0 * thickSeg.z;
+  vec4 fc = facePlane(a, b, c), fd = facePlane(a, b, d);
+  backPlane = planeDistance(fc, thickFront) <= planeDistance(fd, thickFront) ? fd : fc;
+  scalarGrad = vec4(gradient, 1.5 * thickSeg.z);
 #endif
 }
 
@@ -126,7 +134,11 @@ void setFlat(int isClipped)
 void emitThin(int i)
 {
   setFlat(0);
+#ifdef PSI_EXACT_SEGMENTS
+  frontPoint = vec4(viewP[i], scalar[i]);
+#else
   segment = vec3(scalar[i], scalar[i], 0.0);
+#endif
   gl_Position = clipP[i];
   EmitVertex();
 }
@@ -134,7 +146,11 @@ void emitThin(int i)
 void emitThick()
 {
   setFlat(0);
+#ifdef PSI_EXACT_SEGMENTS
+  frontPoint = vec4(thickFront, thickSeg.x);
+#else
   segment = thickSeg;
+#endif
   gl_Position = VCDCMatrix * vec4(thickFront, 1.0);
   EmitVertex();
 }
@@ -194,8 +210,12 @@ void emitClipped()
   for (int k = 0; k < 4; ++k)
   {
     setFlat(1);
+#ifdef PSI_EXACT_SEGMENTS
+    frontPoint = vec4(0.0);
+#else
     segment = vec3(0.0);
-    gl_Position = vec4(corner[k], 0.0, 1.0);
+#endif
+    gl_Position = vec4(corner[k], -1.0, 1.0); // on the near plane: passes the depth test
     EmitVertex();
   }
   EndPrimitive();
@@ -246,9 +266,8 @@ void main()
     {
       return;
     }
-    vec3 g = ((scalar[1] - scalar[0]) * c23 + (scalar[2] - scalar[0]) * c31 +
-               (scalar[3] - scalar[0]) * c12) / det;
-    scalarFn = vec4(g, scalar[0] - dot(g, viewP[0]));
+    gradient = ((scalar[1] - scalar[0]) * c23 + (scalar[2] - scalar[0]) * c31 +
+                 (scalar[3] - scalar[0]) * c12) / det;
   }
 #endif
   // seed 003 Fig. 3

@@ -283,6 +283,7 @@ int main(int argc, char* argv[])
   PSI_CHECK(mapper->GetNumberOfTetrahedra() == s.Grid->GetNumberOfCells(), "tetrahedra drawn %lld",
     static_cast<long long>(mapper->GetNumberOfTetrahedra()));
   PSI_CHECK(!mapper->GetLastUsedNearPlaneClipping(), "outside view must not compile the near path");
+  PSI_CHECK(!mapper->GetLastUsedOpaqueClipping(), "no opaque geometry: no depth sampling");
   mapper->SetIntegrationMethod(vtkPsiVolumeMapper::PARTIAL_PRE_INTEGRATION);
 
   // Parallel projection.
@@ -333,6 +334,7 @@ int main(int argc, char* argv[])
   {
     const Result r = Compare("opaque_plane", win, ren, vol, refScene, actor, outDir);
     PSI_CHECK(r.Mean < 0.006, "opaque geometry: mean error %g", r.Mean);
+    PSI_CHECK(mapper->GetLastUsedOpaqueClipping(), "opaque plane in the volume needs clipping");
   }
   ren->RemoveActor(actor);
 

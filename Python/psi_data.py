@@ -1,0 +1,108 @@
+"""Loading datasets for 'Psi Volume' in pvpython: files of the unstructured-volume literature
+(PLOT3D pairs, legacy/XML VTK, Exodus) and the embedded default (ParaView's Wavelet, split into
+tetrahedra). Shared by the render command, the benchmarks and the tests."""
+import glob
+import os
+
+from paraview import simple
+
+SHARED_DATA = os.path.normpath(os.path.join(os.path.dirname(__file__), "..", "..", "shared", "data"))
+
+# PLOT3D datasets of ../shared/data: grid file, solution file, IBLANK, array to render.
+PLOT3D = {
+    "bluntfin": ("bluntfinxyz.bin", "bluntfinq.bin", 0, "Density"),
+    "post": ("postxyz.bin", "postq.bin", 1, "StagnationEnergy"),
+    "comb": ("combxyz.bin", "combq.bin", 0, "Density"),
+}
+
+
+def find_plugin():
+    """Path of the built plugin (PSI_PLUGIN overrides)."""
+    if os.environ.get("PSI_PLUGIN"):
+        return os.environ["PSI_PLUGIN"]
+    here = os.path.dirname(os.path.abspath(__file__))
+    hits = glob.glob(os.path.join(here, "..", "build", "lib*", "paraview-5.11", "plugins",
+                                  "PsiVolume", "PsiVolume.so"))
+    if not hits:
+        raise RuntimeError("PsiVolume plugin not built: run scripts/build.sh (or set PSI_PLUGIN)")
+    return os.path.abspath(hits[0])
+
+
+def load_plugin(ns):
+    simple.LoadPlugin(find_plugin(), remote=False, ns=ns)
+
+
+def wavelet(half=20):
+    """The embedded default: ParaView's Wavelet source, tetrahedralized (8,000 * 5 tets at 20)."""
+    w = simple.Wavelet(WholeExtent=[-half, half, -half, half, -half, half])
+    return simple.Tetrahedralize(Input=w), "RTData"
+
+
+def plot3d(name, data_dir=SHARED_DATA):
+    xyz, q, iblank, array = PLOT3D[name]
+    reader = simple.PLOT3DReader(FileName=os.path.join(data_dir, xyz),
+                                 QFileName=[os.path.join(data_dir, q)])
+    reader.BinaryFile = 1
+    reader.ByteOrder = "BigEndian"
+    reader.MultiGrid = 0
+    reader.HasByteCount = 0
+    reader.IBlanking = iblank
+    merged = simple.MergeBlocks(Input=reader)
+    return simple.Tetrahedralize(Input=merged), array
+
+
+def open_any(path, array=None):
+    """A pipeline producing an unstructured grid from `path`, and the point array to render.
+
+    `path` may be a PLOT3D grid file (its solution file is found by replacing 'xyz' with 'q'),
+    one of the short names bluntfin/post/comb, or anything ParaView reads."""
+    base = os.path.basename(path)
+    if path in PLOT3D:
+        return plot3d(path)
+    if base.endswith("xyz.bin"):
+        key = base[: -len("xyz.bin")]
+        if key in PLOT3D:
+            return plot3d(key, os.path.dirname(os.path.abspath(path)))
+    if not os.path.exists(path):
+        raise SystemExit("no such file: %s" % path)
+    reader = simple.OpenDataFile(path)
+    if reader is None:
+        raise SystemExit("ParaView cannot read %s" % path)
+    reader.UpdatePipeline()
+    src = reader
+    info = reader.GetDataInformation()
+    if info.GetCompositeDataSetName() or info.DataInformation.GetCompositeDataClassName():
+        src = simple.MergeBlocks(Input=reader)
+    if array is None:
+        pd = src.PointData
+        names = [pd.GetArray(i).Name for i in range(pd.GetNumberOfArrays())]
+        if names:
+            array = names[0]
+        else:
+            cd = src.CellData
+            names = [cd.GetArray(i).Name for i in range(cd.GetNumberOfArrays())]
+            array = names[0] if names else None
+    return src, array
+
+
+def association(src, array):
+    """'POINTS' or 'CELLS' for the array name."""
+    if src.PointData.GetArray(array) is not None:
+        return "POINTS"
+    return "CELLS"
+
+
+def show_volume(src, array, view, representation="Psi Volume", unit_distance=None):
+    """Shows `src` as a volume colored by `array` with ParaView's default maps."""
+    d = simple.Show(src, view)
+    simple.ColorBy(d, (association(src, array), array))
+    d.SetRepresentationType(representation)
+    d.RescaleTransferFunctionToDataRange(True, False)
+    if unit_distance is not None:
+        d.ScalarOpacityUnitDistance = unit_distance
+    return d
+
+
+def wait(view):
+    """Blocks until the GL work of the last render is done (for wall-clock frame times)."""
+    view.GetRenderWindow().WaitForCompletion()
