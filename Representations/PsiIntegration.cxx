@@ -117,7 +117,7 @@ Rgba IntegrateReference(const Segment& s)
       const R T = D * (tf * u + (tb - tf) * u * u / 2);
       return D * tau * L * std::exp(-T);
     };
-    out[k] = static_cast<double>(GK::integrate(g, R(0), umax, 25, R(1e-16)));
+    out[k] = static_cast<double>(GK::integrate(g, R(0), umax, 15, R(1e-14)));
   }
   // Total optical depth by quadrature of tau as well (not the closed form under test).
   auto t = [&](R u) { return D * (tf + (tb - tf) * u); };

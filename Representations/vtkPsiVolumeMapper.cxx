@@ -366,7 +366,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
   if (input->GetNumberOfCells() == 0)
   {
-    this->NumberOfTetrahedra = 0;
+    this->ResetStatistics();
     return; // nothing to draw; an empty grid is not an error
   }
   if (!scalars)
@@ -384,12 +384,20 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     I.MeshTime = meshTime;
     I.MeshArrayKey = arrayKey;
     this->NumberOfSkippedCells = I.Mesh.NonTetCells + I.Mesh.NonFiniteTets;
-    if (I.Mesh.NonTetCells)
+    if (I.Mesh.NonTetCells && I.Mesh.Tets.empty() && !I.Mesh.NonFiniteTets)
+    {
+      vtkWarningMacro("Psi Volume: the input has no volume cells (" << I.Mesh.NonTetCells
+                                                                    << " surface, line or vertex "
+                                                                       "cells): nothing to "
+                                                                       "volume-render. Use a "
+                                                                       "Surface representation.");
+    }
+    else if (I.Mesh.NonTetCells)
     {
       vtkWarningMacro("Psi Volume skipped " << I.Mesh.NonTetCells
-                                            << " cells that are not linear tetrahedra; use the "
-                                               "'Volume' representation's tetrahedralization or the "
-                                               "Tetrahedralize filter first.");
+                                            << " cells that are not linear tetrahedra (e.g. "
+                                               "surface cells mixed into the mesh, or input "
+                                               "given to the mapper without tetrahedralization).");
     }
     if (I.Mesh.NonFiniteTets)
     {
@@ -717,6 +725,14 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     I.PsiTexture->Deactivate();
   }
   this->LastRenderSeconds = SecondsSince(t0);
+}
+
+void vtkPsiVolumeMapper::ResetStatistics()
+{
+  this->NumberOfTetrahedra = 0;
+  this->NumberOfSkippedCells = 0;
+  this->LastSortSeconds = 0;
+  this->LastRenderSeconds = 0;
 }
 
 void vtkPsiVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)

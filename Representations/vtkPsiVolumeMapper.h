@@ -67,6 +67,8 @@ public:
   vtkGetMacro(NumberOfSkippedCells, vtkIdType);
   vtkGetMacro(LastSortSeconds, double);
   vtkGetMacro(LastRenderSeconds, double);
+  /// Zeroes the read-outs above (no frame drawn, e.g. empty input).
+  void ResetStatistics();
   /// Whether the last frame needed the near-plane path (camera inside or close to the mesh).
   vtkGetMacro(LastUsedNearPlaneClipping, bool);
   /// Whether the last frame clipped segments at opaque geometry overlapping the volume.

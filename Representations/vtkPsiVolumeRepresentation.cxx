@@ -1,5 +1,9 @@
 #include "vtkPsiVolumeRepresentation.h"
 
+#include "vtkDataSet.h"
+#include "vtkVolumeRepresentationPreprocessor.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPsiVolumeMapper.h"
 
@@ -21,6 +25,18 @@ vtkPsiVolumeRepresentation::~vtkPsiVolumeRepresentation() = default;
 void vtkPsiVolumeRepresentation::SetActiveVolumeMapper(const char*)
 {
   this->Superclass::SetActiveVolumeMapper(MapperName);
+}
+
+int vtkPsiVolumeRepresentation::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  const int ok = this->Superclass::RequestData(request, inputVector, outputVector);
+  vtkDataSet* data = vtkDataSet::SafeDownCast(this->Preprocessor->GetOutputDataObject(0));
+  if (!data || data->GetNumberOfCells() == 0)
+  {
+    this->PsiMapper->ResetStatistics();
+  }
+  return ok;
 }
 
 void vtkPsiVolumeRepresentation::SetIntegrationMethod(int method)

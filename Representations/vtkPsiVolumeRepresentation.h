@@ -48,6 +48,9 @@ protected:
   vtkPsiVolumeRepresentation();
   ~vtkPsiVolumeRepresentation() override;
 
+  /// ParaView does not call the mapper for empty input; its read-outs are reset here instead.
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
   vtkNew<vtkPsiVolumeMapper> PsiMapper;
 
 private:

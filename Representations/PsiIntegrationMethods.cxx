@@ -1,0 +1,296 @@
+#include "PsiIntegrationMethods.h"
+
+#include "PsiTable.h"
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <boost/math/special_functions/erf.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace psi
+{
+
+const char* MethodName(Method m)
+{
+  switch (m)
+  {
+    case Method::Average:
+      return "Average";
+    case Method::PartialPreIntegration:
+      return "Partial Pre-Integration";
+    case Method::LinearExact:
+      return "Linear Exact";
+    case Method::AverageOpacity:
+      return "Average Opacity";
+    case Method::LinearLuminanceAverageOpacity:
+      return "Linear Luminance Average Opacity";
+    case Method::LinearOpacityImproved:
+      return "Linear Opacity Improved";
+    case Method::FullPreIntegration:
+      return "Full Pre-Integration";
+    default:
+      return "Unknown";
+  }
+}
+
+bool UsesLinearOpacity(Method m)
+{
+  return m == Method::AverageOpacity || m == Method::LinearLuminanceAverageOpacity ||
+    m == Method::LinearOpacityImproved;
+}
+
+Segment AttenuationSegment(const TFSegment& s)
+{
+  Segment g;
+  g.Lf = s.Lf;
+  g.Lb = s.Lb;
+  g.tauf = s.af / s.unit;
+  g.taub = s.ab / s.unit;
+  g.D = s.D;
+  return g;
+}
+
+double Erfcx(double x)
+{
+  // e^{x^2} erfc(x) in double: Boost's erfc up to x = 26 (e^{676} and erfc(26) ~ 1e-296 are
+  // both representable), then the asymptotic series (Abramowitz-Stegun 7.1.23), whose first
+  // omitted term is below 1e-14 there. (The GLSL version
+  // uses the float-grade fit of seed 001 Eqs. 3.23-3.24, as Williams, Max and Stein do.)
+  if (x < 26)
+  {
+    return std::exp(x * x) * boost::math::erfc(x);
+  }
+  const double r = 1 / (2 * x * x);
+  return 0.5641895835477563 / x * (1 - r * (1 - 3 * r * (1 - 5 * r * (1 - 7 * r * (1 - 9 * r)))));
+}
+
+double Dawson(double x)
+{
+  // Rybicki's method (Numerical Recipes §6.10; seed 001 Appendix B.3 uses h = 0.4 and 6 terms,
+  // ~2e-7). Here h = 0.2 and 17 terms: the sampling error e^{-(pi/2h)^2} and the truncation are
+  // both below 1e-16; small |x| by its Taylor series.
+  const double ax = std::abs(x);
+  if (ax < 0.2)
+  {
+    // F(x) = sum_n (-1)^n 2^n x^{2n+1} / (2n+1)!!
+    double term = x, sum = x;
+    const double x2 = x * x;
+    for (int n = 1; n < 12; ++n)
+    {
+      term *= -2 * x2 / (2 * n + 1);
+      sum += term;
+    }
+    return sum;
+  }
+  constexpr double H = 0.2;
+  constexpr int Terms = 17;
+  const int n0 = 2 * static_cast<int>(std::floor(0.5 * ax / H + 0.5));
+  const double xp = ax - n0 * H;
+  double e1 = std::exp(2 * H * xp);
+  const double e2 = e1 * e1;
+  double d1 = n0 + 1, d2 = d1 - 2, sum = 0;
+  for (int i = 0; i < Terms; ++i)
+  {
+    const double c = std::exp(-((2 * i + 1) * H) * ((2 * i + 1) * H));
+    sum += c * (e1 / d1 + 1 / (d2 * e1));
+    d1 += 2;
+    d2 -= 2;
+    e1 *= e2;
+  }
+  // Rybicki: F(x) = lim_{h->0} (1/sqrt(pi)) sum_{n odd} e^{-(x - nh)^2} / n, here recentred at x'.
+  const double r = 0.5641895835477563 * std::exp(-xp * xp) * sum;
+  return x < 0 ? -r : r;
+}
+
+namespace
+{
+// M_n(b) = int_0^1 u^n e^{-bu} du: power series for small b, upward recurrence
+// M_n = (n M_{n-1} - e^{-b}) / b from M_0 = (1 - e^{-b}) / b otherwise (stable for b >= 2, n <= 4).
+double Moment(int n, double b)
+{
+  if (b < 2)
+  {
+    double sum = 0, term = 1; // term = (-b)^k / k!
+    for (int k = 0; k < 40; ++k)
+    {
+      sum += term / (n + k + 1);
+      term *= -b / (k + 1);
+    }
+    return sum;
+  }
+  const double eb = std::exp(-b);
+  double m = -std::expm1(-b) / b;
+  for (int i = 1; i <= n; ++i)
+  {
+    m = (i * m - eb) / b;
+  }
+  return m;
+}
+} // namespace
+
+double PsiClosedForm(double taubD, double taufD)
+{
+  // Psi = int_0^1 exp(-b u - c u^2) du, b = tau_f D, c = (tau_b - tau_f) D / 2 (PsiIntegration.h).
+  if (std::isnan(taubD) || std::isnan(taufD))
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  if (std::isinf(taubD) || std::isinf(taufD))
+  {
+    return 0.0;
+  }
+  const double b = taufD, c = 0.5 * (taubD - taufD);
+  const double zeta = std::exp(-(b + c)); // exp(-(tau_b + tau_f) D / 2)
+  if (std::abs(c) < 1e-4 * std::max(1.0, b))
+  {
+    // Where the closed form cancels (tau_b ~ tau_f): the series in c around the homogeneous case
+    // (Eq. 3.21), Psi = M0 - c M2 + c^2 M4 / 2 - ..., truncated after c^2 (error ~ |c|^3 / 42).
+    return Moment(0, b) - c * Moment(2, b) + 0.5 * c * c * Moment(4, b);
+  }
+  const double rc = std::sqrt(std::abs(c));
+  const double y0 = b / (2 * rc);
+  if (c > 0)
+  {
+    // tau_b > tau_f, Eq. 3.25: sqrt(pi)/(2 sqrt(c)) [erfcx(y0) - zeta erfcx(y0 + sqrt(c))].
+    return 0.886226925452758 / rc * (Erfcx(y0) - zeta * Erfcx(y0 + rc));
+  }
+  // tau_b < tau_f, Eq. 3.27: (1/sqrt(|c|)) [F(y0) - zeta F(y0 - sqrt(|c|))].
+  return (Dawson(y0) - zeta * Dawson(y0 - rc)) / rc;
+}
+
+namespace
+{
+// Linear-luminance blend given Psi and zeta (seed 001 Eq. 5.8 form, as in Appendix B.5/B.6).
+Rgba Blend(const TFSegment& s, double psi, double zeta)
+{
+  Rgba out;
+  for (int k = 0; k < 3; ++k)
+  {
+    out[k] = s.Lf[k] * (1 - psi) + s.Lb[k] * (psi - zeta);
+  }
+  out[3] = 1 - zeta;
+  return out;
+}
+
+// (1 - e^{-x}) / x with the x -> 0 limit.
+double PsiHomogeneous(double x)
+{
+  return x < 1e-8 ? 1 - 0.5 * x : -std::expm1(-x) / x;
+}
+
+// Optical depth of D world units of constant opacity alpha per unit (Eq. 5.12).
+double DepthOfOpacity(double alpha, double D, double unit)
+{
+  const double a = std::min(std::max(alpha, 0.0), 1.0);
+  if (a >= 1.0)
+  {
+    return D > 0 ? std::numeric_limits<double>::infinity() : 0.0;
+  }
+  return -std::log1p(-a) * D / unit;
+}
+} // namespace
+
+Rgba Integrate(Method m, const TFSegment& s, const PsiTable* psiTable)
+{
+  switch (m)
+  {
+    case Method::Average:
+      return IntegrateAverage(AttenuationSegment(s));
+    case Method::PartialPreIntegration:
+    {
+      const Segment g = AttenuationSegment(s);
+      const double psi = psiTable ? psiTable->Lookup(GammaOf(g.taub * g.D), GammaOf(g.tauf * g.D))
+                                  : Psi(g.taub * g.D, g.tauf * g.D);
+      return IntegrateWithPsi(g, psi);
+    }
+    case Method::LinearExact:
+    case Method::FullPreIntegration:
+    {
+      const Segment g = AttenuationSegment(s);
+      return IntegrateWithPsi(g, PsiClosedForm(g.taub * g.D, g.tauf * g.D));
+    }
+    case Method::AverageOpacity:
+    {
+      const double tauD = DepthOfOpacity(0.5 * (s.ab + s.af), s.D, s.unit);
+      const double alpha = -std::expm1(-tauD);
+      Rgba out;
+      for (int k = 0; k < 3; ++k)
+      {
+        out[k] = 0.5 * (s.Lf[k] + s.Lb[k]) * alpha;
+      }
+      out[3] = alpha;
+      return out;
+    }
+    case Method::LinearLuminanceAverageOpacity:
+    {
+      // Appendix B.5: tau from the averaged opacity; Psi of a homogeneous segment.
+      const double tauD = DepthOfOpacity(0.5 * (s.ab + s.af), s.D, s.unit);
+      const double zeta = std::exp(-tauD);
+      return Blend(s, std::isinf(tauD) ? 0.0 : PsiHomogeneous(tauD), zeta);
+    }
+    case Method::LinearOpacityImproved:
+    {
+      // Appendix B.6: zeta from the parabola-corrected mean opacity (Eq. 5.13), Psi from the
+      // 0.27/0.73-weighted opacity (Eq. 5.14).
+      const double d = s.ab - s.af;
+      const double zeta = std::exp(-DepthOfOpacity(0.5 * (s.ab + s.af) + 0.108165 * d * d, s.D, s.unit));
+      const double tau2D = DepthOfOpacity(0.27 * s.ab + 0.73 * s.af, s.D, s.unit);
+      return Blend(s, std::isinf(tau2D) ? 0.0 : PsiHomogeneous(tau2D), zeta);
+    }
+    default:
+      return Rgba{ { 0, 0, 0, 0 } };
+  }
+}
+
+Rgba IntegrateReferenceLinearOpacity(const TFSegment& s)
+{
+  using R = long double;
+  Rgba out{ { 0, 0, 0, 0 } };
+  if (!(s.D > 0))
+  {
+    return out;
+  }
+  const R D = s.D / s.unit; // in unit distances
+  const R af = std::min(std::max(s.af, 0.0), 1.0), ab = std::min(std::max(s.ab, 0.0), 1.0);
+  auto tau = [&](R u) { // per unit distance, u from the front
+    const R a = af + (ab - af) * u;
+    return a >= 1 ? std::numeric_limits<R>::infinity() : -std::log1p(-a);
+  };
+  using GK = boost::math::quadrature::gauss_kronrod<R, 31>;
+  // Optical depth from the front to u: D int_0^u -ln(1 - alpha(s)) ds with alpha linear, in closed
+  // form through F(w) = w ln w - w, w = 1 - alpha (no method under test uses this form).
+  const R k = ab - af;
+  auto F = [](R w) { return w > 0 ? w * std::log(w) - w : R(0); };
+  auto depth = [&](R u) {
+    if (u <= 0)
+    {
+      return R(0);
+    }
+    if (std::abs(k) < 1e-7L)
+    {
+      return -D * u * std::log1p(-(af + 0.5L * k * u)); // error O(k^2)
+    }
+    return D / k * (F(1 - af - k * u) - F(1 - af)); // d/du F(w(u)) = -k ln w
+
+  };
+  // alpha = 1 at an end makes tau infinite only at that point: -ln(1 - alpha) is integrable, the
+  // optical depth stays finite, and Gauss-Kronrod nodes never sit on the end points.
+  for (int k = 0; k < 3; ++k)
+  {
+    const R lf = s.Lf[k], lb = s.Lb[k];
+    auto g = [&](R u) { return D * tau(u) * (lf + (lb - lf) * u) * std::exp(-depth(u)); };
+    out[k] = static_cast<double>(GK::integrate(g, R(0), R(1), 15, R(1e-12)));
+  }
+  out[3] = static_cast<double>(-std::expm1(-depth(R(1))));
+  return out;
+}
+
+Rgba IntegrateReferenceFor(Method m, const TFSegment& s)
+{
+  return UsesLinearOpacity(m) ? IntegrateReferenceLinearOpacity(s)
+                              : IntegrateReference(AttenuationSegment(s));
+}
+
+} // namespace psi

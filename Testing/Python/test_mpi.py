@@ -1,0 +1,194 @@
+"""'Psi Volume' in parallel (issue 6): a tetrahedralized Wavelet rendered on 2 ranks with ParaView's
+ordered compositing must match the serial render of the same view.
+
+Run: mpiexec --allow-run-as-root -n 2 pvbatch --force-offscreen-rendering test_mpi.py
+The script runs on rank 0 (pvbatch's client). It first renders the serial reference in a separate
+serial pvbatch (`test_mpi.py --serial OUT.npy`, with the MPI launcher's environment removed so
+that it is a singleton), then the same pipeline and camera on all ranks, and compares the two
+images as numbers: mean and max absolute difference per channel, in 1/255 units.
+
+Tolerance: mean |diff| <= 1.0/255 and at most 1% of the pixels differing by more than 24/255. The
+parallel image is composited from two 8-bit premultiplied partial images (IceT), so pixels along
+the seam between the ranks' regions differ by quantization (a few 1/255); a wrong compositing
+order, a missing part or a black frame changes a large share of the pixels by much more."""
+import faulthandler
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
+import numpy as np  # noqa: E402
+import psi_data  # noqa: E402
+import psi_testing  # noqa: E402
+from paraview import servermanager, simple  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+
+SIZE = 240
+HALF = 16  # Wavelet extent [-16, 16]^3: 32^3 voxels, 163,840 tetrahedra
+BG = [0.0, 0.0, 0.0]
+MEAN_TOL = 1.0  # 1/255 units
+OUTLIER = 24.0  # 1/255 units
+OUTLIER_FRACTION = 0.01
+WATCHDOG = 200  # seconds
+
+
+def capture(view):
+    """The composited image of the view (what SaveScreenshot writes) as float RGB in [0, 255]."""
+    im = view.SMProxy.CaptureWindow(1)
+    dims = im.GetDimensions()
+    a = vtk_to_numpy(im.GetPointData().GetScalars()).reshape(dims[1], dims[0], -1)
+    return a[:, :, :3].astype(np.float64)
+
+
+def build(redistribute):
+    w = simple.Wavelet(WholeExtent=[-HALF, HALF, -HALF, HALF, -HALF, HALF])
+    src = simple.Tetrahedralize(Input=w)
+    if redistribute:
+        src = simple.RedistributeDataSet(Input=src)
+    ids = simple.ProcessIdScalars(Input=src)  # point array ProcessId: where the mesh lives
+    ids.UpdatePipeline()
+    return src, ids
+
+
+def render(src, view_size=SIZE):
+    view = simple.CreateRenderView()
+    view.ViewSize = [view_size, view_size]
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = BG
+    d = simple.Show(src, view)
+    simple.ColorBy(d, ("POINTS", "RTData"))
+    d.SetRepresentationType("Psi Volume")
+    lut = simple.GetColorTransferFunction("RTData")
+    pwf = simple.GetOpacityTransferFunction("RTData")
+    lut.RescaleTransferFunction(37.35, 276.8)  # the Wavelet's range, fixed for both runs
+    pwf.RescaleTransferFunction(37.35, 276.8)
+    lut.ColorSpace = "RGB"
+    d.ScalarOpacityUnitDistance = 3.0
+    c = view.GetActiveCamera()
+    c.SetFocalPoint(0, 0, 0)
+    c.SetPosition(60, 35, 45)
+    c.SetViewUp(0, 0, 1)
+    view.ResetCamera(-HALF * 1.0, HALF * 1.0, -HALF * 1.0, HALF * 1.0, -HALF * 1.0, HALF * 1.0)
+    simple.Render(view)
+    simple.Render(view)
+    return view, d
+
+
+def serial_main(out):
+    psi_data.load_plugin(globals())
+    src, _ = build(False)
+    view, d = render(src)
+    np.save(out, capture(view))
+    d.UpdatePropertyInformation()
+    print("serial: %d tetrahedra drawn" % d.GetProperty("NumberOfTetrahedra").GetElement(0))
+    psi_testing.exit_now(0)
+
+
+def serial_reference(out):
+    """Runs this script serially in a clean environment (no MPI launcher variables)."""
+    env = {k: v for k, v in os.environ.items()
+           if not k.startswith(("OMPI_", "PMIX_", "PMI_", "OPAL_", "ORTE_", "HYDRA_", "MPI_"))}
+    exe = os.environ.get("PSI_PVBATCH") or "pvbatch"
+    cmd = [exe, "--force-offscreen-rendering", os.path.abspath(__file__), "--serial", out]
+    t0 = time.time()
+    r = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                       timeout=240)
+    text = r.stdout.decode(errors="replace")
+    print("serial reference (%s, %.1f s, exit %d):" % (" ".join(cmd[:1]), time.time() - t0,
+                                                       r.returncode))
+    for line in text.splitlines():
+        if "serial:" in line or "rror" in line:
+            print("    " + line.strip())
+    return r.returncode == 0 and os.path.exists(out)
+
+
+def watch_environment():
+    """Fails fast, with the reason, instead of deadlocking: when a rank cannot open its render
+    window (X connection refused under load, seen on this machine before any plugin code runs),
+    ParaView reports that remote rendering is unavailable and the ranks' renders then wait on
+    each other forever. A watchdog also ends a hang after WATCHDOG seconds."""
+    from vtkmodules.util.misc import calldata_type
+    from vtkmodules.util.vtkConstants import VTK_STRING
+    from vtkmodules.vtkCommonCore import vtkCommand, vtkOutputWindow
+
+    @calldata_type(VTK_STRING)
+    def on_error(obj, event, text):
+        if text and "require remote rendering" in text:
+            msg = ("FAILED  environment: a rank could not create its render window (ParaView: "
+                   "'%s'); the parallel render would deadlock. Not a Psi Volume result: rerun.\n"
+                   % " ".join(text.split())[-120:])
+            (sys.__stdout__ or sys.stdout).write(msg)
+            psi_testing.exit_now(1)
+
+    vtkOutputWindow.GetInstance().AddObserver(vtkCommand.ErrorEvent, on_error)
+    err = open("/dev/stderr", "w")
+    faulthandler.dump_traceback_later(WATCHDOG, exit=True, file=err)
+
+
+def parallel_main():
+    t = psi_testing.Checks("test_mpi")
+    watch_environment()
+    nranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
+    print("ranks: %d" % nranks)
+    if nranks < 2:
+        print("SKIP: run with mpiexec -n 2 pvbatch (this run has %d rank)" % nranks)
+        psi_testing.exit_now(psi_testing.SKIP)
+    out = os.path.join(tempfile.mkdtemp(), "serial.npy")
+    ok = serial_reference(out)
+    t.check(ok, "the serial reference rendered")
+    if not ok:
+        t.finish()
+    ref = np.load(out)
+    cov_ref = psi_testing.covered(ref, BG)
+    t.check(cov_ref > 0.2 * SIZE * SIZE, "serial image not empty (%d pixels)" % cov_ref)
+
+    psi_data.load_plugin(globals())
+    for redistribute in (False, True):
+        label = "RedistributeDataSet" if redistribute else "Wavelet pieces"
+        src, ids = build(redistribute)
+        ntotal = src.GetDataInformation().GetNumberOfCells()
+        prange = ids.PointData["ProcessId"].GetRange()
+        t.check(prange[0] == 0 and prange[1] == nranks - 1,
+                "%s: the mesh is spread over the ranks (ProcessId range %s, %d tetrahedra in all)"
+                % (label, prange, ntotal))
+        view, d = render(src)
+        img = capture(view)
+        d.UpdatePropertyInformation()
+        n0 = d.GetProperty("NumberOfTetrahedra").GetElement(0)
+        print("%s: rank 0 drew %d of %d tetrahedra" % (label, n0, ntotal))
+        t.check(0 < n0 < ntotal, "%s: rank 0 drew only its part (%d of %d)" % (label, n0, ntotal))
+        cov = psi_testing.covered(img, BG)
+        t.check(cov > 0.2 * SIZE * SIZE, "%s: parallel image not black (%d pixels covered, "
+                "serial %d)" % (label, cov, cov_ref))
+        d_abs = np.abs(img - ref)
+        mean, mx = float(d_abs.mean()), float(d_abs.max())
+        frac = float((d_abs.max(axis=2) > OUTLIER).mean())
+        print("%s: 2 ranks vs serial: mean |diff| %.3f/255, max %.0f/255, %.3f%% of pixels "
+              "> %.0f/255" % (label, mean, mx, 100 * frac, OUTLIER))
+        t.check(mean <= MEAN_TOL, "%s: mean |diff| vs serial %.3f/255 <= %.1f/255"
+                % (label, mean, MEAN_TOL))
+        t.check(frac <= OUTLIER_FRACTION, "%s: %.3f%% of pixels differ by more than %.0f/255 "
+                "(<= %.0f%%)" % (label, 100 * frac, OUTLIER, 100 * OUTLIER_FRACTION))
+        if os.environ.get("PSI_MPI_SAVE"):
+            np.save(os.path.join(os.environ["PSI_MPI_SAVE"], "mpi_%d.npy" % redistribute), img)
+            np.save(os.path.join(os.environ["PSI_MPI_SAVE"], "serial.npy"), ref)
+        simple.Delete(d)
+        simple.Delete(view)
+    faulthandler.cancel_dump_traceback_later()
+    # Not Checks.finish(): os._exit on rank 0 skips MPI_Finalize, and mpiexec then reports the
+    # job as failed whatever the code. Ending the script lets pvbatch finalize all ranks; an
+    # exception makes pvbatch (and mpiexec) exit non-zero.
+    print("%s: %s" % (t.name, "FAILED (%d)" % t.failures if t.failures else "passed"))
+    sys.stdout.flush()
+    if t.failures:
+        raise RuntimeError("test_mpi: %d check(s) failed" % t.failures)
+
+
+if __name__ == "__main__":
+    if "--serial" in sys.argv:
+        serial_main(sys.argv[sys.argv.index("--serial") + 1])
+    else:
+        parallel_main()
