@@ -2,7 +2,16 @@
 
 #include "PsiCompositeFS.h"
 #include "PsiIntegrateAverage.h"
+#include "PsiIntegrateAverageOpacity.h"
+#include "PsiIntegrateFullPreIntegration.h"
+#include "PsiIntegrateLinearExact.h"
+#include "PsiIntegrateLinearLuminanceAverageOpacity.h"
+#include "PsiIntegrateLinearOpacityImproved.h"
 #include "PsiIntegratePartialPreIntegration.h"
+#include "PsiIntegrationMethods.h"
+#include "PsiMPVONCSort.h"
+#include "PsiPreIntegrationTable.h"
+#include "PsiTetConnectivity.h"
 #include "PsiProjectionClasses.h"
 #include "PsiTable.h"
 #include "PsiTransferFunctionTable.h"
@@ -69,6 +78,16 @@ const char* IntegratorSource(int method)
   {
     case vtkPsiVolumeMapper::AVERAGE:
       return PsiIntegrateAverage;
+    case vtkPsiVolumeMapper::LINEAR_EXACT:
+      return PsiIntegrateLinearExact;
+    case vtkPsiVolumeMapper::AVERAGE_OPACITY:
+      return PsiIntegrateAverageOpacity;
+    case vtkPsiVolumeMapper::LINEAR_LUMINANCE_AVERAGE_OPACITY:
+      return PsiIntegrateLinearLuminanceAverageOpacity;
+    case vtkPsiVolumeMapper::LINEAR_OPACITY_IMPROVED:
+      return PsiIntegrateLinearOpacityImproved;
+    case vtkPsiVolumeMapper::FULL_PRE_INTEGRATION:
+      return PsiIntegrateFullPreIntegration;
     default:
       return PsiIntegratePartialPreIntegration;
   }
@@ -84,6 +103,7 @@ struct MeshData
   double ScalarRange[2] = { 0, 1 };
   vtkIdType NonTetCells = 0;
   vtkIdType NonFiniteTets = 0;
+  double MaxEdgeLength = 0; // bounds every segment's length
 };
 
 // Gathers tetrahedra and scalars; non-tetrahedral cells and tetrahedra with NaN/Inf scalars are
@@ -188,6 +208,22 @@ MeshData GatherMesh(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool 
       hi = std::max<double>(hi, pointScalar[pts[v]]);
     }
   }
+  double maxEdge2 = 0;
+  for (size_t t = 0; t < m.Tets.size(); t += 4)
+  {
+    for (int a = 0; a < 4; ++a)
+    {
+      for (int c = a + 1; c < 4; ++c)
+      {
+        const float* p = &m.Points4[4 * static_cast<size_t>(m.Tets[t + a])];
+        const float* q = &m.Points4[4 * static_cast<size_t>(m.Tets[t + c])];
+        const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+          (p[2] - q[2]) * (p[2] - q[2]);
+        maxEdge2 = std::max(maxEdge2, d2);
+      }
+    }
+  }
+  m.MaxEdgeLength = std::sqrt(maxEdge2);
   for (int k = 0; k < 3; ++k)
   {
     m.Bounds[2 * k] = b[2 * k] - m.Shift[k];
@@ -244,7 +280,9 @@ struct vtkPsiVolumeMapper::Internals
   // Mesh
   MeshData Mesh;
   std::vector<float> Centroids;
+  std::vector<int32_t> Neighbors; // face neighbours for MPVONC, computed on first use
   std::vector<uint32_t> Order;
+  int SortedMethod = -1;
   vtkMTimeType MeshTime = 0;
   std::string MeshArrayKey;
   vtkNew<vtkOpenGLBufferObject> PointsBuffer;
@@ -261,11 +299,17 @@ struct vtkPsiVolumeMapper::Internals
 
   // Transfer function and Psi table
   vtkNew<vtkTextureObject> TransferTexture;
-  vtkMTimeType TransferTime = 0;
+  vtkMTimeType TransferTime = 0;         // property MTime when last sampled
+  std::vector<float> TransferSamples4;    // what the texture holds
+  int TransferVersion = 0;                // bumped only when the sampled content changes
+  int PreVersion = -1;
   double TransferRange[2] = { 0, 0 };
   int TransferSamples = 0;
   vtkNew<vtkTextureObject> PsiTexture;
   int PsiSize = 0;
+  vtkNew<vtkTextureObject> PreTexture;
+  psi::PreIntegrationTable PreTable; // the table on the GPU (its Rgba cleared after upload)
+  bool PreValid = false;
 
   // Frame buffers: the scene's depth as the float target's depth attachment (hardware depth test),
   // and a second copy to sample when a shader variant reads it.
@@ -292,7 +336,10 @@ struct vtkPsiVolumeMapper::Internals
     this->PointsBuffer->ReleaseGraphicsResources();
     this->PointsTexture->ReleaseGraphicsResources(win);
     this->TransferTexture->ReleaseGraphicsResources(win);
+    this->TransferSamples4.clear();
     this->PsiTexture->ReleaseGraphicsResources(win);
+    this->PreTexture->ReleaseGraphicsResources(win);
+    this->PreValid = false;
     this->DepthTexture->ReleaseGraphicsResources(win);
     this->DepthSampleTexture->ReleaseGraphicsResources(win);
     if (this->Framebuffer)
@@ -332,7 +379,12 @@ const char* vtkPsiVolumeMapper::GetIntegrationMethodName(int method)
     case AVERAGE:
       return "Average";
     case PARTIAL_PRE_INTEGRATION:
-      return "Partial Pre-Integration";
+    case LINEAR_EXACT:
+    case AVERAGE_OPACITY:
+    case LINEAR_LUMINANCE_AVERAGE_OPACITY:
+    case LINEAR_OPACITY_IMPROVED:
+    case FULL_PRE_INTEGRATION:
+      return psi::MethodName(static_cast<psi::Method>(method));
     default:
       return "Unknown";
   }
@@ -417,6 +469,8 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     this->NumberOfTetrahedra = static_cast<vtkIdType>(I.Mesh.Tets.size() / 4);
     I.Centroids = psi::ComputeCentroids(
       I.Mesh.Points4.data(), I.Mesh.Tets.data(), I.Mesh.Tets.size() / 4);
+    I.Neighbors.clear();
+    I.PreValid = false;
     if (!I.MeshOnGPU)
     {
       glGenBuffers(1, &I.TetBuffer);
@@ -461,7 +515,8 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   // ---- 3. Visibility order, redone only when the view changes (HAPT §3.1, centroid sort).
   std::array<double, 16> mcvcKey;
   std::copy(mcvc, mcvc + 16, mcvcKey.begin());
-  if (!I.OrderOnGPU || mcvcKey != I.SortedMCVC || parallel != I.SortedParallel)
+  if (!I.OrderOnGPU || mcvcKey != I.SortedMCVC || parallel != I.SortedParallel ||
+    I.SortedMethod != this->SortMethod)
   {
     const auto ts = Clock::now();
     double inv[16];
@@ -480,7 +535,23 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       eye[1] = inv[7] / inv[15];
       eye[2] = inv[11] / inv[15];
     }
-    psi::SortBackToFront(I.Centroids, eye, parallel, I.Order);
+    if (this->SortMethod == MPVONC)
+    {
+      if (I.Neighbors.empty())
+      {
+        psi::ComputeTetNeighbors(
+          I.Mesh.Tets.data(), ntets, I.Mesh.Points4.size() / 4, I.Neighbors);
+      }
+      const psi::MPVONCResult r = psi::SortMPVONC(I.Mesh.Points4.data(), I.Mesh.Tets.data(),
+        ntets, I.Neighbors.data(), eye, parallel, I.Order);
+      this->LastSortCycles = static_cast<vtkIdType>(r.CyclesBroken);
+    }
+    else
+    {
+      psi::SortBackToFront(I.Centroids, eye, parallel, I.Order);
+      this->LastSortCycles = 0;
+    }
+    I.SortedMethod = this->SortMethod;
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, I.IndexBuffer);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, I.Order.size() * sizeof(uint32_t), I.Order.data(),
       GL_STREAM_DRAW);
@@ -499,18 +570,26 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     const psi::TransferFunctionTable tf =
       psi::SampleTransferFunction(property, I.Mesh.ScalarRange, this->TransferFunctionSamples);
-    I.TransferTexture->SetContext(renWin);
-    I.TransferTexture->Create2DFromRaw(
-      tf.Size, 1, 4, VTK_FLOAT, const_cast<float*>(tf.Rgba.data()));
-    I.TransferTexture->SetMinificationFilter(vtkTextureObject::Linear);
-    I.TransferTexture->SetMagnificationFilter(vtkTextureObject::Linear);
-    I.TransferTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-    I.TransferTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    // ParaView touches the property's MTime when representation properties change; only a change
+    // of the sampled content costs an upload (and, for full pre-integration, a table rebuild).
+    if (tf.Rgba != I.TransferSamples4 || !I.TransferTexture->GetHandle())
+    {
+      I.TransferTexture->SetContext(renWin);
+      I.TransferTexture->Create2DFromRaw(
+        tf.Size, 1, 4, VTK_FLOAT, const_cast<float*>(tf.Rgba.data()));
+      I.TransferTexture->SetMinificationFilter(vtkTextureObject::Linear);
+      I.TransferTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+      I.TransferTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+      I.TransferTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+      I.TransferSamples4 = tf.Rgba;
+      ++I.TransferVersion;
+    }
     I.TransferTime = property->GetMTime();
     I.TransferRange[0] = I.Mesh.ScalarRange[0];
     I.TransferRange[1] = I.Mesh.ScalarRange[1];
     I.TransferSamples = this->TransferFunctionSamples;
   }
+  const bool needPre = this->IntegrationMethod == FULL_PRE_INTEGRATION;
   const bool needPsi = this->IntegrationMethod == PARTIAL_PRE_INTEGRATION;
   if (needPsi && I.PsiSize == 0)
   {
@@ -523,6 +602,28 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     I.PsiTexture->SetWrapS(vtkTextureObject::ClampToEdge);
     I.PsiTexture->SetWrapT(vtkTextureObject::ClampToEdge);
     I.PsiSize = table.N;
+  }
+  if (needPre &&
+    (!I.PreValid || I.PreVersion != I.TransferVersion ||
+      I.PreTable.MaxLength != I.Mesh.MaxEdgeLength))
+  {
+    // Roettger's table belongs to one transfer function: rebuilt on every edit (timed).
+    const psi::TransferFunctionTable tf =
+      psi::SampleTransferFunction(property, I.Mesh.ScalarRange, this->TransferFunctionSamples);
+    I.PreTable = psi::BuildPreIntegrationTable(tf, psi::GetDefaultPsiTable(), I.Mesh.MaxEdgeLength);
+    this->LastPreIntegrationSeconds = I.PreTable.BuildSeconds;
+    I.PreTexture->SetContext(renWin);
+    I.PreTexture->Create3DFromRaw(I.PreTable.ScalarSamples, I.PreTable.ScalarSamples,
+      I.PreTable.LengthSamples, 4, VTK_FLOAT, I.PreTable.Rgba.data());
+    I.PreTexture->SetMinificationFilter(vtkTextureObject::Linear);
+    I.PreTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+    I.PreTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    I.PreTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    I.PreTexture->SetWrapR(vtkTextureObject::ClampToEdge);
+    I.PreTable.Rgba.clear();
+    I.PreTable.Rgba.shrink_to_fit();
+    I.PreVersion = I.TransferVersion;
+    I.PreValid = true;
   }
 
   // ---- 5. Frame buffers: the scene's depth, and a float target for the volume.
@@ -635,6 +736,21 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   const float tfScaleShift[2] = { static_cast<float>(scale),
     static_cast<float>(0.5 / n - r0 * scale) };
   prog->SetUniform2f("tfScaleShift", tfScaleShift);
+  prog->SetUniformf("unitDistance",
+    static_cast<float>(std::max(property->GetScalarOpacityUnitDistance(0), 1e-30)));
+  if (needPre)
+  {
+    I.PreTexture->Activate();
+    prog->SetUniformi("preIntegrated", I.PreTexture->GetTextureUnit());
+    const double ns = I.PreTable.ScalarSamples, nd = I.PreTable.LengthSamples;
+    const double pr0 = I.PreTable.Range[0], pr1 = I.PreTable.Range[1];
+    const double ss = (ns - 1) / (ns * (pr1 - pr0));
+    const float preScalar[2] = { static_cast<float>(ss), static_cast<float>(0.5 / ns - pr0 * ss) };
+    const float preLength[2] = { static_cast<float>((nd - 1) / (nd * I.PreTable.MaxLength)),
+      static_cast<float>(0.5 / nd) };
+    prog->SetUniform2f("preScalarScaleShift", preScalar);
+    prog->SetUniform2f("preLengthScaleShift", preLength);
+  }
   if (needPsi)
   {
     I.PsiTexture->Activate();
@@ -723,6 +839,10 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   if (needPsi)
   {
     I.PsiTexture->Deactivate();
+  }
+  if (needPre)
+  {
+    I.PreTexture->Deactivate();
   }
   this->LastRenderSeconds = SecondsSince(t0);
 }

@@ -35,10 +35,16 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Ray integration within each cell. Each is one GLSL function (Shaders/PsiIntegrate*.glsl).
+  /// Numbered as psi::Method (PsiIntegrationMethods.h), which documents each.
   enum IntegrationMethods
   {
     AVERAGE = 0,                 ///< Shirley-Tuchman average luminance and attenuation
     PARTIAL_PRE_INTEGRATION = 1, ///< Moreland & Angel, Psi table (default)
+    LINEAR_EXACT = 2,            ///< Williams-Max-Stein closed form (slow reference)
+    AVERAGE_OPACITY = 3,         ///< average luminance and opacity
+    LINEAR_LUMINANCE_AVERAGE_OPACITY = 4, ///< Moreland §5.3.1
+    LINEAR_OPACITY_IMPROVED = 5, ///< Moreland §5.3.2
+    FULL_PRE_INTEGRATION = 6,    ///< Roettger et al., 3D table per transfer function
     NUMBER_OF_INTEGRATION_METHODS
   };
   vtkSetClampMacro(IntegrationMethod, int, AVERAGE, NUMBER_OF_INTEGRATION_METHODS - 1);
@@ -51,6 +57,16 @@ public:
   vtkSetMacro(ExactPerspectiveSegments, bool);
   vtkGetMacro(ExactPerspectiveSegments, bool);
   vtkBooleanMacro(ExactPerspectiveSegments, bool);
+
+  /// Visibility order: centroid sort (default) or MPVONC (Williams 1992), which orders across
+  /// shared faces exactly (for convex meshes) using the mesh connectivity.
+  enum SortMethods
+  {
+    CENTROID = 0,
+    MPVONC = 1
+  };
+  vtkSetClampMacro(SortMethod, int, CENTROID, MPVONC);
+  vtkGetMacro(SortMethod, int);
 
   /// Number of samples of the transfer function table (default 1024).
   vtkSetClampMacro(TransferFunctionSamples, int, 2, 1 << 16);
@@ -66,6 +82,10 @@ public:
   vtkGetMacro(NumberOfTetrahedra, vtkIdType);
   vtkGetMacro(NumberOfSkippedCells, vtkIdType);
   vtkGetMacro(LastSortSeconds, double);
+  /// Seconds spent rebuilding the full pre-integration table (last rebuild).
+  vtkGetMacro(LastPreIntegrationSeconds, double);
+  /// Cycles MPVONC had to break in the last sort.
+  vtkGetMacro(LastSortCycles, vtkIdType);
   vtkGetMacro(LastRenderSeconds, double);
   /// Zeroes the read-outs above (no frame drawn, e.g. empty input).
   void ResetStatistics();
@@ -81,6 +101,9 @@ protected:
 
   int IntegrationMethod = PARTIAL_PRE_INTEGRATION;
   int TransferFunctionSamples = 1024;
+  int SortMethod = CENTROID;
+  double LastPreIntegrationSeconds = 0;
+  vtkIdType LastSortCycles = 0;
   bool ExactPerspectiveSegments = true;
   vtkIdType NumberOfTetrahedra = 0;
   vtkIdType NumberOfSkippedCells = 0;

@@ -53,6 +53,30 @@ int vtkPsiVolumeRepresentation::GetIntegrationMethod()
   return this->PsiMapper->GetIntegrationMethod();
 }
 
+void vtkPsiVolumeRepresentation::SetSortMethod(int method)
+{
+  if (method != this->PsiMapper->GetSortMethod())
+  {
+    this->PsiMapper->SetSortMethod(method);
+    this->Modified();
+  }
+}
+
+int vtkPsiVolumeRepresentation::GetSortMethod()
+{
+  return this->PsiMapper->GetSortMethod();
+}
+
+double vtkPsiVolumeRepresentation::GetLastPreIntegrationSeconds()
+{
+  return this->PsiMapper->GetLastPreIntegrationSeconds();
+}
+
+vtkIdType vtkPsiVolumeRepresentation::GetLastSortCycles()
+{
+  return this->PsiMapper->GetLastSortCycles();
+}
+
 vtkIdType vtkPsiVolumeRepresentation::GetNumberOfTetrahedra()
 {
   return this->PsiMapper->GetNumberOfTetrahedra();

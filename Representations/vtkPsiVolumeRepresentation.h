@@ -35,11 +35,19 @@ public:
   ///@}
 
   ///@{
+  /// See vtkPsiVolumeMapper::SortMethods.
+  void SetSortMethod(int method);
+  int GetSortMethod();
+  ///@}
+
+  ///@{
   /// Read-outs of the last frame (information properties of the proxy).
   vtkIdType GetNumberOfTetrahedra();
   vtkIdType GetNumberOfSkippedCells();
   double GetLastRenderSeconds();
   double GetLastSortSeconds();
+  double GetLastPreIntegrationSeconds();
+  vtkIdType GetLastSortCycles();
   ///@}
 
   vtkPsiVolumeMapper* GetPsiVolumeMapper();

@@ -13,6 +13,10 @@ uniform sampler2D transferFunction; // N x 1, rgb = luminance, a = attenuation (
 uniform vec2 tfScaleShift;          // texcoord = s * scale + shift (texel centers)
 uniform sampler2D psiTable;         // Psi(gamma_b, gamma_f), seed 000 Eq. 12
 uniform vec2 psiScaleShift;         // texcoord = u * scale + shift (texel centers)
+uniform float unitDistance;        // ScalarOpacityUnitDistance (linear-opacity methods)
+uniform sampler3D preIntegrated;    // full pre-integration table (Roettger)
+uniform vec2 preScalarScaleShift;
+uniform vec2 preLengthScaleShift;
 uniform sampler2D sceneDepth;       // depth of the opaque geometry (PSI_OPAQUE_CLIP, PSI_NEAR_CLIP)
 uniform mat4 DCVCMatrix;            // inverse projection: window depth -> view distance
 uniform vec2 viewportSize;

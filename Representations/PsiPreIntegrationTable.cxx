@@ -1,0 +1,116 @@
+#include "PsiPreIntegrationTable.h"
+
+#include "PsiIntegration.h"
+#include "PsiTable.h"
+#include "PsiTransferFunctionTable.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+namespace psi
+{
+
+void PreIntegrationTable::Lookup(double sf, double sb, double D, double out[4]) const
+{
+  const int ns = this->ScalarSamples, nd = this->LengthSamples;
+  auto coord = [](double x, int n, int& i0, double& w) {
+    x = std::min(std::max(x, 0.0), static_cast<double>(n - 1));
+    i0 = std::min(static_cast<int>(x), n - 2);
+    w = x - i0;
+  };
+  const double span = this->Range[1] - this->Range[0];
+  int i, j, k;
+  double wi, wj, wk;
+  coord((sf - this->Range[0]) / span * (ns - 1), ns, i, wi);
+  coord((sb - this->Range[0]) / span * (ns - 1), ns, j, wj);
+  coord(D / this->MaxLength * (nd - 1), nd, k, wk);
+  for (int c = 0; c < 4; ++c)
+  {
+    double v = 0;
+    for (int dk = 0; dk < 2; ++dk)
+    {
+      for (int dj = 0; dj < 2; ++dj)
+      {
+        for (int di = 0; di < 2; ++di)
+        {
+          const double w = (dk ? wk : 1 - wk) * (dj ? wj : 1 - wj) * (di ? wi : 1 - wi);
+          v += w * this->Rgba[4 * ((static_cast<size_t>(k + dk) * ns + (j + dj)) * ns + (i + di)) + c];
+        }
+      }
+    }
+    out[c] = v;
+  }
+}
+
+PreIntegrationTable BuildPreIntegrationTable(const TransferFunctionTable& tf, const PsiTable& psi,
+  double maxLength, int scalarSamples, int lengthSamples)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  PreIntegrationTable t;
+  t.ScalarSamples = std::max(scalarSamples, 2);
+  t.LengthSamples = std::max(lengthSamples, 2);
+  t.Range[0] = tf.Range[0];
+  t.Range[1] = tf.Range[1];
+  t.MaxLength = maxLength > 0 ? maxLength : 1;
+  const int ns = t.ScalarSamples, nd = t.LengthSamples;
+  t.Rgba.assign(4 * static_cast<size_t>(ns) * ns * nd, 0.0f);
+  // Transfer-function samples between two table scalars: pieces where the table is linear.
+  const double tfStep = (tf.Range[1] - tf.Range[0]) / std::max(tf.Size - 1, 1);
+  const double sStep = (t.Range[1] - t.Range[0]) / (ns - 1);
+
+  auto work = [&](int first, int stride) {
+    std::vector<double> L(4 * (MaxPiecesPerEntry + 1));
+    for (int j = first; j < ns; j += stride) // back scalar
+    {
+      for (int i = 0; i < ns; ++i) // front scalar
+      {
+        const double sf = t.Range[0] + i * sStep, sb = t.Range[0] + j * sStep;
+        const int crossings = tfStep > 0 ? static_cast<int>(std::abs(sb - sf) / tfStep) + 1 : 1;
+        const int pieces = std::min(crossings, MaxPiecesPerEntry);
+        for (int p = 0; p <= pieces; ++p)
+        {
+          tf.Lookup(sf + (sb - sf) * p / pieces, &L[4 * p]);
+        }
+        for (int k = 0; k < nd; ++k)
+        {
+          const double d = t.MaxLength * k / (nd - 1) / pieces;
+          Rgba acc{ { 0, 0, 0, 0 } };
+          for (int p = 0; p < pieces && acc[3] < 1 - 1e-7; ++p) // front to back
+          {
+            Segment seg;
+            const double* f = &L[4 * p];
+            const double* b = &L[4 * (p + 1)];
+            seg.Lf = { { f[0], f[1], f[2] } };
+            seg.Lb = { { b[0], b[1], b[2] } };
+            seg.tauf = f[3];
+            seg.taub = b[3];
+            seg.D = d;
+            const double psiValue = psi.Lookup(GammaOf(seg.taub * d), GammaOf(seg.tauf * d));
+            acc = Over(acc, IntegrateWithPsi(seg, psiValue));
+          }
+          float* o = &t.Rgba[4 * ((static_cast<size_t>(k) * ns + j) * ns + i)];
+          for (int c = 0; c < 4; ++c)
+          {
+            o[c] = static_cast<float>(acc[c]);
+          }
+        }
+      }
+    }
+  };
+  const int threads = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> pool;
+  for (int w = 0; w < threads; ++w)
+  {
+    pool.emplace_back(work, w, threads);
+  }
+  for (auto& th : pool)
+  {
+    th.join();
+  }
+  t.BuildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return t;
+}
+
+} // namespace psi
