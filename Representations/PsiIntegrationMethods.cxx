@@ -180,15 +180,21 @@ double PsiHomogeneous(double x)
   return x < 1e-8 ? 1 - 0.5 * x : -std::expm1(-x) / x;
 }
 
-// Optical depth of D world units of constant opacity alpha per unit (Eq. 5.12).
-double DepthOfOpacity(double alpha, double D, double unit)
+// Optical depth of D world units of constant transmittance `trans` = 1 - alpha per unit
+// (Eq. 5.12). The methods combine transmittances, not opacities, which is exact near alpha = 1.
+double DepthOfTransmittance(double trans, double D, double unit)
 {
-  const double a = std::min(std::max(alpha, 0.0), 1.0);
-  if (a >= 1.0)
+  const double t = std::min(std::max(trans, 0.0), 1.0);
+  if (t <= 0.0)
   {
     return D > 0 ? std::numeric_limits<double>::infinity() : 0.0;
   }
-  return -std::log1p(-a) * D / unit;
+  return -std::log(t) * D / unit;
+}
+
+double Transmittance(double alpha)
+{
+  return std::max(1.0 - alpha, 0.0);
 }
 } // namespace
 
@@ -213,7 +219,8 @@ Rgba Integrate(Method m, const TFSegment& s, const PsiTable* psiTable)
     }
     case Method::AverageOpacity:
     {
-      const double tauD = DepthOfOpacity(0.5 * (s.ab + s.af), s.D, s.unit);
+      const double tauD =
+        DepthOfTransmittance(0.5 * (Transmittance(s.ab) + Transmittance(s.af)), s.D, s.unit);
       const double alpha = -std::expm1(-tauD);
       Rgba out;
       for (int k = 0; k < 3; ++k)
@@ -226,7 +233,8 @@ Rgba Integrate(Method m, const TFSegment& s, const PsiTable* psiTable)
     case Method::LinearLuminanceAverageOpacity:
     {
       // Appendix B.5: tau from the averaged opacity; Psi of a homogeneous segment.
-      const double tauD = DepthOfOpacity(0.5 * (s.ab + s.af), s.D, s.unit);
+      const double tauD =
+        DepthOfTransmittance(0.5 * (Transmittance(s.ab) + Transmittance(s.af)), s.D, s.unit);
       const double zeta = std::exp(-tauD);
       return Blend(s, std::isinf(tauD) ? 0.0 : PsiHomogeneous(tauD), zeta);
     }
@@ -234,9 +242,10 @@ Rgba Integrate(Method m, const TFSegment& s, const PsiTable* psiTable)
     {
       // Appendix B.6: zeta from the parabola-corrected mean opacity (Eq. 5.13), Psi from the
       // 0.27/0.73-weighted opacity (Eq. 5.14).
-      const double d = s.ab - s.af;
-      const double zeta = std::exp(-DepthOfOpacity(0.5 * (s.ab + s.af) + 0.108165 * d * d, s.D, s.unit));
-      const double tau2D = DepthOfOpacity(0.27 * s.ab + 0.73 * s.af, s.D, s.unit);
+      const double tb = Transmittance(s.ab), tf = Transmittance(s.af);
+      const double zeta =
+        std::exp(-DepthOfTransmittance(0.5 * (tb + tf) - 0.108165 * (tb - tf) * (tb - tf), s.D, s.unit));
+      const double tau2D = DepthOfTransmittance(0.27 * tb + 0.73 * tf, s.D, s.unit);
       return Blend(s, std::isinf(tau2D) ? 0.0 : PsiHomogeneous(tau2D), zeta);
     }
     default:

@@ -4,8 +4,9 @@ vec4 integrateSegment(float sf, float sb, float D)
 {
   vec4 f = transfer(sf);
   vec4 b = transfer(sb);
-  float alphaUnit = min(0.5 * (f.a + b.a) * unitDistance, 1.0);
-  float tauD = -log(1.0 - alphaUnit) * D / unitDistance;
+  // mean opacity through the mean transmittance 1 - alpha (exact in float near alpha = 1)
+  float transUnit = 0.5 * (max(1.0 - f.a * unitDistance, 0.0) + max(1.0 - b.a * unitDistance, 0.0));
+  float tauD = -log(transUnit) * D / unitDistance;
   float alpha = 1.0 - exp(-tauD);
   return vec4(0.5 * (f.rgb + b.rgb) * alpha, alpha);
 }

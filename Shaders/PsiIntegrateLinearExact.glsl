@@ -35,6 +35,13 @@ float dawsonF(float x)
   return sign(x) * 0.5641895835 * exp(-xp * xp) * sum;
 }
 
+// (1 - e^{-x}) / x without float cancellation: GLSL has no expm1, so the series below 0.03
+// (truncation < 1e-8); the direct form loses ~4e-4 relative at x = 1e-4 in float.
+float oneMinusExpOver(float x)
+{
+  return x < 0.03 ? 1.0 - x * (0.5 - x * (1.0 / 6.0 - x / 24.0)) : (1.0 - exp(-x)) / x;
+}
+
 float psiClosedForm(float taubD, float taufD)
 {
   if (taubD > 1e30 || taufD > 1e30)
@@ -47,7 +54,7 @@ float psiClosedForm(float taubD, float taufD)
   {
     // Psi ~ M0(b) - c M2(b), M_n = int_0^1 u^n e^{-bu} du
     float eb = exp(-b);
-    float m0 = b < 1e-4 ? 1.0 - 0.5 * b : (1.0 - eb) / b;
+    float m0 = oneMinusExpOver(b);
     float m2 = b < 0.1 ? 1.0 / 3.0 - b / 4.0 + b * b / 10.0 : (2.0 - eb * (b * b + 2.0 * b + 2.0)) / (b * b * b);
     return m0 - c * m2;
   }

@@ -4,9 +4,11 @@ vec4 integrateSegment(float sf, float sb, float D)
 {
   vec4 f = transfer(sf);
   vec4 b = transfer(sb);
-  float alphaUnit = min(0.5 * (f.a + b.a) * unitDistance, 1.0);
-  float tauD = -log(1.0 - alphaUnit) * D / unitDistance;
+  // mean opacity through the mean transmittance 1 - alpha (exact in float near alpha = 1)
+  float transUnit = 0.5 * (max(1.0 - f.a * unitDistance, 0.0) + max(1.0 - b.a * unitDistance, 0.0));
+  float tauD = -log(transUnit) * D / unitDistance;
   float zeta = exp(-tauD);
-  float psi = tauD < 1e-4 ? 1.0 - 0.5 * tauD : (1.0 - zeta) / tauD;
+  // (1 - zeta) / (tau D), by its series where float cancellation would cost ~4e-4 relative
+  float psi = tauD < 0.03 ? 1.0 - tauD * (0.5 - tauD * (1.0 / 6.0 - tauD / 24.0)) : (1.0 - zeta) / tauD;
   return vec4(f.rgb * (1.0 - psi) + b.rgb * (psi - zeta), 1.0 - zeta);
 }
