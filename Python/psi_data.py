@@ -6,7 +6,8 @@ import os
 
 from paraview import simple
 
-SHARED_DATA = os.path.normpath(os.path.join(os.path.dirname(__file__), "..", "..", "shared", "data"))
+SHARED_DATA = os.environ.get("PSI_DATA") or os.path.normpath(
+    os.path.join(os.path.dirname(__file__), "..", "..", "shared", "data"))
 
 # PLOT3D datasets of ../shared/data: grid file, solution file, IBLANK, array to render.
 PLOT3D = {

@@ -1,0 +1,94 @@
+"""Benchmark (not a test): what accuracy costs in time, for every integration method.
+
+pvpython Benchmarks/bench_integration.py [--data bluntfin] [--size 512] [--frames 6]
+                                         [--plot integration_cost.png]
+For each method: CPU ns per segment and max/mean error over Moreland's sweeps (from
+bench_integration_cpu, against each method's own optical-model reference), frame time of
+'Psi Volume' on the dataset, and mean image error against the exact reference image (Bunyk +
+linear integrator; methods 4-6 assume a different optical model, linear opacity, so part of their
+image error is the model difference). Writes the table and a plot (error vs time, one point per
+method) as PNG."""
+import argparse
+import csv
+import glob
+import io
+import os
+import subprocess
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, "..", "Python"))
+import psi_bench  # noqa: E402
+import psi_data  # noqa: E402
+import psi_testing  # noqa: E402
+
+p = argparse.ArgumentParser()
+p.add_argument("--data", default="bluntfin")
+p.add_argument("--size", type=int, default=512)
+p.add_argument("--frames", type=int, default=6)
+p.add_argument("--error-views", type=int, default=2)
+p.add_argument("--plot", default="integration_cost.png")
+args = p.parse_args()
+
+exe = os.environ.get("PSI_BENCH_CPU") or (glob.glob(os.path.join(here, "..", "build", "bin",
+                                                                  "bench_integration_cpu")) or [""])[0]
+if not exe:
+    raise SystemExit("bench_integration_cpu not built (scripts/build.sh)")
+cpu = {row["method"]: row for row in csv.DictReader(io.StringIO(
+    subprocess.run([exe, "--csv"], check=True, capture_output=True, text=True).stdout))}
+
+psi_data.load_plugin(globals())
+src, array = psi_bench.load(args.data)
+if src is None:
+    print("SKIP: %s not found in %s" % (args.data, psi_data.SHARED_DATA))
+    psi_testing.exit_now(0)
+scene = psi_bench.Scene(src, array, args.size, args.frames)
+refs, ref_seconds = scene.references([int(i * args.frames / args.error_views)
+                                      for i in range(args.error_views)])
+methods = [
+    "Average", "Partial Pre-Integration", "Linear Exact", "Average Opacity",
+    "Linear Luminance Average Opacity", "Linear Opacity Improved", "Full Pre-Integration"]
+rows = []
+for m in methods:
+    spf, err, mx = scene.measure("Psi Volume|" + m, refs)
+    scene.rep.UpdatePropertyInformation()
+    pre = scene.rep.GetProperty("LastPreIntegrationSeconds").GetElement(0) \
+        if m == "Full Pre-Integration" else 0.0
+    c = cpu[m]
+    rows.append((m, float(c["ns_per_segment"]), float(c["max_err_D1"]), float(c["mean_err"]),
+                 spf, err, mx, pre))
+pt_spf, pt_err, _ = scene.measure("Projected tetra", refs)
+
+print()
+print("dataset %s: %d tetrahedra at %dx%d; image error vs Bunyk+linear at %d views; "
+      "Projected tetra: %.4f s/frame, mean image error %.3f" % (
+          args.data, scene.cells, args.size, args.size, len(refs), pt_spf, pt_err))
+header = ("method", "ns/seg", "sweep max D=1", "sweep mean", "s/frame", "image mean", "image max",
+          "table build s")
+print("%-34s %8s %14s %11s %9s %11s %10s %13s" % header)
+for m, ns, smax, smean, spf, err, mx, pre in rows:
+    print("%-34s %8.1f %14.2e %11.2e %9.4f %11.3f %10.0f %13.3f" % (m, ns, smax, smean, spf, err, mx, pre))
+
+import matplotlib  # noqa: E402
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+fig, axes = plt.subplots(1, 2, figsize=(12, 4.8))
+for m, ns, smax, smean, spf, err, mx, pre in rows:
+    axes[0].scatter(ns, max(smax, 1e-16))
+    axes[0].annotate(m, (ns, max(smax, 1e-16)), fontsize=7)
+    axes[1].scatter(spf, err)
+    axes[1].annotate(m, (spf, err), fontsize=7)
+axes[1].scatter(pt_spf, pt_err, marker="x", color="k")
+axes[1].annotate("ParaView Projected tetra", (pt_spf, pt_err), fontsize=7)
+axes[0].set_xlabel("CPU ns per segment")
+axes[0].set_ylabel("max error over Moreland's sweep, D = 1")
+axes[0].set_yscale("log")
+axes[0].set_title("Segment integral: error vs cost")
+axes[1].set_xlabel("seconds per frame (%s, %d tets, %dx%d, llvmpipe)" % (
+    args.data, scene.cells, args.size, args.size))
+axes[1].set_ylabel("mean image error vs exact reference (0..255)")
+axes[1].set_title("Rendering: error vs frame time")
+fig.tight_layout()
+fig.savefig(args.plot, dpi=110)
+print("plot: %s" % os.path.abspath(args.plot))
+psi_testing.exit_now(0)

@@ -1,0 +1,107 @@
+"""Shared parts of the pvpython benchmarks: a scene orbited at a fixed size, images grabbed from
+the view, and the exact reference (ParaView's Bunyk ray caster with VTK's linear ray integrator)
+at chosen orbit steps."""
+import os
+import time
+
+import numpy as np
+from paraview import simple
+from vtkmodules.vtkRenderingVolume import vtkUnstructuredGridLinearRayIntegrator
+
+import psi_data
+import psi_testing
+
+
+def load(data):
+    """Source and array for 'wavelet', a PLOT3D name (None if its files are absent) or a file."""
+    if data == "wavelet":
+        return psi_data.wavelet()
+    if data in psi_data.PLOT3D:
+        if not os.path.exists(os.path.join(psi_data.SHARED_DATA, psi_data.PLOT3D[data][0])):
+            return None, None
+        return psi_data.plot3d(data)
+    return psi_data.open_any(data)
+
+
+class Scene:
+    """One view orbiting a volume; the color map is in RGB space so that the linear integrator
+    (linear between control points) is exact for it."""
+
+    def __init__(self, src, array, size=512, frames=12, unit_distance=None):
+        self.frames = frames
+        self.view = simple.CreateRenderView()
+        self.view.ViewSize = [size, size]
+        self.view.OrientationAxesVisibility = 0
+        self.view.UseColorPaletteForBackground = 0
+        self.view.Background = [0.0, 0.0, 0.0]
+        self.rep = psi_data.show_volume(src, array, self.view, representation="Volume",
+                                        unit_distance=unit_distance)
+        simple.GetColorTransferFunction(array).ColorSpace = "RGB"
+        simple.Render(self.view)
+        self.view.ResetCamera()
+        cam = self.view.GetActiveCamera()
+        cam.Elevation(25)
+        self.view.ResetCamera()
+        cam.Zoom(1.3)
+        self.start = [self.view.CameraPosition[:], self.view.CameraFocalPoint[:],
+                      self.view.CameraViewUp[:]]
+        src.UpdatePipeline()
+        self.cells = src.GetDataInformation().GetNumberOfCells()
+
+    def reset_camera(self):
+        self.view.CameraPosition, self.view.CameraFocalPoint, self.view.CameraViewUp = self.start
+
+    def step(self):
+        self.view.GetActiveCamera().Azimuth(360.0 / self.frames)
+
+    def set_mapper(self, name):
+        """'Psi Volume|<IntegrationMethod>' or one of ParaView's SelectMapper values."""
+        if name.startswith("Psi Volume"):
+            self.rep.SetRepresentationType("Psi Volume")
+            self.rep.IntegrationMethod = name.split("|")[1]
+        else:
+            self.rep.SetRepresentationType("Volume")
+            self.rep.SelectMapper = name
+
+    def references(self, steps):
+        """Exact reference images (Bunyk + linear integrator) at the given orbit steps."""
+        self.set_mapper("Bunyk ray cast")
+        simple.Render(self.view)
+        bunyk = self.rep.GetClientSideObject().GetActiveRepresentation().GetActiveVolumeMapper()
+        bunyk.SetRayIntegrator(vtkUnstructuredGridLinearRayIntegrator())
+        self.reset_camera()
+        refs = {}
+        t0 = time.perf_counter()
+        for k in range(self.frames):
+            if k in steps:
+                simple.Render(self.view)
+                refs[k] = psi_testing.grab(self.view)
+            self.step()
+        seconds = (time.perf_counter() - t0) / max(len(refs), 1)
+        bunyk.SetRayIntegrator(None)
+        return refs, seconds
+
+    def measure(self, name, refs, png_dir=""):
+        """Mean seconds/frame over one orbit (after a warm-up frame), mean and max pixel error
+        (0..255) against the reference images."""
+        self.set_mapper(name)
+        self.reset_camera()
+        simple.Render(self.view)
+        psi_data.wait(self.view)
+        times, errs, maxes = [], [], []
+        for k in range(self.frames):
+            t = time.perf_counter()
+            simple.Render(self.view)
+            psi_data.wait(self.view)
+            times.append(time.perf_counter() - t)
+            if k in refs:
+                img = psi_testing.grab(self.view)
+                e = np.abs(img - refs[k])
+                errs.append(e.mean())
+                maxes.append(e.max())
+                if png_dir:
+                    simple.SaveScreenshot(os.path.join(png_dir, "%s_%d.png" % (
+                        name.replace(" ", "_").replace("|", "_"), k)), self.view)
+            self.step()
+        return (sum(times) / len(times), float(np.mean(errs)) if errs else float("nan"),
+                float(np.max(maxes)) if maxes else float("nan"))
