@@ -2,6 +2,7 @@
 // evaluated on the GPU path for thousands of segments, read back as floats, and compared with
 // the C++ functions (PsiIntegrationMethods) and with the reference of each method's model:
 // Moreland's sweeps and the hard cases of issue 3. Needs an X server (xvfb-run).
+#include "PsiHardCases.h"
 #include "PsiIntegrationMethods.h"
 #include "PsiTable.h"
 #include "PsiTestCheck.h"
@@ -87,26 +88,10 @@ std::vector<Case> MakeCases()
       }
     }
   }
-  auto hard = [&](double af, double ab, double D, double lf = 0.2, double lb = 0.9) {
-    psi::TFSegment s;
-    s.af = af;
-    s.ab = ab;
-    s.D = D;
-    s.Lf = { { lf, lf, lf } };
-    s.Lb = { { lb, lb, lb } };
-    cases.push_back({ s, true });
-  };
-  hard(0.5, 0.7, 0.0);                // D = 0
-  hard(0.0, 0.0, 3.0);                // tau = 0 both ends
-  hard(0.4, 0.4, 2.0);                // tau_b = tau_f
-  hard(0.4, 0.4 * (1 + 1e-7), 2.0);   // within float epsilon
-  hard(1e-9, 2e-9, 1.0);              // tau D = 1e-9
-  hard(1.0, 0.5, 1e6);                // tau D = 1e6
-  hard(1.0, 0.3, 1.0);                // alpha = 1
-  hard(0.3, 1.0, 1.0);
-  hard(1 - 1e-6, 1 - 1e-5, 1.0);      // alpha just below 1
-  hard(0.3, 0.6, 1.5, -0.5, 3.0);     // luminance outside [0, 1]
-  hard(0.8, 0.9, 1e-7);               // thickness near float epsilon
+  for (const psitest::HardCase& h : psitest::HardCases(true))
+  {
+    cases.push_back({ h.S, true });
+  }
   return cases;
 }
 

@@ -2,6 +2,7 @@
 // sweeps (seed 001 Figs. 6.5-6.11: D = 0.001, 0.1, 1, 100 over the (front, back) parameter plane),
 // plus the hard cases of issue 3: D = 0, tau = 0, tau_b = tau_f exactly and within 1e-12, tau D
 // from 1e-9 to 1e6, alpha = 1 and just below, luminance outside [0, 1], non-finite input.
+#include "PsiHardCases.h"
 #include "PsiIntegrationMethods.h"
 #include "PsiTable.h"
 #include "PsiTestCheck.h"
@@ -174,34 +175,8 @@ int main()
     "partial pre-integration should be two orders better than averaging at D = 1");
 
   // Hard cases: every method gives finite output within its bound of the reference.
-  struct Hard
-  {
-    const char* Name;
-    psi::TFSegment S;
-  };
-  auto seg = [](double af, double ab, double D, double lf = 0.2, double lb = 0.9) {
-    psi::TFSegment s;
-    s.af = af;
-    s.ab = ab;
-    s.D = D;
-    s.Lf = { { lf, lf, lf } };
-    s.Lb = { { lb, lb, lb } };
-    return s;
-  };
-  const Hard hard[] = {
-    { "D = 0", seg(0.5, 0.7, 0.0) },
-    { "tau = 0 both ends", seg(0.0, 0.0, 3.0) },
-    { "tau_b = tau_f exactly", seg(0.4, 0.4, 2.0) },
-    { "tau_b = tau_f (1 + 1e-12)", seg(0.4, 0.4 * (1 + 1e-12), 2.0) },
-    { "tau D = 1e-9", seg(1e-9, 2e-9, 1.0) },
-    { "tau D = 1e6", seg(1.0, 0.5, 1e6) },
-    { "alpha = 1 front", seg(1.0, 0.3, 1.0) },
-    { "alpha = 1 back", seg(0.3, 1.0, 1.0) },
-    { "alpha just below 1", seg(1 - 1e-12, 1 - 1e-9, 1.0) },
-    { "luminance outside [0,1]", seg(0.3, 0.6, 1.5, -0.5, 3.0) },
-    { "thickness 1e-7 of the mesh", seg(0.8, 0.9, 1e-7) },
-  };
-  for (const Hard& h : hard)
+  const auto hard = psitest::HardCases(false);
+  for (const psitest::HardCase& h : hard)
   {
     for (int mi = 0; mi < static_cast<int>(Method::Count); ++mi)
     {
@@ -217,7 +192,8 @@ int main()
   }
   // NaN input must stay contained: it is never turned into a plausible-looking color.
   {
-    psi::TFSegment s = seg(NAN, 0.5, 1.0);
+    psi::TFSegment s = hard[0].S;
+    s.af = NAN;
     const psi::Rgba c = psi::Integrate(Method::LinearExact, s, &table);
     PSI_CHECK(!Finite(c), "NaN attenuation must propagate to the caller (the mapper drops it)");
   }
