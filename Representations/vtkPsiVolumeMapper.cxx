@@ -18,9 +18,14 @@
 #include "PsiVisibilitySort.h"
 #include "PsiVolumeFS.h"
 #include "PsiVolumeGS.h"
+#include "PsiVolumeIsoVS.h"
 #include "PsiVolumeVS.h"
 
 #include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
@@ -268,6 +273,176 @@ bool OpaqueGeometryInside(vtkRenderer* ren, vtkVolume* vol)
   return false;
 }
 
+// Smoothed point gradients of the linear scalar (isosurface normals): every tetrahedron's gradient,
+// weighted by its volume, averaged over the tetrahedra sharing the point. xyz + 0 per point.
+std::vector<float> PointGradients(const MeshData& m)
+{
+  const size_t np = m.Points4.size() / 4;
+  std::vector<double> acc(4 * np, 0.0);
+  for (size_t t = 0; t + 3 < m.Tets.size(); t += 4)
+  {
+    double V[4][3], s[4];
+    for (int v = 0; v < 4; ++v)
+    {
+      const float* p = &m.Points4[4 * static_cast<size_t>(m.Tets[t + v])];
+      V[v][0] = p[0];
+      V[v][1] = p[1];
+      V[v][2] = p[2];
+      s[v] = p[3];
+    }
+    double e[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        e[k][c] = V[k + 1][c] - V[0][c];
+      }
+    }
+    auto cross = [](const double* a, const double* b, double* o) {
+      o[0] = a[1] * b[2] - a[2] * b[1];
+      o[1] = a[2] * b[0] - a[0] * b[2];
+      o[2] = a[0] * b[1] - a[1] * b[0];
+    };
+    double c23[3], c31[3], c12[3];
+    cross(e[1], e[2], c23);
+    cross(e[2], e[0], c31);
+    cross(e[0], e[1], c12);
+    const double det = e[0][0] * c23[0] + e[0][1] * c23[1] + e[0][2] * c23[2];
+    if (!(std::abs(det) > 0) || !std::isfinite(det))
+    {
+      continue;
+    }
+    const double w = std::abs(det) / 6.0;
+    double g[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      g[k] = ((s[1] - s[0]) * c23[k] + (s[2] - s[0]) * c31[k] + (s[3] - s[0]) * c12[k]) / det;
+    }
+    for (int v = 0; v < 4; ++v)
+    {
+      double* a = &acc[4 * static_cast<size_t>(m.Tets[t + v])];
+      a[0] += w * g[0];
+      a[1] += w * g[1];
+      a[2] += w * g[2];
+      a[3] += w;
+    }
+  }
+  std::vector<float> out(4 * std::max<size_t>(np, 1), 0.0f);
+  for (size_t i = 0; i < np; ++i)
+  {
+    const double w = acc[4 * i + 3];
+    for (int k = 0; k < 3 && w > 0; ++k)
+    {
+      out[4 * i + k] = static_cast<float>(acc[4 * i + k] / w);
+    }
+  }
+  return out;
+}
+
+// The transfer function (color and opacity of component 0) at scalar s: rgb, opacity.
+void EvaluateTransfer(vtkVolumeProperty* property, double s, double out[4])
+{
+  out[0] = out[1] = out[2] = 1.0;
+  if (property->GetColorChannels(0) == 1)
+  {
+    if (vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(0))
+    {
+      out[0] = out[1] = out[2] = gray->GetValue(s);
+    }
+  }
+  else if (vtkColorTransferFunction* rgb = property->GetRGBTransferFunction(0))
+  {
+    rgb->GetColor(s, out);
+  }
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+  out[3] = opacity ? opacity->GetValue(s) : 1.0;
+}
+
+// Control points of the color and opacity functions strictly inside the scalar range where the
+// transfer function bends (not collinear with its neighbouring nodes): the scalars where a
+// segment must be split for color and attenuation to be linear on each piece (Moreland §4.3).
+std::vector<float> TransferFunctionKinks(vtkVolumeProperty* property, const double range[2])
+{
+  std::vector<double> nodes;
+  auto add = [&](double x) {
+    if (x > range[0] && x < range[1])
+    {
+      nodes.push_back(x);
+    }
+  };
+  if (property->GetColorChannels(0) == 1)
+  {
+    if (vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(0))
+    {
+      for (int i = 0; i < gray->GetSize(); ++i)
+      {
+        double n[4];
+        gray->GetNodeValue(i, n);
+        add(n[0]);
+      }
+    }
+  }
+  else if (vtkColorTransferFunction* rgb = property->GetRGBTransferFunction(0))
+  {
+    for (int i = 0; i < rgb->GetSize(); ++i)
+    {
+      double n[6];
+      rgb->GetNodeValue(i, n);
+      add(n[0]);
+    }
+  }
+  if (vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0))
+  {
+    for (int i = 0; i < opacity->GetSize(); ++i)
+    {
+      double n[4];
+      opacity->GetNodeValue(i, n);
+      add(n[0]);
+    }
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  std::vector<float> kinks;
+  const double span = range[1] - range[0];
+  for (size_t k = 0; k < nodes.size(); ++k)
+  {
+    const double a = k > 0 ? nodes[k - 1] : range[0];
+    const double b = k + 1 < nodes.size() ? nodes[k + 1] : range[1];
+    const double x = nodes[k];
+    // sampled just around the node, so that a step (two nodes at one scalar) counts too
+    const double h = 1e-6 * span;
+    double fa[4], fb[4], fx[4], fl[4], fr[4];
+    EvaluateTransfer(property, a, fa);
+    EvaluateTransfer(property, b, fb);
+    EvaluateTransfer(property, x, fx);
+    EvaluateTransfer(property, std::max(a, x - h), fl);
+    EvaluateTransfer(property, std::min(b, x + h), fr);
+    const double w = (x - a) / std::max(b - a, 1e-300);
+    double bend = 0;
+    for (int c = 0; c < 4; ++c)
+    {
+      bend = std::max(bend, std::abs(fx[c] - (fa[c] + w * (fb[c] - fa[c]))));
+      bend = std::max(bend, std::abs(fl[c] - fr[c]) - 1e-3);
+    }
+    if (bend > 1e-4)
+    {
+      kinks.push_back(static_cast<float>(x));
+    }
+  }
+  if (kinks.size() > static_cast<size_t>(vtkPsiVolumeMapper::MaxAdaptiveNodes))
+  {
+    // evenly thinned: a transfer function this detailed is better served by the table anyway
+    std::vector<float> thin;
+    const size_t n = vtkPsiVolumeMapper::MaxAdaptiveNodes;
+    for (size_t i = 0; i < n; ++i)
+    {
+      thin.push_back(kinks[i * (kinks.size() - 1) / (n - 1)]);
+    }
+    kinks.swap(thin);
+  }
+  return kinks;
+}
+
 // Row-major 4x4 product a * b.
 void Multiply(const double a[16], const double b[16], double out[16])
 {
@@ -287,6 +462,9 @@ struct vtkPsiVolumeMapper::Internals
   std::string MeshArrayKey;
   vtkNew<vtkOpenGLBufferObject> PointsBuffer;
   vtkNew<vtkTextureObject> PointsTexture;
+  vtkNew<vtkOpenGLBufferObject> GradientBuffer; // smoothed point gradients (isosurfaces only)
+  vtkNew<vtkTextureObject> GradientTexture;
+  bool GradientsOnGPU = false;
   GLuint TetBuffer = 0;
   GLuint IndexBuffer = 0;
   GLuint VAO = 0;
@@ -335,6 +513,9 @@ struct vtkPsiVolumeMapper::Internals
     this->TetBuffer = this->IndexBuffer = this->VAO = 0;
     this->PointsBuffer->ReleaseGraphicsResources();
     this->PointsTexture->ReleaseGraphicsResources(win);
+    this->GradientBuffer->ReleaseGraphicsResources();
+    this->GradientTexture->ReleaseGraphicsResources(win);
+    this->GradientsOnGPU = false;
     this->TransferTexture->ReleaseGraphicsResources(win);
     this->TransferSamples4.clear();
     this->PsiTexture->ReleaseGraphicsResources(win);
@@ -371,6 +552,50 @@ vtkPsiVolumeMapper::vtkPsiVolumeMapper()
 }
 
 vtkPsiVolumeMapper::~vtkPsiVolumeMapper() = default;
+
+void vtkPsiVolumeMapper::SetNumberOfIsosurfaces(int n)
+{
+  n = std::max(n, 0);
+  if (static_cast<size_t>(n) != this->IsosurfaceValues.size())
+  {
+    this->IsosurfaceValues.resize(n, 0.0);
+    this->Modified();
+  }
+}
+
+void vtkPsiVolumeMapper::SetIsosurfaceValue(int i, double value)
+{
+  if (i < 0)
+  {
+    return;
+  }
+  if (static_cast<size_t>(i) >= this->IsosurfaceValues.size())
+  {
+    this->IsosurfaceValues.resize(i + 1, 0.0);
+  }
+  else if (this->IsosurfaceValues[i] == value)
+  {
+    return;
+  }
+  this->IsosurfaceValues[i] = value;
+  this->Modified();
+}
+
+double vtkPsiVolumeMapper::GetIsosurfaceValue(int i) const
+{
+  return i >= 0 && static_cast<size_t>(i) < this->IsosurfaceValues.size()
+    ? this->IsosurfaceValues[i]
+    : 0.0;
+}
+
+void vtkPsiVolumeMapper::SetIsosurfaceValues(const std::vector<double>& values)
+{
+  if (values != this->IsosurfaceValues)
+  {
+    this->IsosurfaceValues = values;
+    this->Modified();
+  }
+}
 
 const char* vtkPsiVolumeMapper::GetIntegrationMethodName(int method)
 {
@@ -489,6 +714,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     I.MeshOnGPU = true;
     I.OrderOnGPU = false;
+    I.GradientsOnGPU = false;
   }
   const size_t ntets = I.Mesh.Tets.size() / 4;
   if (ntets == 0)
@@ -626,6 +852,44 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     I.PreValid = true;
   }
 
+  // ---- 4b. Isosurfaces and adaptive sampling: only what is switched on costs anything.
+  std::vector<float> isoValues;
+  for (double v : this->IsosurfaceValues)
+  {
+    if (std::isfinite(v) && std::abs(v) < 1e37)
+    {
+      isoValues.push_back(static_cast<float>(v));
+    }
+  }
+  std::sort(isoValues.begin(), isoValues.end());
+  isoValues.erase(std::unique(isoValues.begin(), isoValues.end()), isoValues.end());
+  if (isoValues.size() > static_cast<size_t>(MaxIsosurfaces))
+  {
+    vtkWarningMacro("Psi Volume draws at most " << MaxIsosurfaces << " isosurfaces; "
+                                                << isoValues.size() - MaxIsosurfaces
+                                                << " ignored.");
+    isoValues.resize(MaxIsosurfaces);
+  }
+  const bool iso = !isoValues.empty();
+  if (iso && !I.GradientsOnGPU)
+  {
+    I.GradientBuffer->Upload(PointGradients(I.Mesh), vtkOpenGLBufferObject::TextureBuffer);
+    I.GradientTexture->SetContext(renWin);
+    I.GradientTexture->CreateTextureBuffer(
+      static_cast<unsigned int>(std::max<size_t>(I.Mesh.Points4.size() / 4, 1)), 4, VTK_FLOAT,
+      I.GradientBuffer);
+    I.GradientsOnGPU = true;
+  }
+  std::vector<float> tfNodes;
+  if (this->AdaptiveSampling != ADAPTIVE_OFF)
+  {
+    tfNodes = TransferFunctionKinks(property, I.Mesh.ScalarRange);
+  }
+  const bool adaptive = this->AdaptiveSampling == ADAPTIVE_ON ||
+    (this->AdaptiveSampling == ADAPTIVE_AUTO && !tfNodes.empty());
+  this->LastUsedAdaptiveSampling = adaptive;
+  this->LastNumberOfAdaptiveNodes = adaptive ? static_cast<int>(tfNodes.size()) : 0;
+
   // ---- 5. Frame buffers: the scene's depth, and a float target for the volume.
   int w, h, x0, y0;
   ren->GetTiledSizeAndOrigin(&w, &h, &x0, &y0);
@@ -696,10 +960,23 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     defines += "#define PSI_NEAR_CLIP\n";
   }
+  constexpr int maxLights = 8;
+  if (iso)
+  {
+    defines += "#define PSI_ISO_COUNT " + std::to_string(isoValues.size()) + "\n";
+    defines += "#define PSI_MAX_LIGHTS " + std::to_string(maxLights) + "\n";
+  }
+  if (adaptive)
+  {
+    defines += "#define PSI_ADAPTIVE\n#define PSI_TF_NODES_MAX " +
+      std::to_string(MaxAdaptiveNodes) + "\n";
+  }
+  this->LastFeatureDefines = defines;
   const std::string key = defines + std::to_string(this->IntegrationMethod);
   if (!I.Program || I.ProgramKey != key)
   {
-    std::string vs = PsiVolumeVS, gs = PsiVolumeGS, fs = PsiVolumeFS;
+    ++this->NumberOfProgramBuilds;
+    std::string vs = iso ? PsiVolumeIsoVS : PsiVolumeVS, gs = PsiVolumeGS, fs = PsiVolumeFS;
     Substitute(gs, "//PSI::Features::Dec", defines);
     Substitute(fs, "//PSI::Features::Dec", defines);
     Substitute(fs, "//PSI::Integrator::Impl", IntegratorSource(this->IntegrationMethod));
@@ -765,6 +1042,96 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   const float viewport[2] = { static_cast<float>(w), static_cast<float>(h) };
   prog->SetUniform2f("viewportSize", viewport);
+  if (iso)
+  {
+    I.GradientTexture->Activate();
+    prog->SetUniformi("pointGradients", I.GradientTexture->GetTextureUnit());
+    // Gradients are covectors: model -> view by the inverse transpose of the linear part.
+    vtkNew<vtkMatrix3x3> nm;
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        nm->SetElement(r, c, mcvc[4 * r + c]);
+      }
+    }
+    // (A^-1)^T in OpenGL's column-major order is A^-1 in VTK's row-major order.
+    nm->Invert();
+    prog->SetUniformMatrix("normalMatrix", nm);
+    const int niso = static_cast<int>(isoValues.size());
+    std::vector<float> colors(3 * niso);
+    for (int i = 0; i < niso; ++i)
+    {
+      double rgba[4];
+      EvaluateTransfer(property, isoValues[i], rgba);
+      for (int k = 0; k < 3; ++k)
+      {
+        colors[3 * i + k] = static_cast<float>(
+          this->IsosurfaceUseColorMap ? rgba[k] : std::min(1.0, std::max(0.0, this->IsosurfaceColor[k])));
+      }
+    }
+    prog->SetUniform1fv("isoValues", niso, isoValues.data());
+    prog->SetUniform3fv("isoColors", niso, reinterpret_cast<const float(*)[3]>(colors.data()));
+    prog->SetUniformf("isoOpacity", static_cast<float>(this->IsosurfaceOpacity));
+    prog->SetUniformi("isoLighting", this->IsosurfaceLighting ? 1 : 0);
+    // The renderer's lights as VTK's surface shaders see them (directional: focal point minus
+    // position, in view coordinates; diffuse color times intensity).
+    std::vector<float> dirs, cols;
+    vtkLightCollection* lights = ren->GetLights();
+    vtkCollectionSimpleIterator lit;
+    lights->InitTraversal(lit);
+    double rot[9];
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        rot[3 * r + c] = view[4 * r + c];
+      }
+    }
+    while (vtkLight* light = lights->GetNextLight(lit))
+    {
+      if (!light->GetSwitch() || light->GetIntensity() <= 0 ||
+        static_cast<int>(dirs.size()) >= 3 * maxLights)
+      {
+        continue;
+      }
+      const double* fp = light->GetTransformedFocalPoint();
+      const double* lp = light->GetTransformedPosition();
+      double d[3] = { fp[0] - lp[0], fp[1] - lp[1], fp[2] - lp[2] };
+      double dv[3];
+      for (int r = 0; r < 3; ++r)
+      {
+        dv[r] = rot[3 * r] * d[0] + rot[3 * r + 1] * d[1] + rot[3 * r + 2] * d[2];
+      }
+      const double len = std::sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]);
+      if (!(len > 0))
+      {
+        continue;
+      }
+      const double* dc = light->GetDiffuseColor();
+      for (int k = 0; k < 3; ++k)
+      {
+        dirs.push_back(static_cast<float>(dv[k] / len));
+        cols.push_back(static_cast<float>(dc[k] * light->GetIntensity()));
+      }
+    }
+    const int nl = static_cast<int>(dirs.size() / 3);
+    prog->SetUniformi("lightCount", nl);
+    if (nl > 0)
+    {
+      prog->SetUniform3fv("lightDirVC", nl, reinterpret_cast<const float(*)[3]>(dirs.data()));
+      prog->SetUniform3fv("lightColor", nl, reinterpret_cast<const float(*)[3]>(cols.data()));
+    }
+  }
+  if (adaptive)
+  {
+    const int nn = static_cast<int>(tfNodes.size());
+    prog->SetUniformi("tfNodeCount", nn);
+    if (nn > 0)
+    {
+      prog->SetUniform1fv("tfNodes", nn, tfNodes.data());
+    }
+  }
 
   // ---- 7. Draw back to front into the float target; premultiplied "over" blending.
   {
@@ -832,6 +1199,10 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   I.PointsTexture->Deactivate();
   I.TransferTexture->Deactivate();
+  if (iso)
+  {
+    I.GradientTexture->Deactivate();
+  }
   if (sampleDepth)
   {
     I.DepthSampleTexture->Deactivate();

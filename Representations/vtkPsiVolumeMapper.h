@@ -22,6 +22,8 @@
 #include "vtkUnstructuredGridVolumeMapper.h"
 
 #include <memory>
+#include <string>
+#include <vector>
 
 class vtkRenderer;
 class vtkVolume;
@@ -72,6 +74,51 @@ public:
   vtkSetClampMacro(TransferFunctionSamples, int, 2, 1 << 16);
   vtkGetMacro(TransferFunctionSamples, int);
 
+  ///@{
+  /// Isosurfaces drawn inside the volume (issue 5). Each volume fragment whose ray segment crosses
+  /// an isovalue integrates the part in front of the crossing, composites the lit surface there
+  /// and, if the surface is not opaque, the part behind it: exact visibility inside every cell.
+  /// Values may come in any order: they are sorted when drawn, and duplicates and non-finite
+  /// values dropped. With none, the program is the plain volume's: no cost at all.
+  void SetNumberOfIsosurfaces(int n);
+  int GetNumberOfIsosurfaces() const { return static_cast<int>(this->IsosurfaceValues.size()); }
+  void SetIsosurfaceValue(int i, double value);
+  double GetIsosurfaceValue(int i) const;
+  void SetIsosurfaceValues(const std::vector<double>& values);
+  /// Opacity of every isosurface, 0..1 (default 1: opaque, hides what is behind it).
+  vtkSetClampMacro(IsosurfaceOpacity, double, 0.0, 1.0);
+  vtkGetMacro(IsosurfaceOpacity, double);
+  /// Solid color of the isosurfaces, used when IsosurfaceUseColorMap is off.
+  vtkSetVector3Macro(IsosurfaceColor, double);
+  vtkGetVector3Macro(IsosurfaceColor, double);
+  /// Color each isosurface through the color map at its value (default on).
+  vtkSetMacro(IsosurfaceUseColorMap, bool);
+  vtkGetMacro(IsosurfaceUseColorMap, bool);
+  vtkBooleanMacro(IsosurfaceUseColorMap, bool);
+  /// Shade the isosurfaces with the renderer's lights (default on; off: unlit color).
+  vtkSetMacro(IsosurfaceLighting, bool);
+  vtkGetMacro(IsosurfaceLighting, bool);
+  vtkBooleanMacro(IsosurfaceLighting, bool);
+  ///@}
+
+  /// Adaptive transfer-function sampling (Moreland §4.3): split each ray segment at the
+  /// transfer function's control points inside its scalar range, so that color and attenuation
+  /// are linear on each piece. AUTO uses it only when the transfer function has interior control
+  /// points where it bends (nonlinear over the data range).
+  enum AdaptiveSamplingModes
+  {
+    ADAPTIVE_OFF = 0,
+    ADAPTIVE_ON = 1,
+    ADAPTIVE_AUTO = 2
+  };
+  vtkSetClampMacro(AdaptiveSampling, int, ADAPTIVE_OFF, ADAPTIVE_AUTO);
+  vtkGetMacro(AdaptiveSampling, int);
+
+  /// Largest number of transfer-function nodes used for adaptive sampling (more are thinned).
+  static constexpr int MaxAdaptiveNodes = 64;
+  /// Largest number of isosurfaces (more are ignored with a warning).
+  static constexpr int MaxIsosurfaces = 32;
+
   void Render(vtkRenderer* ren, vtkVolume* vol) override;
   void ReleaseGraphicsResources(vtkWindow* win) override;
 
@@ -93,6 +140,13 @@ public:
   vtkGetMacro(LastUsedNearPlaneClipping, bool);
   /// Whether the last frame clipped segments at opaque geometry overlapping the volume.
   vtkGetMacro(LastUsedOpaqueClipping, bool);
+  /// Whether the last frame split segments at transfer-function nodes, and at how many nodes.
+  vtkGetMacro(LastUsedAdaptiveSampling, bool);
+  vtkGetMacro(LastNumberOfAdaptiveNodes, int);
+  /// The feature defines the last frame's program was composed from (one "#define" a line).
+  const std::string& GetLastFeatureDefines() const { return this->LastFeatureDefines; }
+  /// Number of distinct programs this mapper has compiled (or fetched from the shader cache).
+  vtkGetMacro(NumberOfProgramBuilds, int);
   ///@}
 
 protected:
@@ -111,6 +165,16 @@ protected:
   double LastRenderSeconds = 0;
   bool LastUsedNearPlaneClipping = false;
   bool LastUsedOpaqueClipping = false;
+  std::vector<double> IsosurfaceValues;
+  double IsosurfaceOpacity = 1.0;
+  double IsosurfaceColor[3] = { 1.0, 1.0, 1.0 };
+  bool IsosurfaceUseColorMap = true;
+  bool IsosurfaceLighting = true;
+  int AdaptiveSampling = ADAPTIVE_OFF;
+  bool LastUsedAdaptiveSampling = false;
+  int LastNumberOfAdaptiveNodes = 0;
+  std::string LastFeatureDefines;
+  int NumberOfProgramBuilds = 0;
 
 private:
   vtkPsiVolumeMapper(const vtkPsiVolumeMapper&) = delete;

@@ -67,6 +67,63 @@ int vtkPsiVolumeRepresentation::GetSortMethod()
   return this->PsiMapper->GetSortMethod();
 }
 
+void vtkPsiVolumeRepresentation::SetNumberOfIsosurfaces(int n)
+{
+  if (n != this->PsiMapper->GetNumberOfIsosurfaces())
+  {
+    this->PsiMapper->SetNumberOfIsosurfaces(n);
+    this->Modified();
+  }
+}
+
+void vtkPsiVolumeRepresentation::SetIsosurfaceValue(int i, double value)
+{
+  if (i >= this->PsiMapper->GetNumberOfIsosurfaces() ||
+    this->PsiMapper->GetIsosurfaceValue(i) != value)
+  {
+    this->PsiMapper->SetIsosurfaceValue(i, value);
+    this->Modified();
+  }
+}
+
+void vtkPsiVolumeRepresentation::SetIsosurfaceOpacity(double opacity)
+{
+  if (opacity != this->PsiMapper->GetIsosurfaceOpacity())
+  {
+    this->PsiMapper->SetIsosurfaceOpacity(opacity);
+    this->Modified();
+  }
+}
+
+void vtkPsiVolumeRepresentation::SetIsosurfaceColor(double r, double g, double b)
+{
+  this->PsiMapper->SetIsosurfaceColor(r, g, b);
+  this->Modified();
+}
+
+void vtkPsiVolumeRepresentation::SetIsosurfaceUseColorMap(int on)
+{
+  if ((on != 0) != this->PsiMapper->GetIsosurfaceUseColorMap())
+  {
+    this->PsiMapper->SetIsosurfaceUseColorMap(on != 0);
+    this->Modified();
+  }
+}
+
+void vtkPsiVolumeRepresentation::SetAdaptiveSampling(int mode)
+{
+  if (mode != this->PsiMapper->GetAdaptiveSampling())
+  {
+    this->PsiMapper->SetAdaptiveSampling(mode);
+    this->Modified();
+  }
+}
+
+int vtkPsiVolumeRepresentation::GetAdaptiveSampling()
+{
+  return this->PsiMapper->GetAdaptiveSampling();
+}
+
 double vtkPsiVolumeRepresentation::GetLastPreIntegrationSeconds()
 {
   return this->PsiMapper->GetLastPreIntegrationSeconds();

@@ -41,6 +41,17 @@ public:
   ///@}
 
   ///@{
+  /// Isosurfaces and adaptive sampling: see vtkPsiVolumeMapper.
+  void SetNumberOfIsosurfaces(int n);
+  void SetIsosurfaceValue(int i, double value);
+  void SetIsosurfaceOpacity(double opacity);
+  void SetIsosurfaceColor(double r, double g, double b);
+  void SetIsosurfaceUseColorMap(int on);
+  void SetAdaptiveSampling(int mode);
+  int GetAdaptiveSampling();
+  ///@}
+
+  ///@{
   /// Read-outs of the last frame (information properties of the proxy).
   vtkIdType GetNumberOfTetrahedra();
   vtkIdType GetNumberOfSkippedCells();

@@ -52,6 +52,139 @@ vec2 psiCoord(vec2 tauD)
 
 //PSI::Integrator::Impl
 
+#if defined(PSI_ISO_COUNT) || defined(PSI_ADAPTIVE)
+// Segments split into pieces (issue 5), integrated and composited front to back in this
+// fragment: at transfer-function nodes (adaptive sampling, Moreland §4.3: color and attenuation
+// are linear on each piece) and at isovalue crossings, where the lit surface is composited at its
+// depth (Roettger et al. §10: the part in front, the surface, the part behind). An isovalue counts
+// on [front, back) of a segment, so that a crossing on a face shared by two cells is drawn once.
+#ifdef PSI_ISO_COUNT
+uniform float isoValues[PSI_ISO_COUNT]; // ascending
+uniform vec3 isoColors[PSI_ISO_COUNT];
+uniform float isoOpacity;
+uniform int isoLighting;
+uniform int lightCount;
+uniform vec3 lightDirVC[PSI_MAX_LIGHTS]; // direction the light travels, view coordinates
+uniform vec3 lightColor[PSI_MAX_LIGHTS]; // diffuse color * intensity
+flat in vec3 isoG0;
+flat in mat3 isoJ;
+flat in vec3 isoV0;
+
+// Premultiplied color of isosurface i at view point p seen along dir: two-sided diffuse lighting
+// with the renderer's lights (VTK's Phong without ambient and specular: ParaView's defaults).
+vec4 isoSurface(int i, vec3 p, vec3 dir)
+{
+  vec3 c = isoColors[i];
+  if (isoLighting == 1)
+  {
+    vec3 n = isoG0 + isoJ * (p - isoV0);
+    float nn = dot(n, n);
+    n = nn > 1e-37 ? n * inversesqrt(nn) : -dir;
+    n = dot(n, dir) > 0.0 ? -n : n;
+    vec3 lit = vec3(0.0);
+    for (int k = 0; k < lightCount; ++k)
+    {
+      lit += lightColor[k] * max(dot(n, -lightDirVC[k]), 0.0);
+    }
+    c *= lit;
+  }
+  return vec4(c * isoOpacity, isoOpacity);
+}
+#define PSI_ISO_SPLITS PSI_ISO_COUNT
+#else
+#define PSI_ISO_SPLITS 0
+#endif
+
+#ifdef PSI_ADAPTIVE
+uniform float tfNodes[PSI_TF_NODES_MAX]; // ascending, strictly inside the scalar range
+uniform int tfNodeCount;
+#define PSI_TF_SPLITS PSI_TF_NODES_MAX
+#else
+#define PSI_TF_SPLITS 0
+#endif
+
+vec4 splitAcc;
+void addPiece(float sa, float sb, float D)
+{
+  if (D > 0.0)
+  {
+    splitAcc += (1.0 - splitAcc.a) * integrateSegment(sa, sb, D);
+  }
+}
+
+// p0, dir: view-space front point and unit ray direction (isosurface shading only).
+vec4 integrateSplit(float sf, float sb, float D, vec3 p0, vec3 dir)
+{
+  splitAcc = vec4(0.0);
+  float ds = sb - sf;
+  float dirS = ds >= 0.0 ? 1.0 : -1.0;
+  float sPrev = sf, tPrev = 0.0;
+#ifdef PSI_ADAPTIVE
+  int nStep = ds >= 0.0 ? 1 : -1;
+  int ni = ds >= 0.0 ? 0 : tfNodeCount - 1;
+  while (ni >= 0 && ni < tfNodeCount && dirS * (tfNodes[ni] - sf) <= 0.0)
+  {
+    ni += nStep;
+  }
+#endif
+#ifdef PSI_ISO_COUNT
+  int iStep = ds >= 0.0 ? 1 : -1;
+  int ii = ds >= 0.0 ? 0 : PSI_ISO_COUNT - 1;
+  while (ii >= 0 && ii < PSI_ISO_COUNT && dirS * (isoValues[ii] - sf) < 0.0)
+  {
+    ii += iStep;
+  }
+#endif
+  for (int guard = 0; guard <= PSI_ISO_SPLITS + PSI_TF_SPLITS; ++guard)
+  {
+    float next = sb;
+    int kind = 0;
+#ifdef PSI_ADAPTIVE
+    if (ni >= 0 && ni < tfNodeCount && dirS * (sb - tfNodes[ni]) > 0.0)
+    {
+      next = tfNodes[ni];
+      kind = 1;
+    }
+#endif
+#ifdef PSI_ISO_COUNT
+    if (ii >= 0 && ii < PSI_ISO_COUNT && dirS * (sb - isoValues[ii]) > 0.0 &&
+      dirS * (next - isoValues[ii]) >= 0.0)
+    {
+      next = isoValues[ii];
+      kind = 2;
+    }
+#endif
+    // kind != 0 implies ds != 0: no division by zero, no NaN
+    float t = kind == 0 ? 1.0 : clamp((next - sf) / ds, tPrev, 1.0);
+    addPiece(sPrev, next, (t - tPrev) * D);
+    if (kind == 0)
+    {
+      break;
+    }
+#ifdef PSI_ADAPTIVE
+    if (kind == 1)
+    {
+      ni += nStep;
+    }
+#endif
+#ifdef PSI_ISO_COUNT
+    if (kind == 2)
+    {
+      splitAcc += (1.0 - splitAcc.a) * isoSurface(ii, p0 + (t * D) * dir, dir);
+      ii += iStep;
+      if (splitAcc.a >= 1.0)
+      {
+        break; // an opaque isosurface stops the ray
+      }
+    }
+#endif
+    sPrev = next;
+    tPrev = t;
+  }
+  return splitAcc;
+}
+#endif
+
 vec3 viewPointAt(float depth)
 {
   vec4 ndc = vec4(2.0 * gl_FragCoord.xy / viewportSize - 1.0, 2.0 * depth - 1.0, 1.0);
@@ -62,7 +195,8 @@ vec3 viewPointAt(float depth)
 #ifdef PSI_NEAR_CLIP
 // Exact ray / tetrahedron intersection for a cell cut by the near plane: the ray starts on the
 // near plane at this pixel; each face plane bounds the parameter interval [tin, tout].
-bool clipSegment(out float sf, out float sb, out float D, out float frontDepth)
+bool clipSegment(out float sf, out float sb, out float D, out float frontDepth, out vec3 pFront,
+  out vec3 rayDir)
 {
   vec3 V[4] = vec3[4](tetV0.xyz, tetV1.xyz, tetV2.xyz, tetV3.xyz);
   vec3 o = viewPointAt(0.0);
@@ -108,6 +242,8 @@ bool clipSegment(out float sf, out float sb, out float D, out float frontDepth)
   sf = tetV0.w + dot(g, pf - V[0]);
   sb = tetV0.w + dot(g, pb - V[0]);
   D = tout - tin;
+  pFront = pf;
+  rayDir = dir;
   vec4 c = VCDCMatrix * vec4(pf, 1.0);
   frontDepth = 0.5 * c.z / c.w + 0.5;
   return true;
@@ -138,8 +274,18 @@ void main()
   D = segment.z;
 #endif
   float frontDepth = gl_FragCoord.z;
+  vec3 pFront = vec3(0.0), rayDir = vec3(0.0, 0.0, -1.0);
+#ifdef PSI_ISO_COUNT
+#ifdef PSI_EXACT_SEGMENTS
+  pFront = frontPoint.xyz;
+  rayDir = normalize(frontPoint.xyz);
+#else
+  pFront = viewPointAt(gl_FragCoord.z);
+  rayDir = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : normalize(pFront);
+#endif
+#endif
 #ifdef PSI_NEAR_CLIP
-  if (clipped == 1 && !clipSegment(sf, sb, D, frontDepth))
+  if (clipped == 1 && !clipSegment(sf, sb, D, frontDepth, pFront, rayDir))
   {
     discard;
   }
@@ -164,7 +310,11 @@ void main()
     }
   }
 #endif
+#if defined(PSI_ISO_COUNT) || defined(PSI_ADAPTIVE)
+  vec4 c = integrateSplit(sf, sb, max(D, 0.0), pFront, rayDir);
+#else
   vec4 c = integrateSegment(sf, sb, max(D, 0.0));
+#endif
   if (!(c.a > 0.0))
   {
     discard; // fully transparent, or a NaN that must not reach the image

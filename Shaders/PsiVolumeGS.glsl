@@ -53,6 +53,21 @@ flat out vec4 tetV2;
 flat out vec4 tetV3;
 #endif
 
+#ifdef PSI_ISO_COUNT
+// Isosurfaces (issue 5): the scalar is linear in the tetrahedron, so its isosurface there is the
+// planar marching-tetrahedra polygon; the fragment shader meets it exactly along each ray. For
+// smooth shading the normal is the gradient field interpolated linearly from the smoothed point
+// gradients: g(x) = isoG0 + isoJ (x - isoV0) in view coordinates, passed flat.
+flat in uvec4 vsIds[];
+uniform samplerBuffer pointGradients; // model-space (shifted) gradient per point
+uniform mat3 normalMatrix;            // model -> view for gradients (inverse transpose)
+flat out vec3 isoG0;
+flat out mat3 isoJ;
+flat out vec3 isoV0;
+vec3 tetIsoG0;
+mat3 tetIsoJ;
+#endif
+
 vec4 clipP[4];
 vec3 viewP[4];
 float scalar[4];
@@ -122,6 +137,11 @@ void setEdge(int a, int b)
 
 void setFlat(int isClipped)
 {
+#ifdef PSI_ISO_COUNT
+  isoG0 = tetIsoG0;
+  isoJ = tetIsoJ;
+  isoV0 = viewP[0];
+#endif
 #ifdef PSI_NEAR_CLIP
   clipped = isClipped;
   tetV0 = vec4(viewP[0], scalar[0]);
@@ -234,6 +254,22 @@ void main()
     inFront += viewP[i].z > nearZ ? 1 : 0;
 #endif
   }
+#ifdef PSI_ISO_COUNT
+  {
+    uvec4 ids = vsIds[0];
+    vec3 g0 = normalMatrix * texelFetch(pointGradients, int(ids.x)).xyz;
+    vec3 g1 = normalMatrix * texelFetch(pointGradients, int(ids.y)).xyz;
+    vec3 g2 = normalMatrix * texelFetch(pointGradients, int(ids.z)).xyz;
+    vec3 g3 = normalMatrix * texelFetch(pointGradients, int(ids.w)).xyz;
+    mat3 E = mat3(viewP[1] - viewP[0], viewP[2] - viewP[0], viewP[3] - viewP[0]);
+    float det = determinant(E);
+    float scale = max(max(dot(E[0], E[0]), dot(E[1], E[1])), dot(E[2], E[2]));
+    tetIsoG0 = g0;
+    // J E = [g1-g0 g2-g0 g3-g0]; a degenerate cell keeps the vertex gradient (flat shading).
+    tetIsoJ = abs(det) > 1e-7 * scale * sqrt(scale) ?
+      mat3(g1 - g0, g2 - g0, g3 - g0) * inverse(E) : mat3(0.0);
+  }
+#endif
 #ifdef PSI_NEAR_CLIP
   if (inFront == 4)
   {

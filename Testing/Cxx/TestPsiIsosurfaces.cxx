@@ -1,0 +1,455 @@
+// Isosurfaces and adaptive transfer-function sampling of vtkPsiVolumeMapper (issue 5):
+//  - every program variant (integration method x isosurfaces x adaptive sampling x projection,
+//    near-plane and opaque clipping) compiles and renders; with no isovalue inside the data and a
+//    linear transfer function each variant draws exactly the plain volume's image;
+//  - a narrow opacity spike between vertex values is caught with adaptive sampling and missed
+//    without it, measured against the exact CPU reference (PsiReferenceRaycaster, which splits
+//    segments at transfer-function breakpoints); Auto turns it on for this transfer function only;
+//  - an opaque isosurface hides the volume behind it, a translucent one does not;
+//  - several isovalues and an isovalue exactly at a vertex value give no NaN.
+// Needs an X server (run under xvfb-run). Usage: TestPsiIsosurfaces [output-dir]
+#include "PsiReferenceRaycaster.h"
+#include "PsiTestCheck.h"
+#include "vtkPsiVolumeMapper.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDataSetTriangleFilter.h"
+#include "vtkImageData.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRTAnalyticSource.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkTransform.h"
+#include "vtkTransformFilter.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace
+{
+constexpr int W = 96, H = 96;
+
+void MakeGrid(vtkUnstructuredGrid* grid, int half, double cell)
+{
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(-half, half, -half, half, -half, half);
+  vtkNew<vtkDataSetTriangleFilter> tets;
+  tets->SetInputConnection(wavelet->GetOutputPort());
+  vtkNew<vtkTransform> scale;
+  scale->Scale(cell, cell, cell);
+  vtkNew<vtkTransformFilter> scaled;
+  scaled->SetTransform(scale);
+  scaled->SetInputConnection(tets->GetOutputPort());
+  scaled->Update();
+  grid->ShallowCopy(scaled->GetOutput());
+}
+
+psi::ReferenceScene MakeReference(
+  vtkUnstructuredGrid* grid, vtkColorTransferFunction* color, vtkPiecewiseFunction* opacity,
+  double unit)
+{
+  psi::ReferenceScene ref;
+  vtkDataArray* sc = grid->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    grid->GetPoint(i, p);
+    ref.Points.push_back({ { p[0], p[1], p[2] } });
+    ref.Scalars.push_back(sc->GetComponent(i, 0));
+  }
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    const vtkIdType* pts;
+    vtkIdType n;
+    grid->GetCellPoints(c, n, pts);
+    ref.Tets.push_back({ { int(pts[0]), int(pts[1]), int(pts[2]), int(pts[3]) } });
+  }
+  ref.Transfer = [color, opacity, unit](double v, double out[4]) {
+    color->GetColor(v, out);
+    out[3] = opacity->GetValue(v) / unit;
+  };
+  for (int i = 0; i < color->GetSize(); ++i)
+  {
+    double node[6];
+    color->GetNodeValue(i, node);
+    ref.Breakpoints.push_back(node[0]);
+  }
+  for (int i = 0; i < opacity->GetSize(); ++i)
+  {
+    double node[4];
+    opacity->GetNodeValue(i, node);
+    ref.Breakpoints.push_back(node[0]);
+  }
+  return ref;
+}
+
+void WritePng(const std::string& file, const std::vector<double>& rgb)
+{
+  vtkNew<vtkImageData> im;
+  im->SetDimensions(W, H, 1);
+  im->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* p = static_cast<unsigned char*>(im->GetScalarPointer());
+  for (size_t i = 0; i < rgb.size(); ++i)
+  {
+    p[i] = static_cast<unsigned char>(std::min(255.0, std::max(0.0, rgb[i] * 255.0 + 0.5)));
+  }
+  vtkNew<vtkPNGWriter> w;
+  w->SetFileName(file.c_str());
+  w->SetInputData(im);
+  w->Write();
+}
+
+std::vector<double> Grab(vtkRenderWindow* win)
+{
+  win->Render();
+  vtkNew<vtkUnsignedCharArray> px;
+  win->GetPixelData(0, 0, W - 1, H - 1, 0, px);
+  std::vector<double> img(3 * W * H);
+  for (int i = 0; i < 3 * W * H; ++i)
+  {
+    img[i] = px->GetValue(i) / 255.0;
+  }
+  return img;
+}
+
+std::vector<double> Reference(vtkRenderer* ren, const psi::ReferenceScene& scene)
+{
+  psi::ReferenceCamera cam;
+  cam.Width = W;
+  cam.Height = H;
+  vtkNew<vtkMatrix4x4> m;
+  m->DeepCopy(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(double(W) / H, -1, 1));
+  m->Invert();
+  std::copy(m->GetData(), m->GetData() + 16, cam.NdcToWorld.begin());
+  const double* bg = ren->GetBackground();
+  cam.Background = { { bg[0], bg[1], bg[2] } };
+  return psi::RenderReference(scene, cam);
+}
+
+struct Diff
+{
+  double Mean = 0, Max = 0;
+};
+
+Diff Compare(const std::vector<double>& a, const std::vector<double>& b)
+{
+  Diff d;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    const double e = std::abs(a[i] - std::min(1.0, std::max(0.0, b[i])));
+    d.Mean += e;
+    d.Max = std::max(d.Max, e);
+  }
+  d.Mean /= a.size();
+  return d;
+}
+
+bool Finite(const std::vector<double>& img)
+{
+  return std::all_of(img.begin(), img.end(), [](double v) { return std::isfinite(v); });
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const std::string outDir = argc > 1 ? argv[1] : "";
+  vtkNew<vtkUnstructuredGrid> grid;
+  MakeGrid(grid, 3, 3.0); // coarse: scalar ranges per cell are wide
+  double r[2];
+  grid->GetPointData()->GetScalars()->GetRange(r);
+  const double span = r[1] - r[0];
+
+  vtkNew<vtkColorTransferFunction> color;
+  color->SetColorSpaceToRGB();
+  color->AddRGBPoint(r[0], 0.1, 0.3, 1.0);
+  color->AddRGBPoint(r[1], 1.0, 0.8, 0.1);
+  vtkNew<vtkPiecewiseFunction> linear;
+  linear->AddPoint(r[0], 0.02);
+  linear->AddPoint(r[1], 0.6);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetColor(color);
+  property->SetScalarOpacity(linear);
+  property->SetScalarOpacityUnitDistance(2.0);
+
+  vtkNew<vtkRenderWindow> win;
+  win->SetSize(W, H);
+  win->SetMultiSamples(0);
+  vtkNew<vtkRenderer> ren;
+  ren->SetBackground(0.1, 0.1, 0.15);
+  win->AddRenderer(ren);
+  vtkNew<vtkPsiVolumeMapper> mapper;
+  mapper->SetInputData(grid);
+  vtkNew<vtkVolume> vol;
+  vol->SetMapper(mapper);
+  vol->SetProperty(property);
+  ren->AddVolume(vol);
+  vtkCamera* cam = ren->GetActiveCamera();
+  auto outside = [&] {
+    cam->SetFocalPoint(0, 0, 0);
+    cam->SetPosition(25, 17, 35);
+    cam->SetViewUp(0, 1, 0);
+    cam->SetViewAngle(30);
+    cam->SetParallelProjection(0);
+    ren->ResetCameraClippingRange();
+  };
+  auto inside = [&] {
+    cam->SetParallelProjection(0);
+    cam->SetPosition(1.3, 0.7, 2.1);
+    cam->SetFocalPoint(4, -2, -6);
+    cam->SetViewUp(0, 1, 0);
+    cam->SetViewAngle(60);
+    cam->SetClippingRange(0.05, 100);
+  };
+
+  // ---- 1. Every variant compiles and renders; features with nothing to do change nothing.
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-12, -12, 0.5);
+  plane->SetPoint1(12, -12, -1.5);
+  plane->SetPoint2(-12, 12, 0.5);
+  vtkNew<vtkPolyDataMapper> pm;
+  pm->SetInputConnection(plane->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(pm);
+  actor->GetProperty()->LightingOff();
+  actor->GetProperty()->SetColor(0.2, 0.7, 0.3);
+  const std::vector<double> outOfRange1 = { r[1] + 10 };
+  const std::vector<double> outOfRange3 = { r[0] - 30, r[1] + 10, r[1] + 20 };
+  int variants = 0;
+  for (int view = 0; view < 4; ++view) // perspective, parallel, camera inside, opaque plane
+  {
+    outside();
+    if (view == 1)
+    {
+      cam->SetParallelProjection(1);
+      ren->ResetCamera();
+    }
+    if (view == 2)
+    {
+      inside();
+    }
+    if (view == 3)
+    {
+      ren->AddActor(actor);
+      ren->ResetCameraClippingRange();
+    }
+    for (int method = 0; method < vtkPsiVolumeMapper::NUMBER_OF_INTEGRATION_METHODS; ++method)
+    {
+      mapper->SetIntegrationMethod(method);
+      mapper->SetIsosurfaceValues({});
+      mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_OFF);
+      const std::vector<double> plain = Grab(win);
+      const std::string plainDefines = mapper->GetLastFeatureDefines();
+      for (int iso = 0; iso < 3; ++iso)
+      {
+        for (int adaptive = 0; adaptive < 2; ++adaptive)
+        {
+          if (iso == 0 && adaptive == 0)
+          {
+            continue;
+          }
+          mapper->SetIsosurfaceValues(iso == 0 ? std::vector<double>()
+              : iso == 1                       ? outOfRange1
+                                               : outOfRange3);
+          mapper->SetAdaptiveSampling(
+            adaptive ? vtkPsiVolumeMapper::ADAPTIVE_ON : vtkPsiVolumeMapper::ADAPTIVE_OFF);
+          const std::vector<double> img = Grab(win);
+          const std::string defs = mapper->GetLastFeatureDefines();
+          const Diff d = Compare(img, plain);
+          ++variants;
+          const bool hasIso = defs.find(iso == 1 ? "PSI_ISO_COUNT 1\n" : "PSI_ISO_COUNT 3\n") !=
+            std::string::npos;
+          PSI_CHECK((iso == 0) == (defs.find("PSI_ISO_COUNT") == std::string::npos) &&
+              (iso == 0 || hasIso) &&
+              (adaptive == 1) == (defs.find("PSI_ADAPTIVE") != std::string::npos),
+            "view %d method %d iso %d adaptive %d: defines\n%s", view, method, iso, adaptive,
+            defs.c_str());
+          PSI_CHECK(d.Max <= 1.5 / 255 && Finite(img),
+            "view %d method %d iso %d adaptive %d: differs from the plain volume (max %g)", view,
+            method, iso, adaptive, d.Max);
+        }
+      }
+      mapper->SetIsosurfaceValues({});
+      mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_OFF);
+      Grab(win);
+      PSI_CHECK(mapper->GetLastFeatureDefines() == plainDefines,
+        "features switched off again give the plain program");
+    }
+    PSI_CHECK((view == 2) == mapper->GetLastUsedNearPlaneClipping(), "view %d near clip", view);
+    PSI_CHECK((view == 3) == mapper->GetLastUsedOpaqueClipping(), "view %d opaque clip", view);
+    ren->RemoveActor(actor);
+  }
+  std::printf("%d program variants rendered the plain image where they had nothing to add\n",
+    variants);
+  mapper->SetIntegrationMethod(vtkPsiVolumeMapper::PARTIAL_PRE_INTEGRATION);
+  outside();
+
+  // ---- 2. Adaptive sampling: a narrow opacity spike between vertex values.
+  {
+    vtkNew<vtkPiecewiseFunction> spike;
+    const double x0 = r[0] + 0.62 * span, w = 0.012 * span;
+    spike->AddPoint(r[0], 0.0);
+    spike->AddPoint(x0 - w, 0.0);
+    spike->AddPoint(x0, 1.0);
+    spike->AddPoint(x0 + w, 0.0);
+    spike->AddPoint(r[1], 0.0);
+    property->SetScalarOpacity(spike);
+    property->SetScalarOpacityUnitDistance(1.0);
+    const psi::ReferenceScene scene = MakeReference(grid, color, spike, 1.0);
+    const std::vector<double> ref = Reference(ren, scene);
+    mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_OFF);
+    const std::vector<double> off = Grab(win);
+    mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_ON);
+    const std::vector<double> on = Grab(win);
+    PSI_CHECK(mapper->GetLastNumberOfAdaptiveNodes() == 3, "spike nodes %d",
+      mapper->GetLastNumberOfAdaptiveNodes());
+    mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_AUTO);
+    const std::vector<double> autoImg = Grab(win);
+    PSI_CHECK(mapper->GetLastUsedAdaptiveSampling(), "Auto: the spike makes the function nonlinear");
+    const Diff dOff = Compare(off, ref), dOn = Compare(on, ref), dAuto = Compare(autoImg, on);
+    // how much of the reference's spike (its difference from the background) each one shows
+    const double* bg = ren->GetBackground();
+    double sRef = 0, sOff = 0, sOn = 0;
+    for (size_t i = 0; i < ref.size(); ++i)
+    {
+      sRef += std::abs(std::min(1.0, ref[i]) - bg[i % 3]);
+      sOff += std::abs(off[i] - bg[i % 3]);
+      sOn += std::abs(on[i] - bg[i % 3]);
+    }
+    std::printf("spike: error without adaptive sampling mean %.5f max %.4f (shows %.1f%% of it), "
+                "with mean %.5f max %.4f (shows %.1f%%)\n",
+      dOff.Mean, dOff.Max, 100 * sOff / sRef, dOn.Mean, dOn.Max, 100 * sOn / sRef);
+    PSI_CHECK(dOn.Mean < 0.004 && dOn.Max < 0.08, "adaptive sampling catches the spike: %g / %g",
+      dOn.Mean, dOn.Max);
+    PSI_CHECK(dOff.Mean > 4 * dOn.Mean, "without adaptive sampling the spike is missed: %g vs %g",
+      dOff.Mean, dOn.Mean);
+    PSI_CHECK(std::abs(sOn / sRef - 1) < 0.05 && sOff < 0.9 * sRef, "spike energy: on %g off %g ref %g", sOn,
+      sOff, sRef);
+    PSI_CHECK(dAuto.Max <= 1.5 / 255, "Auto draws what On draws (%g)", dAuto.Max);
+    if (!outDir.empty())
+    {
+      WritePng(outDir + "/spike_ref.png", ref);
+      WritePng(outDir + "/spike_adaptive_off.png", off);
+      WritePng(outDir + "/spike_adaptive_on.png", on);
+    }
+    property->SetScalarOpacity(linear);
+    property->SetScalarOpacityUnitDistance(2.0);
+    Grab(win);
+    PSI_CHECK(!mapper->GetLastUsedAdaptiveSampling(), "Auto: a linear function needs no splitting");
+    mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_OFF);
+  }
+
+  // ---- 3. Occlusion: the wavelet peaks at the center, so scalars above the isovalue lie inside
+  // the isosurface. The volume is visible (bright green) only there; an opaque isosurface hides
+  // it, a translucent one lets it through.
+  {
+    const double iso = r[0] + 0.75 * span; // a closed surface: not cut by the mesh boundary
+    vtkNew<vtkColorTransferFunction> green;
+    green->SetColorSpaceToRGB();
+    green->AddRGBPoint(r[0], 0.0, 1.0, 0.0);
+    green->AddRGBPoint(r[1], 0.0, 1.0, 0.0);
+    vtkNew<vtkPiecewiseFunction> insideOnly;
+    insideOnly->AddPoint(r[0], 0.0);
+    // zero up to a few table samples beyond the isovalue: the sampled table is exactly zero on
+    // the near side of the surface
+    insideOnly->AddPoint(iso + 0.005 * span, 0.0);
+    insideOnly->AddPoint(iso + 0.02 * span, 1.0);
+    insideOnly->AddPoint(r[1], 1.0);
+    property->SetColor(green);
+    property->SetScalarOpacity(insideOnly);
+    ren->SetBackground(0, 0, 0);
+    const std::vector<double> volumeOnly = Grab(win);
+    mapper->SetIsosurfaceValues({ iso });
+    mapper->IsosurfaceUseColorMapOff();
+    mapper->SetIsosurfaceColor(1, 0, 0);
+    mapper->IsosurfaceLightingOff();
+    mapper->SetIsosurfaceOpacity(1.0);
+    const std::vector<double> opaque = Grab(win);
+    mapper->SetIsosurfaceOpacity(0.5);
+    const std::vector<double> half = Grab(win);
+    double gVol = 0, gOpaque = 0, gHalf = 0, rOpaque = 0;
+    int red = 0;
+    for (int i = 0; i < W * H; ++i)
+    {
+      gVol += volumeOnly[3 * i + 1];
+      gOpaque += opaque[3 * i + 1];
+      gHalf += half[3 * i + 1];
+      rOpaque += opaque[3 * i];
+      red += opaque[3 * i] > 0.9;
+    }
+    std::printf("occlusion: green volume alone %.1f, behind an opaque isosurface %.1f, behind a "
+                "translucent one %.1f; red pixels %d\n",
+      gVol, gOpaque, gHalf, red);
+    PSI_CHECK(gVol > 50 && red > W * H / 10, "scene not empty (%g, %d)", gVol, red);
+    PSI_CHECK(gOpaque < 1e-2 * gVol, "an opaque isosurface hides the volume behind it (%g)", gOpaque);
+    PSI_CHECK(gHalf > 0.3 * gVol && gHalf < 0.7 * gVol, "a translucent one lets half through (%g)",
+      gHalf);
+    if (!outDir.empty())
+    {
+      WritePng(outDir + "/occlusion_volume.png", volumeOnly);
+      WritePng(outDir + "/occlusion_opaque.png", opaque);
+      WritePng(outDir + "/occlusion_half.png", half);
+    }
+    property->SetColor(color);
+    property->SetScalarOpacity(linear);
+    mapper->IsosurfaceLightingOn();
+    mapper->IsosurfaceUseColorMapOn();
+    mapper->SetIsosurfaceOpacity(1.0);
+  }
+
+  // ---- 4. Several isovalues in one cell, and an isovalue exactly at a vertex value.
+  {
+    vtkDataArray* sc = grid->GetPointData()->GetScalars();
+    const double v = sc->GetComponent(sc->GetNumberOfTuples() / 2 + 3, 0);
+    for (const std::vector<double>& values :
+      { std::vector<double>{ v }, std::vector<double>{ v - 0.02 * span, v, v + 0.01 * span,
+                                     v + 0.03 * span, v + 0.2 * span } })
+    {
+      mapper->SetIsosurfaceValues(values);
+      for (int view = 0; view < 3; ++view)
+      {
+        outside();
+        if (view == 1)
+        {
+          cam->SetParallelProjection(1);
+          ren->ResetCamera();
+        }
+        if (view == 2)
+        {
+          inside();
+        }
+        const std::vector<double> img = Grab(win);
+        int lit = 0;
+        for (int i = 0; i < W * H; ++i)
+        {
+          lit += img[3 * i] + img[3 * i + 1] + img[3 * i + 2] > 0.3;
+        }
+        PSI_CHECK(Finite(img) && lit > W * H / 20, "%zu isovalues at a vertex value, view %d: %d",
+          values.size(), view, lit);
+        if (!outDir.empty())
+        {
+          WritePng(outDir + "/iso" + std::to_string(values.size()) + "_view" +
+              std::to_string(view) + ".png",
+            img);
+        }
+      }
+    }
+  }
+
+  std::printf("%s\n", psitest::Failures() ? "TestPsiIsosurfaces FAILED" : "TestPsiIsosurfaces passed");
+  return psitest::Failures() ? 1 : 0;
+}

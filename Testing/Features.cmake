@@ -1,0 +1,18 @@
+# Isosurfaces and adaptive transfer-function sampling (issue 5), included from
+# Testing/CMakeLists.txt. GL tests need an X server (run ctest under xvfb-run).
+add_executable(TestPsiIsosurfaces Cxx/TestPsiIsosurfaces.cxx)
+target_link_libraries(TestPsiIsosurfaces PRIVATE PsiVolume::Representations
+  VTK::RenderingOpenGL2 VTK::FiltersGeneral VTK::FiltersSources VTK::ImagingCore VTK::IOImage
+  VTK::RenderingCore)
+vtk_module_autoinit(TARGETS TestPsiIsosurfaces MODULES VTK::RenderingOpenGL2)
+file(MAKE_DIRECTORY "${CMAKE_BINARY_DIR}/Testing/Images")
+add_test(NAME PsiIsosurfaces COMMAND TestPsiIsosurfaces "${CMAKE_BINARY_DIR}/Testing/Images")
+
+find_program(PVPYTHON_EXECUTABLE NAMES pvpython REQUIRED)
+add_test(NAME PsiPython.isosurfaces
+  COMMAND "${PVPYTHON_EXECUTABLE}" --force-offscreen-rendering
+          "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_isosurfaces.py")
+set_tests_properties(PsiPython.isosurfaces PROPERTIES
+  ENVIRONMENT "PSI_PLUGIN=$<TARGET_FILE:PsiVolume>;PSI_TEST_OUTPUT=${CMAKE_BINARY_DIR}/Testing/Images"
+  SKIP_RETURN_CODE 77
+  TIMEOUT 600)
