@@ -459,6 +459,8 @@ struct vtkPsiVolumeMapper::Internals
   std::vector<uint32_t> Order;
   int SortedMethod = -1;
   vtkMTimeType MeshTime = 0;
+  // Identity of the uploaded input: switching to an older dataset has a smaller MTime.
+  const void* MeshInput = nullptr;
   std::string MeshArrayKey;
   vtkNew<vtkOpenGLBufferObject> PointsBuffer;
   vtkNew<vtkTextureObject> PointsTexture;
@@ -479,6 +481,10 @@ struct vtkPsiVolumeMapper::Internals
   vtkNew<vtkTextureObject> TransferTexture;
   vtkMTimeType TransferTime = 0;         // property MTime when last sampled
   std::vector<float> TransferSamples4;    // what the texture holds
+  // HAPT §3.5 early discard: prefix counts of samples with non-zero opacity (R32F, N x 1), and
+  // whether the opacity function has a zero region at all (else the variant is not compiled).
+  vtkNew<vtkTextureObject> OpacityPrefixTexture;
+  bool TransferHasZeroOpacity = false;
   int TransferVersion = 0;                // bumped only when the sampled content changes
   int PreVersion = -1;
   double TransferRange[2] = { 0, 0 };
@@ -517,6 +523,7 @@ struct vtkPsiVolumeMapper::Internals
     this->GradientTexture->ReleaseGraphicsResources(win);
     this->GradientsOnGPU = false;
     this->TransferTexture->ReleaseGraphicsResources(win);
+    this->OpacityPrefixTexture->ReleaseGraphicsResources(win);
     this->TransferSamples4.clear();
     this->PsiTexture->ReleaseGraphicsResources(win);
     this->PreTexture->ReleaseGraphicsResources(win);
@@ -655,10 +662,12 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   const std::string arrayKey = std::string(scalars->GetName() ? scalars->GetName() : "") + "|" +
     std::to_string(cellFlag) + "|" + std::to_string(this->ScalarMode);
   const vtkMTimeType meshTime = std::max(input->GetMTime(), scalars->GetMTime());
-  if (!I.MeshOnGPU || meshTime > I.MeshTime || arrayKey != I.MeshArrayKey)
+  if (!I.MeshOnGPU || meshTime != I.MeshTime || input != I.MeshInput ||
+    arrayKey != I.MeshArrayKey)
   {
     I.Mesh = GatherMesh(input, scalars, cellFlag == 1);
     I.MeshTime = meshTime;
+    I.MeshInput = input;
     I.MeshArrayKey = arrayKey;
     this->NumberOfSkippedCells = I.Mesh.NonTetCells + I.Mesh.NonFiniteTets;
     if (I.Mesh.NonTetCells && I.Mesh.Tets.empty() && !I.Mesh.NonFiniteTets)
@@ -809,6 +818,16 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       I.TransferTexture->SetWrapT(vtkTextureObject::ClampToEdge);
       I.TransferSamples4 = tf.Rgba;
       ++I.TransferVersion;
+      std::vector<float> prefix(tf.Size);
+      float count = 0;
+      for (int i = 0; i < tf.Size; ++i)
+      {
+        count += tf.Rgba[4 * static_cast<size_t>(i) + 3] > 0 ? 1.0f : 0.0f;
+        prefix[i] = count;
+      }
+      I.TransferHasZeroOpacity = count < tf.Size - 1;
+      I.OpacityPrefixTexture->SetContext(renWin);
+      I.OpacityPrefixTexture->Create2DFromRaw(tf.Size, 1, 1, VTK_FLOAT, prefix.data());
     }
     I.TransferTime = property->GetMTime();
     I.TransferRange[0] = I.Mesh.ScalarRange[0];
@@ -966,6 +985,14 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     defines += "#define PSI_ISO_COUNT " + std::to_string(isoValues.size()) + "\n";
     defines += "#define PSI_MAX_LIGHTS " + std::to_string(maxLights) + "\n";
   }
+  // Early discard only when the opacity function has zero regions, and never with isosurfaces
+  // (which are visible where the volume is transparent).
+  const bool earlyDiscard = this->EarlyDiscard && I.TransferHasZeroOpacity && !iso;
+  this->LastUsedEarlyDiscard = earlyDiscard;
+  if (earlyDiscard)
+  {
+    defines += "#define PSI_EARLY_DISCARD\n";
+  }
   if (adaptive)
   {
     defines += "#define PSI_ADAPTIVE\n#define PSI_TF_NODES_MAX " +
@@ -1013,6 +1040,16 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   const float tfScaleShift[2] = { static_cast<float>(scale),
     static_cast<float>(0.5 / n - r0 * scale) };
   prog->SetUniform2f("tfScaleShift", tfScaleShift);
+  if (earlyDiscard)
+  {
+    I.OpacityPrefixTexture->Activate();
+    prog->SetUniformi("opacityPrefix", I.OpacityPrefixTexture->GetTextureUnit());
+    // scalar -> sample index: (s - r0) (N - 1) / (r1 - r0)
+    const float index[2] = { static_cast<float>((n - 1) / (r1 - r0)),
+      static_cast<float>(-r0 * (n - 1) / (r1 - r0)) };
+    prog->SetUniform2f("tfIndexScaleShift", index);
+    prog->SetUniformi("tfSamples", static_cast<int>(n));
+  }
   prog->SetUniformf("unitDistance",
     static_cast<float>(std::max(property->GetScalarOpacityUnitDistance(0), 1e-30)));
   if (needPre)
@@ -1199,6 +1236,10 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   I.PointsTexture->Deactivate();
   I.TransferTexture->Deactivate();
+  if (earlyDiscard)
+  {
+    I.OpacityPrefixTexture->Deactivate();
+  }
   if (iso)
   {
     I.GradientTexture->Deactivate();

@@ -70,6 +70,15 @@ public:
   vtkSetClampMacro(SortMethod, int, CENTROID, MPVONC);
   vtkGetMacro(SortMethod, int);
 
+  /// HAPT §3.5: drop tetrahedra whose scalar range sees zero opacity only, in the geometry shader
+  /// (default on; compiled in only when the opacity function has zero regions and no isosurface
+  /// is shown).
+  vtkSetMacro(EarlyDiscard, bool);
+  vtkGetMacro(EarlyDiscard, bool);
+  vtkBooleanMacro(EarlyDiscard, bool);
+  /// Whether the last frame used early discard.
+  vtkGetMacro(LastUsedEarlyDiscard, bool);
+
   /// Number of samples of the transfer function table (default 1024).
   vtkSetClampMacro(TransferFunctionSamples, int, 2, 1 << 16);
   vtkGetMacro(TransferFunctionSamples, int);
@@ -159,6 +168,8 @@ protected:
   double LastPreIntegrationSeconds = 0;
   vtkIdType LastSortCycles = 0;
   bool ExactPerspectiveSegments = true;
+  bool EarlyDiscard = true;
+  bool LastUsedEarlyDiscard = false;
   vtkIdType NumberOfTetrahedra = 0;
   vtkIdType NumberOfSkippedCells = 0;
   double LastSortSeconds = 0;

@@ -22,6 +22,23 @@ in vec4 vsP2[];
 in vec4 vsP3[];
 
 uniform mat4 VCDCMatrix;
+
+#ifdef PSI_EARLY_DISCARD
+// HAPT §3.5: a tetrahedron whose scalar range meets only zero-opacity samples of the (linearly
+// interpolated) transfer function contributes nothing and emits nothing. opacityPrefix[i] counts
+// the samples 0..i with non-zero opacity.
+uniform sampler2D opacityPrefix;
+uniform vec2 tfIndexScaleShift; // scalar -> sample index
+uniform int tfSamples;
+
+bool transparentRange(float smin, float smax)
+{
+  int i0 = clamp(int(floor(smin * tfIndexScaleShift.x + tfIndexScaleShift.y)), 0, tfSamples - 1);
+  int i1 = clamp(int(ceil(smax * tfIndexScaleShift.x + tfIndexScaleShift.y)), 0, tfSamples - 1);
+  float before = i0 > 0 ? texelFetch(opacityPrefix, ivec2(i0 - 1, 0), 0).r : 0.0;
+  return texelFetch(opacityPrefix, ivec2(i1, 0), 0).r - before < 0.5;
+}
+#endif
 uniform int classTable[81];
 
 #ifndef PSI_EXACT_SEGMENTS
@@ -245,6 +262,16 @@ void emitClipped()
 void main()
 {
   vec4 raw[4] = vec4[4](vsP0[0], vsP1[0], vsP2[0], vsP3[0]);
+#ifdef PSI_EARLY_DISCARD
+  {
+    float smin = min(min(vsP0[0].w, vsP1[0].w), min(vsP2[0].w, vsP3[0].w));
+    float smax = max(max(vsP0[0].w, vsP1[0].w), max(vsP2[0].w, vsP3[0].w));
+    if (transparentRange(smin, smax))
+    {
+      return;
+    }
+  }
+#endif
   int inFront = 0;
   for (int i = 0; i < 4; ++i)
   {
