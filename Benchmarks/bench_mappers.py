@@ -23,6 +23,8 @@ p.add_argument("--frames", type=int, default=12)
 p.add_argument("--error-views", type=int, default=3)
 p.add_argument("--unit-distance", type=float)
 p.add_argument("--png-dir", default="")
+p.add_argument("--transparent-below", type=float, default=0.0,
+               help="opacity 0 below this fraction of the scalar range (e.g. 0.5)")
 p.add_argument("--mappers", nargs="*", default=[
     "Psi Volume|Partial Pre-Integration", "Psi Volume|Average", "Projected tetra",
     "Bunyk ray cast", "Resample To Image"])
@@ -33,7 +35,8 @@ src, array = psi_bench.load(args.data)
 if src is None:
     print("SKIP: %s not found in %s" % (args.data, psi_data.SHARED_DATA))
     psi_testing.exit_now(0)
-scene = psi_bench.Scene(src, array, args.size, args.frames, args.unit_distance)
+scene = psi_bench.Scene(src, array, args.size, args.frames, args.unit_distance,
+                        args.transparent_below)
 steps = [int(i * args.frames / args.error_views) for i in range(args.error_views)]
 refs, ref_seconds = scene.references(steps)
 rows = [(name,) + scene.measure(name, refs, args.png_dir) for name in args.mappers]
@@ -42,8 +45,11 @@ pt = [r for r in rows if r[0] == "Projected tetra"]
 pt_spf, pt_err = (pt[0][1], pt[0][2]) if pt else (float("nan"), float("nan"))
 print()
 print("dataset %s: %d tetrahedra, %dx%d, %d orbit frames, error at %d views vs Bunyk+linear "
-      "integrator (%.1f s/frame)" % (args.data, scene.cells, args.size, args.size, args.frames,
-                                     len(refs), ref_seconds))
+      "integrator (%.1f s/frame)%s" % (args.data, scene.cells, args.size, args.size, args.frames,
+                                       len(refs), ref_seconds,
+                                       ", opacity 0 below %.0f%% of the range" % (
+                                           100 * args.transparent_below)
+                                       if args.transparent_below else ""))
 print("%-36s %10s %12s %11s %11s %11s %9s" % ("mapper", "s/frame", "tets/s", "speed/PT",
                                              "mean err", "err/PT", "max err"))
 for name, spf, err, mx in rows:

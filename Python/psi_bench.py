@@ -27,7 +27,7 @@ class Scene:
     """One view orbiting a volume; the color map is in RGB space so that the linear integrator
     (linear between control points) is exact for it."""
 
-    def __init__(self, src, array, size=512, frames=12, unit_distance=None):
+    def __init__(self, src, array, size=512, frames=12, unit_distance=None, transparent_below=0.0):
         self.frames = frames
         self.view = simple.CreateRenderView()
         self.view.ViewSize = [size, size]
@@ -37,6 +37,13 @@ class Scene:
         self.rep = psi_data.show_volume(src, array, self.view, representation="Volume",
                                         unit_distance=unit_distance)
         simple.GetColorTransferFunction(array).ColorSpace = "RGB"
+        if transparent_below > 0:
+            # opacity 0 on the lower part of the range, then a ramp to 1: a typical user choice,
+            # and the case HAPT's early discard (section 3.5) is for
+            pwf = simple.GetOpacityTransferFunction(array)
+            lo, hi = pwf.Points[0], pwf.Points[-4]
+            cut = lo + transparent_below * (hi - lo)
+            pwf.Points = [lo, 0.0, 0.5, 0.0, cut, 0.0, 0.5, 0.0, hi, 1.0, 0.5, 0.0]
         simple.Render(self.view)
         self.view.ResetCamera()
         cam = self.view.GetActiveCamera()

@@ -53,6 +53,20 @@ int vtkPsiVolumeRepresentation::GetIntegrationMethod()
   return this->PsiMapper->GetIntegrationMethod();
 }
 
+void vtkPsiVolumeRepresentation::SetEarlyDiscard(bool on)
+{
+  if (on != this->PsiMapper->GetEarlyDiscard())
+  {
+    this->PsiMapper->SetEarlyDiscard(on);
+    this->Modified();
+  }
+}
+
+bool vtkPsiVolumeRepresentation::GetEarlyDiscard()
+{
+  return this->PsiMapper->GetEarlyDiscard();
+}
+
 void vtkPsiVolumeRepresentation::SetSortMethod(int method)
 {
   if (method != this->PsiMapper->GetSortMethod())

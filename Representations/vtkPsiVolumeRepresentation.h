@@ -35,6 +35,12 @@ public:
   ///@}
 
   ///@{
+  /// See vtkPsiVolumeMapper::SetEarlyDiscard (HAPT §3.5).
+  void SetEarlyDiscard(bool on);
+  bool GetEarlyDiscard();
+  ///@}
+
+  ///@{
   /// See vtkPsiVolumeMapper::SortMethods.
   void SetSortMethod(int method);
   int GetSortMethod();
