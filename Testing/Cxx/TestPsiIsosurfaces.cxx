@@ -10,6 +10,7 @@
 // Needs an X server (run under xvfb-run). Usage: TestPsiIsosurfaces [output-dir]
 #include "PsiReferenceRaycaster.h"
 #include "PsiTestCheck.h"
+#include "PsiTestScene.h"
 #include "vtkPsiVolumeMapper.h"
 
 #include "vtkActor.h"
@@ -57,61 +58,6 @@ void MakeGrid(vtkUnstructuredGrid* grid, int half, double cell)
   scaled->SetInputConnection(tets->GetOutputPort());
   scaled->Update();
   grid->ShallowCopy(scaled->GetOutput());
-}
-
-psi::ReferenceScene MakeReference(
-  vtkUnstructuredGrid* grid, vtkColorTransferFunction* color, vtkPiecewiseFunction* opacity,
-  double unit)
-{
-  psi::ReferenceScene ref;
-  vtkDataArray* sc = grid->GetPointData()->GetScalars();
-  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    grid->GetPoint(i, p);
-    ref.Points.push_back({ { p[0], p[1], p[2] } });
-    ref.Scalars.push_back(sc->GetComponent(i, 0));
-  }
-  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
-  {
-    const vtkIdType* pts;
-    vtkIdType n;
-    grid->GetCellPoints(c, n, pts);
-    ref.Tets.push_back({ { int(pts[0]), int(pts[1]), int(pts[2]), int(pts[3]) } });
-  }
-  ref.Transfer = [color, opacity, unit](double v, double out[4]) {
-    color->GetColor(v, out);
-    out[3] = opacity->GetValue(v) / unit;
-  };
-  for (int i = 0; i < color->GetSize(); ++i)
-  {
-    double node[6];
-    color->GetNodeValue(i, node);
-    ref.Breakpoints.push_back(node[0]);
-  }
-  for (int i = 0; i < opacity->GetSize(); ++i)
-  {
-    double node[4];
-    opacity->GetNodeValue(i, node);
-    ref.Breakpoints.push_back(node[0]);
-  }
-  return ref;
-}
-
-void WritePng(const std::string& file, const std::vector<double>& rgb)
-{
-  vtkNew<vtkImageData> im;
-  im->SetDimensions(W, H, 1);
-  im->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  auto* p = static_cast<unsigned char*>(im->GetScalarPointer());
-  for (size_t i = 0; i < rgb.size(); ++i)
-  {
-    p[i] = static_cast<unsigned char>(std::min(255.0, std::max(0.0, rgb[i] * 255.0 + 0.5)));
-  }
-  vtkNew<vtkPNGWriter> w;
-  w->SetFileName(file.c_str());
-  w->SetInputData(im);
-  w->Write();
 }
 
 std::vector<double> Grab(vtkRenderWindow* win)
@@ -309,7 +255,7 @@ int main(int argc, char* argv[])
     spike->AddPoint(r[1], 0.0);
     property->SetScalarOpacity(spike);
     property->SetScalarOpacityUnitDistance(1.0);
-    const psi::ReferenceScene scene = MakeReference(grid, color, spike, 1.0);
+    const psi::ReferenceScene scene = psitest::MakeReferenceScene(grid, color, spike, 1.0);
     const std::vector<double> ref = Reference(ren, scene);
     mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_OFF);
     const std::vector<double> off = Grab(win);
@@ -342,9 +288,9 @@ int main(int argc, char* argv[])
     PSI_CHECK(dAuto.Max <= 1.5 / 255, "Auto draws what On draws (%g)", dAuto.Max);
     if (!outDir.empty())
     {
-      WritePng(outDir + "/spike_ref.png", ref);
-      WritePng(outDir + "/spike_adaptive_off.png", off);
-      WritePng(outDir + "/spike_adaptive_on.png", on);
+      psitest::WritePng(outDir + "/spike_ref.png", ref, W, H);
+      psitest::WritePng(outDir + "/spike_adaptive_off.png", off, W, H);
+      psitest::WritePng(outDir + "/spike_adaptive_on.png", on, W, H);
     }
     property->SetScalarOpacity(linear);
     property->SetScalarOpacityUnitDistance(2.0);
@@ -400,9 +346,9 @@ int main(int argc, char* argv[])
       gHalf);
     if (!outDir.empty())
     {
-      WritePng(outDir + "/occlusion_volume.png", volumeOnly);
-      WritePng(outDir + "/occlusion_opaque.png", opaque);
-      WritePng(outDir + "/occlusion_half.png", half);
+      psitest::WritePng(outDir + "/occlusion_volume.png", volumeOnly, W, H);
+      psitest::WritePng(outDir + "/occlusion_opaque.png", opaque, W, H);
+      psitest::WritePng(outDir + "/occlusion_half.png", half, W, H);
     }
     property->SetColor(color);
     property->SetScalarOpacity(linear);
@@ -442,9 +388,9 @@ int main(int argc, char* argv[])
           values.size(), view, lit);
         if (!outDir.empty())
         {
-          WritePng(outDir + "/iso" + std::to_string(values.size()) + "_view" +
+          psitest::WritePng(outDir + "/iso" + std::to_string(values.size()) + "_view" +
               std::to_string(view) + ".png",
-            img);
+            img, W, H);
         }
       }
     }

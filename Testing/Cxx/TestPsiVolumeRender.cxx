@@ -6,6 +6,7 @@
 // Usage: TestPsiVolumeRender [output-dir]   (PNG images of GPU, reference and 8x difference)
 #include "PsiReferenceRaycaster.h"
 #include "PsiTestCheck.h"
+#include "PsiTestScene.h"
 #include "vtkPsiVolumeMapper.h"
 
 #include "vtkActor.h"
@@ -94,58 +95,8 @@ void MakeScene(Scene& s, int half, double cell, double unitDistance, bool linear
 
 psi::ReferenceScene MakeReference(Scene& s)
 {
-  psi::ReferenceScene ref;
-  vtkDataArray* sc = s.Grid->GetPointData()->GetScalars();
-  for (vtkIdType i = 0; i < s.Grid->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    s.Grid->GetPoint(i, p);
-    ref.Points.push_back({ { p[0], p[1], p[2] } });
-    ref.Scalars.push_back(sc->GetComponent(i, 0));
-  }
-  for (vtkIdType c = 0; c < s.Grid->GetNumberOfCells(); ++c)
-  {
-    const vtkIdType* pts;
-    vtkIdType n;
-    s.Grid->GetCellPoints(c, n, pts);
-    ref.Tets.push_back({ { int(pts[0]), int(pts[1]), int(pts[2]), int(pts[3]) } });
-  }
-  vtkColorTransferFunction* color = s.Color;
-  vtkPiecewiseFunction* opacity = s.Opacity;
-  const double unit = s.Property->GetScalarOpacityUnitDistance();
-  ref.Transfer = [color, opacity, unit](double v, double out[4]) {
-    color->GetColor(v, out);
-    out[3] = opacity->GetValue(v) / unit;
-  };
-  for (int i = 0; i < color->GetSize(); ++i)
-  {
-    double node[6];
-    color->GetNodeValue(i, node);
-    ref.Breakpoints.push_back(node[0]);
-  }
-  for (int i = 0; i < opacity->GetSize(); ++i)
-  {
-    double node[4];
-    opacity->GetNodeValue(i, node);
-    ref.Breakpoints.push_back(node[0]);
-  }
-  return ref;
-}
-
-void WritePng(const std::string& file, const std::vector<double>& rgb)
-{
-  vtkNew<vtkImageData> im;
-  im->SetDimensions(W, H, 1);
-  im->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  auto* p = static_cast<unsigned char*>(im->GetScalarPointer());
-  for (size_t i = 0; i < rgb.size(); ++i)
-  {
-    p[i] = static_cast<unsigned char>(std::min(255.0, std::max(0.0, rgb[i] * 255.0 + 0.5)));
-  }
-  vtkNew<vtkPNGWriter> w;
-  w->SetFileName(file.c_str());
-  w->SetInputData(im);
-  w->Write();
+  return psitest::MakeReferenceScene(
+    s.Grid, s.Color, s.Opacity, s.Property->GetScalarOpacityUnitDistance());
 }
 
 struct Result
@@ -222,9 +173,9 @@ Result Compare(const std::string& name, vtkRenderWindow* win, vtkRenderer* ren, 
   }
   if (!outDir.empty())
   {
-    WritePng(outDir + "/" + name + "_gpu.png", gpu);
-    WritePng(outDir + "/" + name + "_ref.png", ref);
-    WritePng(outDir + "/" + name + "_diff8x.png", diff);
+    psitest::WritePng(outDir + "/" + name + "_gpu.png", gpu, W, H);
+    psitest::WritePng(outDir + "/" + name + "_ref.png", ref, W, H);
+    psitest::WritePng(outDir + "/" + name + "_diff8x.png", diff, W, H);
   }
   std::printf("%-28s mean error %.5f  max %.4f  covered pixels %d\n", name.c_str(), r.Mean, r.Max,
     r.Covered);
