@@ -18,7 +18,6 @@
 #include "PsiVisibilitySort.h"
 #include "PsiVolumeFS.h"
 #include "PsiVolumeGS.h"
-#include "PsiVolumeIsoVS.h"
 #include "PsiVolumeVS.h"
 
 #include "vtkCamera.h"
@@ -1003,7 +1002,8 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   if (!I.Program || I.ProgramKey != key)
   {
     ++this->NumberOfProgramBuilds;
-    std::string vs = iso ? PsiVolumeIsoVS : PsiVolumeVS, gs = PsiVolumeGS, fs = PsiVolumeFS;
+    std::string vs = PsiVolumeVS, gs = PsiVolumeGS, fs = PsiVolumeFS;
+    Substitute(vs, "//PSI::Features::Dec", defines);
     Substitute(gs, "//PSI::Features::Dec", defines);
     Substitute(fs, "//PSI::Features::Dec", defines);
     Substitute(fs, "//PSI::Integrator::Impl", IntegratorSource(this->IntegrationMethod));

@@ -1,4 +1,5 @@
 //VTK::System::Dec
+//PSI::Features::Dec
 // PsiVolumeVS: one vertex per tetrahedron (HAPT, seed 002 §3: tetrahedra streamed as points).
 // The tetrahedron's four point ids arrive as one attribute; the points (model xyz + scalar) are
 // fetched from a texture buffer and moved to view coordinates, where thickness is measured.
@@ -11,6 +12,11 @@ out vec4 vsP0; // view-space xyz, w = scalar
 out vec4 vsP1;
 out vec4 vsP2;
 out vec4 vsP3;
+#ifdef PSI_ISO_COUNT
+// Isosurface variants: the point ids go on to the geometry shader, which fetches the smoothed
+// point gradients (isosurface normals).
+flat out uvec4 vsIds;
+#endif
 
 vec4 viewPoint(uint id)
 {
@@ -24,4 +30,7 @@ void main()
   vsP1 = viewPoint(tetPointIds.y);
   vsP2 = viewPoint(tetPointIds.z);
   vsP3 = viewPoint(tetPointIds.w);
+#ifdef PSI_ISO_COUNT
+  vsIds = tetPointIds;
+#endif
 }

@@ -6,6 +6,10 @@
 #include "PsiReferenceRaycaster.h"
 
 #include "vtkColorTransferFunction.h"
+#include "vtkDataSetTriangleFilter.h"
+#include "vtkRTAnalyticSource.h"
+#include "vtkTransform.h"
+#include "vtkTransformFilter.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -20,6 +24,22 @@
 
 namespace psitest
 {
+/// The Wavelet source on [-half, half]^3, cells scaled to `cell` units, split into tetrahedra.
+inline void MakeWaveletTets(vtkUnstructuredGrid* grid, int half, double cell)
+{
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(-half, half, -half, half, -half, half);
+  vtkNew<vtkDataSetTriangleFilter> tets;
+  tets->SetInputConnection(wavelet->GetOutputPort());
+  vtkNew<vtkTransform> scale;
+  scale->Scale(cell, cell, cell);
+  vtkNew<vtkTransformFilter> scaled;
+  scaled->SetTransform(scale);
+  scaled->SetInputConnection(tets->GetOutputPort());
+  scaled->Update();
+  grid->ShallowCopy(scaled->GetOutput());
+}
+
 /// The reference of `grid` (point scalars, tetrahedra) with tau = opacity / unit; the transfer
 /// function's control points become the reference's breakpoints.
 inline psi::ReferenceScene MakeReferenceScene(vtkUnstructuredGrid* grid,

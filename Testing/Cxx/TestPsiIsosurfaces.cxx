@@ -45,20 +45,6 @@ namespace
 {
 constexpr int W = 96, H = 96;
 
-void MakeGrid(vtkUnstructuredGrid* grid, int half, double cell)
-{
-  vtkNew<vtkRTAnalyticSource> wavelet;
-  wavelet->SetWholeExtent(-half, half, -half, half, -half, half);
-  vtkNew<vtkDataSetTriangleFilter> tets;
-  tets->SetInputConnection(wavelet->GetOutputPort());
-  vtkNew<vtkTransform> scale;
-  scale->Scale(cell, cell, cell);
-  vtkNew<vtkTransformFilter> scaled;
-  scaled->SetTransform(scale);
-  scaled->SetInputConnection(tets->GetOutputPort());
-  scaled->Update();
-  grid->ShallowCopy(scaled->GetOutput());
-}
 
 std::vector<double> Grab(vtkRenderWindow* win)
 {
@@ -115,7 +101,7 @@ int main(int argc, char* argv[])
 {
   const std::string outDir = argc > 1 ? argv[1] : "";
   vtkNew<vtkUnstructuredGrid> grid;
-  MakeGrid(grid, 3, 3.0); // coarse: scalar ranges per cell are wide
+  psitest::MakeWaveletTets(grid, 3, 3.0); // coarse: scalar ranges per cell are wide
   double r[2];
   grid->GetPointData()->GetScalars()->GetRange(r);
   const double span = r[1] - r[0];

@@ -53,17 +53,7 @@ struct Scene
 // The Wavelet source on [-half, half]^3, cells scaled to `cell` units, split into tetrahedra.
 void MakeScene(Scene& s, int half, double cell, double unitDistance, bool linearTF = false)
 {
-  vtkNew<vtkRTAnalyticSource> wavelet;
-  wavelet->SetWholeExtent(-half, half, -half, half, -half, half);
-  vtkNew<vtkDataSetTriangleFilter> tets;
-  tets->SetInputConnection(wavelet->GetOutputPort());
-  vtkNew<vtkTransform> scale;
-  scale->Scale(cell, cell, cell);
-  vtkNew<vtkTransformFilter> scaled;
-  scaled->SetTransform(scale);
-  scaled->SetInputConnection(tets->GetOutputPort());
-  scaled->Update();
-  s.Grid->ShallowCopy(scaled->GetOutput());
+  psitest::MakeWaveletTets(s.Grid, half, cell);
   double r[2];
   s.Grid->GetPointData()->GetScalars()->GetRange(r);
   // Linear-in-RGB color map and a ramp with a peak: control points are the reference's
