@@ -1,0 +1,90 @@
+"""Every property of 'Psi Volume' from pvpython: each value is accepted, reads back, renders a
+finite, non-empty image, and the ones that should change the picture do (as numbers)."""
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
+import numpy as np  # noqa: E402
+import psi_data  # noqa: E402
+import psi_testing  # noqa: E402
+from paraview import simple  # noqa: E402
+
+t = psi_testing.Checks("test_properties")
+psi_data.load_plugin(globals())
+src, array = psi_data.wavelet(8)
+view = simple.CreateRenderView()
+view.ViewSize = [160, 160]
+view.OrientationAxesVisibility = 0
+view.UseColorPaletteForBackground = 0
+view.Background = [0.0, 0.0, 0.0]
+d = psi_data.show_volume(src, array, view, unit_distance=3.0)
+simple.Render(view)
+view.ResetCamera()
+view.GetActiveCamera().Azimuth(30)
+view.GetActiveCamera().Elevation(20)
+view.ResetCamera()
+
+
+def render():
+    simple.Render(view)
+    img = psi_testing.grab(view)
+    return img
+
+
+plain = render()
+lo, hi = src.PointData[array].GetRange()
+mid = 0.5 * (lo + hi)
+t.check(psi_testing.covered(plain, [0, 0, 0]) > 2000, "default rendering is not empty")
+
+cases = [
+    ("IntegrationMethod", list(d.GetProperty("IntegrationMethod").Available), None),
+    ("SortMethod", ["MPVONC", "Centroid"], None),
+    ("EarlyDiscard", [0, 1], None),
+    ("AdaptiveSampling", ["On", "Auto", "Off"], None),
+    ("IsosurfaceValues", [[mid], [lo + 0.3 * (hi - lo), mid, lo + 0.7 * (hi - lo)], []], None),
+]
+for name, values, _ in cases:
+    for v in values:
+        setattr(d, name, v)
+        img = render()
+        got = getattr(d, name)
+        same = list(got) == list(v) if isinstance(v, list) else got == v
+        t.check(same, "%s = %r reads back (%r)" % (name, v, got))
+        t.check(np.isfinite(img).all() and psi_testing.covered(img, [0, 0, 0]) > 2000,
+                "%s = %r renders a non-empty image" % (name, v))
+
+# Effects that must show in the picture.
+d.IsosurfaceValues = [mid]
+d.IsosurfaceOpacity = 1.0
+d.IsosurfaceUseColorMap = 1
+with_iso = render()
+t.check(psi_testing.mean_error(with_iso, plain) > 0.005, "an isosurface changes the image")
+d.IsosurfaceUseColorMap = 0
+d.IsosurfaceColor = [0.0, 1.0, 0.0]
+green = render()
+t.check(green[:, :, 1].mean() > with_iso[:, :, 1].mean() + 1.0,
+        "a solid green isosurface color shows (green %.1f vs %.1f)"
+        % (green[:, :, 1].mean(), with_iso[:, :, 1].mean()))
+d.IsosurfaceOpacity = 0.3
+faint = render()
+t.check(psi_testing.mean_error(faint, green) > 0.002, "isosurface opacity changes the image")
+d.IsosurfaceValues = []
+d.IsosurfaceUseColorMap = 1
+d.IsosurfaceOpacity = 1.0
+back = render()
+t.check(psi_testing.mean_error(back, plain) < 0.5 / 255, "removing the isovalues restores the image")
+d.ScalarOpacityUnitDistance = 1.0
+denser = render()
+t.check(denser.mean() > plain.mean() + 1.0, "a shorter unit distance makes the volume denser")
+d.ScalarOpacityUnitDistance = 3.0
+
+# Read-outs.
+d.UpdatePropertyInformation()
+for name in ("NumberOfTetrahedra", "NumberOfSkippedCells", "LastRenderSeconds",
+             "LastSortSeconds", "LastPreIntegrationSeconds", "LastSortCycles"):
+    p = d.GetProperty(name)
+    t.check(p is not None and p.GetNumberOfElements() == 1, "read-out %s is available" % name)
+t.check(d.GetProperty("NumberOfTetrahedra").GetElement(0) == 5 * 16 ** 3,
+        "NumberOfTetrahedra = %d" % d.GetProperty("NumberOfTetrahedra").GetElement(0))
+t.check(d.GetProperty("LastRenderSeconds").GetElement(0) > 0, "LastRenderSeconds > 0")
+t.finish()
