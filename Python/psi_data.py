@@ -71,8 +71,7 @@ def open_any(path, array=None):
         raise SystemExit("ParaView cannot read %s" % path)
     reader.UpdatePipeline()
     src = reader
-    info = reader.GetDataInformation()
-    if info.GetCompositeDataSetName() or info.DataInformation.GetCompositeDataClassName():
+    if reader.GetDataInformation().DataInformation.IsCompositeDataSet():
         src = simple.MergeBlocks(Input=reader)
     if array is None:
         pd = src.PointData
