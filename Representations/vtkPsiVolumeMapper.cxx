@@ -479,7 +479,7 @@ struct vtkPsiVolumeMapper::Internals
   // Transfer function and Psi table
   vtkNew<vtkTextureObject> TransferTexture;
   vtkMTimeType TransferTime = 0;         // property MTime when last sampled
-  std::vector<float> TransferSamples4;    // what the texture holds
+  psi::TransferFunctionTable Transfer;    // what the texture holds (reused by pre-integration)
   // HAPT §3.5 early discard: prefix counts of samples with non-zero opacity (R32F, N x 1), and
   // whether the opacity function has a zero region at all (else the variant is not compiled).
   vtkNew<vtkTextureObject> OpacityPrefixTexture;
@@ -523,7 +523,7 @@ struct vtkPsiVolumeMapper::Internals
     this->GradientsOnGPU = false;
     this->TransferTexture->ReleaseGraphicsResources(win);
     this->OpacityPrefixTexture->ReleaseGraphicsResources(win);
-    this->TransferSamples4.clear();
+    this->Transfer = psi::TransferFunctionTable();
     this->PsiTexture->ReleaseGraphicsResources(win);
     this->PreTexture->ReleaseGraphicsResources(win);
     this->PreValid = false;
@@ -806,7 +806,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       psi::SampleTransferFunction(property, I.Mesh.ScalarRange, this->TransferFunctionSamples);
     // ParaView touches the property's MTime when representation properties change; only a change
     // of the sampled content costs an upload (and, for full pre-integration, a table rebuild).
-    if (tf.Rgba != I.TransferSamples4 || !I.TransferTexture->GetHandle())
+    if (tf.Rgba != I.Transfer.Rgba || !I.TransferTexture->GetHandle())
     {
       I.TransferTexture->SetContext(renWin);
       I.TransferTexture->Create2DFromRaw(
@@ -815,7 +815,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       I.TransferTexture->SetMagnificationFilter(vtkTextureObject::Linear);
       I.TransferTexture->SetWrapS(vtkTextureObject::ClampToEdge);
       I.TransferTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-      I.TransferSamples4 = tf.Rgba;
+      I.Transfer = tf;
       ++I.TransferVersion;
       std::vector<float> prefix(tf.Size);
       float count = 0;
@@ -852,9 +852,8 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       I.PreTable.MaxLength != I.Mesh.MaxEdgeLength))
   {
     // Roettger's table belongs to one transfer function: rebuilt on every edit (timed).
-    const psi::TransferFunctionTable tf =
-      psi::SampleTransferFunction(property, I.Mesh.ScalarRange, this->TransferFunctionSamples);
-    I.PreTable = psi::BuildPreIntegrationTable(tf, psi::GetDefaultPsiTable(), I.Mesh.MaxEdgeLength);
+    I.PreTable =
+      psi::BuildPreIntegrationTable(I.Transfer, psi::GetDefaultPsiTable(), I.Mesh.MaxEdgeLength);
     this->LastPreIntegrationSeconds = I.PreTable.BuildSeconds;
     I.PreTexture->SetContext(renWin);
     I.PreTexture->Create3DFromRaw(I.PreTable.ScalarSamples, I.PreTable.ScalarSamples,
