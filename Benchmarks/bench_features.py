@@ -14,6 +14,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
+import psi_bench  # noqa: E402
 import psi_data  # noqa: E402
 import psi_testing  # noqa: E402
 from paraview import simple  # noqa: E402
@@ -25,7 +26,7 @@ parser.add_argument("--rounds", type=int, default=3)
 args = parser.parse_args()
 
 psi_data.load_plugin(globals())
-src, array = psi_data.plot3d("bluntfin")
+src, array = psi_bench.load("bluntfin")  # SKIP when the data is absent
 src.UpdatePipeline()
 lo, hi = src.PointData[array].GetRange()
 view = simple.CreateRenderView()

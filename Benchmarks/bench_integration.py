@@ -39,9 +39,6 @@ cpu = {row["method"]: row for row in csv.DictReader(io.StringIO(
 
 psi_data.load_plugin(globals())
 src, array = psi_bench.load(args.data)
-if src is None:
-    print("SKIP: %s not found in %s" % (args.data, psi_data.SHARED_DATA))
-    psi_testing.exit_now(0)
 scene = psi_bench.Scene(src, array, args.size, args.frames)
 refs, ref_seconds = scene.references([int(i * args.frames / args.error_views)
                                       for i in range(args.error_views)])

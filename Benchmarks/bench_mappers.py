@@ -32,9 +32,6 @@ args = p.parse_args()
 
 psi_data.load_plugin(globals())
 src, array = psi_bench.load(args.data)
-if src is None:
-    print("SKIP: %s not found in %s" % (args.data, psi_data.SHARED_DATA))
-    psi_testing.exit_now(0)
 scene = psi_bench.Scene(src, array, args.size, args.frames, args.unit_distance,
                         args.transparent_below)
 steps = [int(i * args.frames / args.error_views) for i in range(args.error_views)]

@@ -22,9 +22,6 @@ args = p.parse_args()
 
 psi_data.load_plugin(globals())
 src, array = psi_bench.load(args.data)
-if src is None:
-    print("SKIP: %s not found in %s" % (args.data, psi_data.SHARED_DATA))
-    psi_testing.exit_now(0)
 scene = psi_bench.Scene(src, array, args.size, args.views)
 scene.set_mapper("Psi Volume|Partial Pre-Integration")
 rep = scene.rep

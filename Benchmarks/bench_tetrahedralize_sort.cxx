@@ -3,6 +3,7 @@
 // (psi::SortMPVONC, Williams 1992) - on the NASA Blunt Fin (5 tetrahedra per hexahedron, as in
 // the literature) and on a ~1M-tetrahedra mesh (a 56^3 image, 6 per hexahedron).
 // Usage: bench_tetrahedralize_sort [DATA_DIR]
+#include "PsiBluntFin.h"
 #include "PsiMPVONCSort.h"
 #include "PsiTetConnectivity.h"
 #include "PsiVisibilitySort.h"
@@ -10,8 +11,6 @@
 
 #include "vtkCellArray.h"
 #include "vtkImageData.h"
-#include "vtkMultiBlockDataSet.h"
-#include "vtkMultiBlockPLOT3DReader.h"
 #include "vtkNew.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
@@ -122,18 +121,8 @@ int main(int argc, char* argv[])
     "degen.", "filter s", "connect. s", "centroid ms", "MPVONC ms", "cycles/view");
   std::printf("|------------------------------|-----------|-----------|------------|--------------|"
               "---------------|------------|-------------|\n");
-  if (std::ifstream(dir + "/bluntfinxyz.bin").good())
+  if (vtkSmartPointer<vtkStructuredGrid> grid = psitest::ReadBluntFin(dir))
   {
-    vtkNew<vtkMultiBlockPLOT3DReader> reader;
-    reader->SetXYZFileName((dir + "/bluntfinxyz.bin").c_str());
-    reader->SetQFileName((dir + "/bluntfinq.bin").c_str());
-    reader->BinaryFileOn();
-    reader->SetByteOrderToBigEndian();
-    reader->MultiGridOff();
-    reader->HasByteCountOff();
-    reader->IBlankingOff();
-    reader->Update();
-    auto* grid = vtkStructuredGrid::SafeDownCast(reader->GetOutput()->GetBlock(0));
     Row("Blunt Fin, five per hex", grid, vtkPsiConformingTetrahedralize::FIVE_PER_HEX);
     Row("Blunt Fin, conforming", grid, vtkPsiConformingTetrahedralize::CONFORMING);
   }

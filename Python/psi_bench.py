@@ -13,12 +13,14 @@ import psi_testing
 
 
 def load(data):
-    """Source and array for 'wavelet', a PLOT3D name (None if its files are absent) or a file."""
+    """Source and array for 'wavelet', a PLOT3D name or a file. A benchmark on a PLOT3D dataset
+    whose files are absent prints SKIP and ends here."""
     if data == "wavelet":
         return psi_data.wavelet()
     if data in psi_data.PLOT3D:
         if not os.path.exists(os.path.join(psi_data.SHARED_DATA, psi_data.PLOT3D[data][0])):
-            return None, None
+            print("SKIP: %s not found in %s" % (data, psi_data.SHARED_DATA))
+            psi_testing.exit_now(0)
         return psi_data.plot3d(data)
     return psi_data.open_any(data)
 

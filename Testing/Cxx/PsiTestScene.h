@@ -5,6 +5,8 @@
 
 #include "PsiReferenceRaycaster.h"
 
+#include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkRTAnalyticSource.h"
@@ -15,6 +17,10 @@
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlaneSource.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkSmartPointer.h"
 #include "vtkPointData.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -42,6 +48,34 @@ inline void MakeWaveletTets(vtkUnstructuredGrid* grid, int half, double cell)
 
 /// The reference of `grid` (point scalars, tetrahedra) with tau = opacity / unit; the transfer
 /// function's control points become the reference's breakpoints.
+/// A slanted unlit opaque quad through the middle of the Wavelet meshes ([-half, half] in x, y),
+/// flat green so that its color is exact in the reference.
+inline vtkSmartPointer<vtkActor> MakeOpaquePlane(double half)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-half, -half, 0.5);
+  plane->SetPoint1(half, -half, -1.5);
+  plane->SetPoint2(-half, half, 0.5);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(plane->GetOutputPort());
+  vtkSmartPointer<vtkActor> actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->LightingOff();
+  actor->GetProperty()->SetColor(0.2, 0.7, 0.3);
+  return actor;
+}
+
+/// A perspective camera inside the Wavelet meshes, looking through them, near plane at 0.05.
+inline void SetCameraInside(vtkCamera* cam)
+{
+  cam->SetParallelProjection(0);
+  cam->SetPosition(1.3, 0.7, 2.1);
+  cam->SetFocalPoint(4, -2, -6);
+  cam->SetViewUp(0, 1, 0);
+  cam->SetViewAngle(60);
+  cam->SetClippingRange(0.05, 100);
+}
+
 inline psi::ReferenceScene MakeReferenceScene(vtkUnstructuredGrid* grid,
   vtkColorTransferFunction* color, vtkPiecewiseFunction* opacity, double unit)
 {

@@ -4,6 +4,7 @@
 // and count of degenerate tetrahedra, FaceNeighbors against a brute-force map, bad input.
 // Usage: TestConformingTetrahedralize synthetic | bluntfin DATA_DIR | badinput DATA_DIR
 // (the data modes exit with 77, "skipped", when DATA_DIR lacks the files).
+#include "PsiBluntFin.h"
 #include "PsiTestCheck.h"
 #include "vtkPsiConformingTetrahedralize.h"
 
@@ -16,8 +17,6 @@
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
 #include "vtkIntArray.h"
-#include "vtkMultiBlockDataSet.h"
-#include "vtkMultiBlockPLOT3DReader.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -543,16 +542,7 @@ int TestBluntFin(const std::string& dir)
 {
   if (!HaveFiles(dir, { "bluntfinxyz.bin", "bluntfinq.bin" }))
     return 77;
-  vtkNew<vtkMultiBlockPLOT3DReader> reader;
-  reader->SetXYZFileName((dir + "/bluntfinxyz.bin").c_str());
-  reader->SetQFileName((dir + "/bluntfinq.bin").c_str());
-  reader->BinaryFileOn();
-  reader->SetByteOrderToBigEndian();
-  reader->MultiGridOff();
-  reader->HasByteCountOff();
-  reader->IBlankingOff();
-  reader->Update();
-  auto* grid = vtkStructuredGrid::SafeDownCast(reader->GetOutput()->GetBlock(0));
+  vtkSmartPointer<vtkStructuredGrid> grid = psitest::ReadBluntFin(dir);
   PSI_CHECK(grid != nullptr, "no structured grid read");
   if (!grid)
     return 1;

@@ -139,31 +139,8 @@ int main(int argc, char* argv[])
     cam->SetParallelProjection(0);
     ren->ResetCameraClippingRange();
   };
-  auto inside = [&] {
-    cam->SetParallelProjection(0);
-    cam->SetPosition(1.3, 0.7, 2.1);
-    cam->SetFocalPoint(4, -2, -6);
-    cam->SetViewUp(0, 1, 0);
-    cam->SetViewAngle(60);
-    cam->SetClippingRange(0.05, 100);
-  };
-
-  // ---- 1. Every variant compiles and renders; features with nothing to do change nothing.
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-12, -12, 0.5);
-  plane->SetPoint1(12, -12, -1.5);
-  plane->SetPoint2(-12, 12, 0.5);
-  vtkNew<vtkPolyDataMapper> pm;
-  pm->SetInputConnection(plane->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(pm);
-  actor->GetProperty()->LightingOff();
-  actor->GetProperty()->SetColor(0.2, 0.7, 0.3);
-  const std::vector<double> outOfRange1 = { r[1] + 10 };
-  const std::vector<double> outOfRange3 = { r[0] - 30, r[1] + 10, r[1] + 20 };
-  int variants = 0;
-  for (int view = 0; view < 4; ++view) // perspective, parallel, camera inside, opaque plane
-  {
+  // view 0: perspective, 1: parallel, 2: camera inside
+  auto setView = [&](int view) {
     outside();
     if (view == 1)
     {
@@ -172,8 +149,18 @@ int main(int argc, char* argv[])
     }
     if (view == 2)
     {
-      inside();
+      psitest::SetCameraInside(cam);
     }
+  };
+
+  // ---- 1. Every variant compiles and renders; features with nothing to do change nothing.
+  vtkSmartPointer<vtkActor> actor = psitest::MakeOpaquePlane(12);
+  const std::vector<double> outOfRange1 = { r[1] + 10 };
+  const std::vector<double> outOfRange3 = { r[0] - 30, r[1] + 10, r[1] + 20 };
+  int variants = 0;
+  for (int view = 0; view < 4; ++view) // perspective, parallel, camera inside, opaque plane
+  {
+    setView(view < 3 ? view : 0);
     if (view == 3)
     {
       ren->AddActor(actor);
@@ -354,16 +341,7 @@ int main(int argc, char* argv[])
       mapper->SetIsosurfaceValues(values);
       for (int view = 0; view < 3; ++view)
       {
-        outside();
-        if (view == 1)
-        {
-          cam->SetParallelProjection(1);
-          ren->ResetCamera();
-        }
-        if (view == 2)
-        {
-          inside();
-        }
+        setView(view);
         const std::vector<double> img = Grab(win);
         int lit = 0;
         for (int i = 0; i < W * H; ++i)

@@ -237,12 +237,7 @@ int main(int argc, char* argv[])
   }
 
   // Camera inside the mesh: tetrahedra cut by the near plane are clipped, not dropped.
-  cam->SetParallelProjection(0);
-  cam->SetPosition(1.3, 0.7, 2.1);
-  cam->SetFocalPoint(4, -2, -6);
-  cam->SetViewUp(0, 1, 0);
-  cam->SetViewAngle(60);
-  cam->SetClippingRange(0.05, 100);
+  psitest::SetCameraInside(cam);
   {
     const Result r = Compare("camera_inside", win, ren, vol, refScene, nullptr, outDir);
     PSI_CHECK(mapper->GetLastUsedNearPlaneClipping(), "inside view must use the near-plane path");
@@ -260,16 +255,7 @@ int main(int argc, char* argv[])
   // Opaque geometry through the middle of the volume: hides what is behind it, and the cells it
   // cuts are integrated only up to it.
   outside();
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-9, -9, 0.5);
-  plane->SetPoint1(9, -9, -1.5);
-  plane->SetPoint2(-9, 9, 0.5);
-  vtkNew<vtkPolyDataMapper> pm;
-  pm->SetInputConnection(plane->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(pm);
-  actor->GetProperty()->LightingOff();
-  actor->GetProperty()->SetColor(0.2, 0.7, 0.3);
+  vtkSmartPointer<vtkActor> actor = psitest::MakeOpaquePlane(9);
   ren->AddActor(actor);
   ren->ResetCameraClippingRange();
   {
