@@ -3,8 +3,10 @@
 pvpython Benchmarks/bench_features.py [--size 512] [--frames 4] [--rounds 3]
 
 Configurations: the plain volume; the features switched on and then off again ("off after use",
-which must cost nothing: the program is the plain one); 1 and 4 isosurfaces; adaptive
-transfer-function sampling; and both. Rounds are interleaved (every configuration once per
+which must cost nothing: the program is the plain one); 1 and 4 isosurfaces, drawn by marching
+tetrahedra in the geometry shader (default) and per fragment; adaptive transfer-function
+sampling; both; and plain contours (volume opacity zero, where marching tetrahedra let early
+discard drop the volume and draw only the surfaces). Rounds are interleaved (every configuration once per
 round, in a rotating order) so that drifts of the machine hit all alike; each configuration's
 frame time is the median over its rounds of the mean over an orbit of frames."""
 import argparse
@@ -44,25 +46,37 @@ def iso(n):
     return [lo + (hi - lo) * (k + 1) / (n + 1) for k in range(n)]
 
 
+MT, PF = "Marching Tetrahedra", "Per Fragment"
+# name, isovalues (None: everything on, drawn, then off again), adaptive sampling, isosurface
+# method, volume opacity zero (plain contours)
 CONFIGS = [
-    ("plain volume", [], "Off"),
-    ("features off after use", None, "Off"),
-    ("isosurfaces 1", iso(1), "Off"),
-    ("isosurfaces 4", iso(4), "Off"),
-    ("adaptive sampling", [], "On"),
-    ("isosurfaces 1 + adaptive", iso(1), "On"),
-    ("isosurfaces 4 + adaptive", iso(4), "On"),
+    ("plain volume", [], "Off", MT, False),
+    ("features off after use", None, "Off", MT, False),
+    ("isosurfaces 1", iso(1), "Off", MT, False),
+    ("isosurfaces 4", iso(4), "Off", MT, False),
+    ("isosurfaces 1 per fragment", iso(1), "Off", PF, False),
+    ("isosurfaces 4 per fragment", iso(4), "Off", PF, False),
+    ("adaptive sampling", [], "On", MT, False),
+    ("isosurfaces 1 + adaptive", iso(1), "On", MT, False),
+    ("isosurfaces 4 + adaptive", iso(4), "On", MT, False),
+    ("contours 4 (opacity 0)", iso(4), "Off", MT, True),
+    ("contours 4 per fragment", iso(4), "Off", PF, True),
 ]
+otf = simple.GetOpacityTransferFunction(array)
+ramp = list(otf.Points)
 
 
-def apply(values, adaptive):
+def apply(values, adaptive, method, contours_only):
     if values is None:  # switch everything on, draw, and off again
         d.IsosurfaceValues = iso(4)
         d.AdaptiveSampling = "On"
+        d.IsosurfaceMethod = PF
         simple.Render(view)
         values = []
+    otf.Points = [lo, 0.0, 0.5, 0.0, hi, 0.0, 0.5, 0.0] if contours_only else ramp
     d.IsosurfaceValues = values
     d.AdaptiveSampling = adaptive
+    d.IsosurfaceMethod = method
     simple.Render(view)  # compile / fetch the program outside the timing
     psi_data.wait(view)
 
@@ -78,11 +92,11 @@ def time_orbit():
     return sum(times) / len(times)
 
 
-results = {name: [] for name, _, _ in CONFIGS}
+results = {c[0]: [] for c in CONFIGS}
 for r in range(args.rounds):
     k = r % len(CONFIGS)
-    for name, values, adaptive in CONFIGS[k:] + CONFIGS[:k]:
-        apply(values, adaptive)
+    for name, *config in CONFIGS[k:] + CONFIGS[:k]:
+        apply(*config)
         results[name].append(time_orbit())
 d.UpdatePropertyInformation()
 ntets = d.GetProperty("NumberOfTetrahedra").GetElement(0)
@@ -90,10 +104,10 @@ plain = statistics.median(results["plain volume"])
 spread = max(results["plain volume"]) - min(results["plain volume"])
 print("Blunt Fin (%s), %d tetrahedra, %dx%d, %d frames x %d interleaved rounds" %
       (array, ntets, args.size, args.size, args.frames, args.rounds))
-print("%-28s %10s %10s %10s %8s" % ("configuration", "median s", "min s", "max s", "vs plain"))
-for name, _, _ in CONFIGS:
+print("%-30s %10s %10s %10s %8s" % ("configuration", "median s", "min s", "max s", "vs plain"))
+for name, *_ in CONFIGS:
     v = results[name]
-    print("%-28s %10.4f %10.4f %10.4f %7.2fx" %
+    print("%-30s %10.4f %10.4f %10.4f %7.2fx" %
           (name, statistics.median(v), min(v), max(v), statistics.median(v) / plain))
 off = statistics.median(results["features off after use"])
 print("off = free: features off after use %.4f s vs plain %.4f s (difference %+.1f%%, plain's own "

@@ -888,7 +888,8 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     isoValues.resize(MaxIsosurfaces);
   }
   const bool iso = !isoValues.empty();
-  if (iso && !I.GradientsOnGPU)
+  const bool smoothIso = iso && this->IsosurfaceShading == ISO_SMOOTH;
+  if (smoothIso && !I.GradientsOnGPU)
   {
     I.GradientBuffer->Upload(PointGradients(I.Mesh), vtkOpenGLBufferObject::TextureBuffer);
     I.GradientTexture->SetContext(renWin);
@@ -978,14 +979,46 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     defines += "#define PSI_NEAR_CLIP\n";
   }
   constexpr int maxLights = 8;
+  bool isoTriangles = false;
   if (iso)
   {
-    defines += "#define PSI_ISO_COUNT " + std::to_string(isoValues.size()) + "\n";
+    const int niso = static_cast<int>(isoValues.size());
+    defines += "#define PSI_ISO_COUNT " + std::to_string(niso) + "\n";
     defines += "#define PSI_MAX_LIGHTS " + std::to_string(maxLights) + "\n";
+    if (smoothIso)
+    {
+      defines += "#define PSI_ISO_SMOOTH\n";
+    }
+    if (this->IsosurfaceMethod == ISO_MARCHING_TETRAHEDRA)
+    {
+      // Geometry-shader output: the 8-vertex decomposition once per piece (up to niso + 1) and
+      // a 4-vertex strip per surface, each vertex with its outputs (PsiVolumeGS.glsl):
+      // gl_Position 4, frontPoint + backPlane + scalarGrad 12 or segment 3, piece 3, clipTet 4.
+      const int vertices = 8 * (niso + 1) + 4 * niso;
+      const int components = 4 + (!parallel && this->ExactPerspectiveSegments ? 12 : 3) + 3 +
+        (nearClip ? 4 : 0);
+      GLint maxVertices = 0, maxComponents = 0;
+      glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &maxVertices);
+      glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &maxComponents);
+      isoTriangles = vertices <= maxVertices && components * vertices <= maxComponents;
+      if (isoTriangles)
+      {
+        defines += "#define PSI_ISO_TRIANGLES\n#define PSI_GS_MAX_VERTICES " +
+          std::to_string(vertices) + "\n";
+      }
+    }
+    if (!isoTriangles)
+    {
+      defines += "#define PSI_ISO_PER_FRAGMENT\n";
+    }
   }
-  // Early discard only when the opacity function has zero regions, and never with isosurfaces
-  // (which are visible where the volume is transparent).
-  const bool earlyDiscard = this->EarlyDiscard && I.TransferHasZeroOpacity && !iso;
+  this->LastUsedIsosurfaceMethod =
+    !iso ? -1 : isoTriangles ? ISO_MARCHING_TETRAHEDRA : ISO_PER_FRAGMENT;
+  // Early discard only when the opacity function has zero regions, and not with per-fragment
+  // isosurfaces (which are visible where the volume is transparent; marching tetrahedra still
+  // emit the surfaces of a cell whose volume pieces are dropped).
+  const bool earlyDiscard =
+    this->EarlyDiscard && I.TransferHasZeroOpacity && (!iso || isoTriangles);
   this->LastUsedEarlyDiscard = earlyDiscard;
   if (earlyDiscard)
   {
@@ -1078,7 +1111,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   const float viewport[2] = { static_cast<float>(w), static_cast<float>(h) };
   prog->SetUniform2f("viewportSize", viewport);
-  if (iso)
+  if (smoothIso)
   {
     I.GradientTexture->Activate();
     prog->SetUniformi("pointGradients", I.GradientTexture->GetTextureUnit());
@@ -1094,6 +1127,9 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     // (A^-1)^T in OpenGL's column-major order is A^-1 in VTK's row-major order.
     nm->Invert();
     prog->SetUniformMatrix("normalMatrix", nm);
+  }
+  if (iso)
+  {
     const int niso = static_cast<int>(isoValues.size());
     std::vector<float> colors(3 * niso);
     for (int i = 0; i < niso; ++i)
@@ -1239,7 +1275,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     I.OpacityPrefixTexture->Deactivate();
   }
-  if (iso)
+  if (smoothIso)
   {
     I.GradientTexture->Deactivate();
   }
@@ -1272,6 +1308,9 @@ void vtkPsiVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IntegrationMethod: " << GetIntegrationMethodName(this->IntegrationMethod)
      << "\n";
   os << indent << "TransferFunctionSamples: " << this->TransferFunctionSamples << "\n";
+  os << indent << "IsosurfaceMethod: "
+     << (this->IsosurfaceMethod == ISO_MARCHING_TETRAHEDRA ? "marching tetrahedra" : "per fragment")
+     << ", shading: " << (this->IsosurfaceShading == ISO_SMOOTH ? "smooth" : "flat") << "\n";
   os << indent << "NumberOfTetrahedra: " << this->NumberOfTetrahedra << "\n";
   os << indent << "NumberOfSkippedCells: " << this->NumberOfSkippedCells << "\n";
 }

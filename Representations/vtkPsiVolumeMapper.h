@@ -71,8 +71,9 @@ public:
   vtkGetMacro(SortMethod, int);
 
   /// HAPT §3.5: drop tetrahedra whose scalar range sees zero opacity only, in the geometry shader
-  /// (default on; compiled in only when the opacity function has zero regions and no isosurface
-  /// is shown).
+  /// (default on; compiled in only when the opacity function has zero regions). With
+  /// marching-tetrahedra isosurfaces only the transparent pieces of a cell are dropped, its
+  /// surfaces are still drawn; per-fragment isosurfaces switch it off.
   vtkSetMacro(EarlyDiscard, bool);
   vtkGetMacro(EarlyDiscard, bool);
   vtkBooleanMacro(EarlyDiscard, bool);
@@ -84,10 +85,8 @@ public:
   vtkGetMacro(TransferFunctionSamples, int);
 
   ///@{
-  /// Isosurfaces drawn inside the volume (issue 5). Each volume fragment whose ray segment crosses
-  /// an isovalue integrates the part in front of the crossing, composites the lit surface there
-  /// and, if the surface is not opaque, the part behind it: exact visibility inside every cell.
-  /// Values may come in any order: they are sorted when drawn, and duplicates and non-finite
+  /// Isosurfaces drawn inside the volume (issue 5), in exact visibility order with the volume
+  /// inside every cell (see IsosurfaceMethod). Values may come in any order: they are sorted when drawn, and duplicates and non-finite
   /// values dropped. With none, the program is the plain volume's: no cost at all.
   void SetNumberOfIsosurfaces(int n);
   int GetNumberOfIsosurfaces() const { return static_cast<int>(this->IsosurfaceValues.size()); }
@@ -108,6 +107,34 @@ public:
   vtkSetMacro(IsosurfaceLighting, bool);
   vtkGetMacro(IsosurfaceLighting, bool);
   vtkBooleanMacro(IsosurfaceLighting, bool);
+  /// How isosurfaces are drawn (HAPT §3.4 names both):
+  ///  - ISO_MARCHING_TETRAHEDRA (default): the geometry shader extracts each crossing cell's
+  ///    surface as one or two triangles and draws them in visibility order with the volume: the
+  ///    cell's volume once per scalar interval between its crossings, farthest first, with the
+  ///    surfaces in between (Roettger et al. §10). Cells with no crossing draw as without
+  ///    isosurfaces. The geometry shader's output grows with the number of isovalues, within the
+  ///    GL limit (GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS); beyond it the per-fragment method is
+  ///    used (see GetLastUsedIsosurfaceMethod).
+  ///  - ISO_PER_FRAGMENT: every fragment finds the crossings along its own ray segment and
+  ///    composites the surfaces there (no extra geometry; every fragment pays the search).
+  enum IsosurfaceMethods
+  {
+    ISO_MARCHING_TETRAHEDRA = 0,
+    ISO_PER_FRAGMENT = 1
+  };
+  vtkSetClampMacro(IsosurfaceMethod, int, ISO_MARCHING_TETRAHEDRA, ISO_PER_FRAGMENT);
+  vtkGetMacro(IsosurfaceMethod, int);
+  /// Method the last frame used for its isosurfaces, -1 when it drew none.
+  vtkGetMacro(LastUsedIsosurfaceMethod, int);
+  /// Flat shading uses each cell's own gradient as the normal (HAPT §3.4); smooth (default)
+  /// interpolates the smoothed point gradients (volume-weighted averages of the cells' gradients).
+  enum IsosurfaceShadings
+  {
+    ISO_FLAT = 0,
+    ISO_SMOOTH = 1
+  };
+  vtkSetClampMacro(IsosurfaceShading, int, ISO_FLAT, ISO_SMOOTH);
+  vtkGetMacro(IsosurfaceShading, int);
   ///@}
 
   /// Adaptive transfer-function sampling (Moreland §4.3): split each ray segment at the
@@ -181,6 +208,9 @@ protected:
   double IsosurfaceColor[3] = { 1.0, 1.0, 1.0 };
   bool IsosurfaceUseColorMap = true;
   bool IsosurfaceLighting = true;
+  int IsosurfaceMethod = ISO_MARCHING_TETRAHEDRA;
+  int IsosurfaceShading = ISO_SMOOTH;
+  int LastUsedIsosurfaceMethod = -1;
   int AdaptiveSampling = ADAPTIVE_OFF;
   bool LastUsedAdaptiveSampling = false;
   int LastNumberOfAdaptiveNodes = 0;

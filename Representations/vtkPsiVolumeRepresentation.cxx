@@ -124,6 +124,34 @@ void vtkPsiVolumeRepresentation::SetIsosurfaceUseColorMap(int on)
   }
 }
 
+void vtkPsiVolumeRepresentation::SetIsosurfaceShading(int shading)
+{
+  const bool lit = shading != 2;
+  const int mode =
+    shading == 1 ? vtkPsiVolumeMapper::ISO_FLAT : vtkPsiVolumeMapper::ISO_SMOOTH;
+  if (lit != this->PsiMapper->GetIsosurfaceLighting() ||
+    mode != this->PsiMapper->GetIsosurfaceShading())
+  {
+    this->PsiMapper->SetIsosurfaceLighting(lit);
+    this->PsiMapper->SetIsosurfaceShading(mode);
+    this->Modified();
+  }
+}
+
+void vtkPsiVolumeRepresentation::SetIsosurfaceMethod(int method)
+{
+  if (method != this->PsiMapper->GetIsosurfaceMethod())
+  {
+    this->PsiMapper->SetIsosurfaceMethod(method);
+    this->Modified();
+  }
+}
+
+int vtkPsiVolumeRepresentation::GetLastUsedIsosurfaceMethod()
+{
+  return this->PsiMapper->GetLastUsedIsosurfaceMethod();
+}
+
 void vtkPsiVolumeRepresentation::SetAdaptiveSampling(int mode)
 {
   if (mode != this->PsiMapper->GetAdaptiveSampling())

@@ -53,6 +53,10 @@ public:
   void SetIsosurfaceOpacity(double opacity);
   void SetIsosurfaceColor(double r, double g, double b);
   void SetIsosurfaceUseColorMap(int on);
+  /// 0: smooth, 1: flat (both lit by the view's lights), 2: unlit.
+  void SetIsosurfaceShading(int shading);
+  void SetIsosurfaceMethod(int method);
+  int GetLastUsedIsosurfaceMethod();
   void SetAdaptiveSampling(int mode);
   int GetAdaptiveSampling();
   ///@}

@@ -30,11 +30,15 @@ flat in vec4 scalarGrad;
 #endif
 
 #ifdef PSI_NEAR_CLIP
-flat in int clipped;
-flat in vec4 tetV0;
-flat in vec4 tetV1;
-flat in vec4 tetV2;
-flat in vec4 tetV3;
+flat in ivec4 clipTet; // point ids of a cell cut by the near plane, x = -1 otherwise
+uniform samplerBuffer points; // xyz: model coordinates (shifted), w: scalar
+uniform mat4 MCVCMatrix;
+
+vec4 clipVertex(int id)
+{
+  vec4 p = texelFetch(points, id);
+  return vec4((MCVCMatrix * vec4(p.xyz, 1.0)).xyz, p.w);
+}
 #endif
 
 vec4 transfer(float s)
@@ -52,32 +56,22 @@ vec2 psiCoord(vec2 tauD)
 
 //PSI::Integrator::Impl
 
-#if defined(PSI_ISO_COUNT) || defined(PSI_ADAPTIVE)
-// Segments split into pieces (issue 5), integrated and composited front to back in this
-// fragment: at transfer-function nodes (adaptive sampling, Moreland §4.3: color and attenuation
-// are linear on each piece) and at isovalue crossings, where the lit surface is composited at its
-// depth (Roettger et al. §10: the part in front, the surface, the part behind). An isovalue counts
-// on [front, back) of a segment, so that a crossing on a face shared by two cells is drawn once.
 #ifdef PSI_ISO_COUNT
-uniform float isoValues[PSI_ISO_COUNT]; // ascending
 uniform vec3 isoColors[PSI_ISO_COUNT];
 uniform float isoOpacity;
 uniform int isoLighting;
 uniform int lightCount;
 uniform vec3 lightDirVC[PSI_MAX_LIGHTS]; // direction the light travels, view coordinates
 uniform vec3 lightColor[PSI_MAX_LIGHTS]; // diffuse color * intensity
-flat in vec3 isoG0;
-flat in mat3 isoJ;
-flat in vec3 isoV0;
 
-// Premultiplied color of isosurface i at view point p seen along dir: two-sided diffuse lighting
-// with the renderer's lights (VTK's Phong without ambient and specular: ParaView's defaults).
-vec4 isoSurface(int i, vec3 p, vec3 dir)
+// Premultiplied color of isosurface i with normal n (any length), seen along dir: two-sided
+// diffuse lighting with the renderer's lights (VTK's Phong without ambient and specular:
+// ParaView's defaults).
+vec4 isoShade(int i, vec3 n, vec3 dir)
 {
   vec3 c = isoColors[i];
   if (isoLighting == 1)
   {
-    vec3 n = isoG0 + isoJ * (p - isoV0);
     float nn = dot(n, n);
     n = nn > 1e-37 ? n * inversesqrt(nn) : -dir;
     n = dot(n, dir) > 0.0 ? -n : n;
@@ -89,6 +83,53 @@ vec4 isoSurface(int i, vec3 p, vec3 dir)
     c *= lit;
   }
   return vec4(c * isoOpacity, isoOpacity);
+}
+#endif
+
+#ifdef PSI_ISO_TRIANGLES
+// Marching-tetrahedra isosurfaces from the geometry shader: a volume fragment integrates only
+// the part of its segment inside its piece's scalar interval [lo, hi); a surface fragment is the
+// lit surface (normal interpolated from the polygon's vertices).
+flat in vec3 piece;
+
+bool clipToPiece(inout float sf, inout float sb, inout float D)
+{
+  float ds = sb - sf;
+  if (ds == 0.0)
+  {
+    return sf >= piece.x && sf < piece.y;
+  }
+  float ta = clamp((piece.x - sf) / ds, 0.0, 1.0), tb = clamp((piece.y - sf) / ds, 0.0, 1.0);
+  float t0 = min(ta, tb), t1 = max(ta, tb);
+  if (!(t1 > t0))
+  {
+    return false;
+  }
+  float s0 = sf + t0 * ds, s1 = sf + t1 * ds;
+  sf = s0;
+  sb = s1;
+  D *= t1 - t0;
+  return true;
+}
+#endif
+
+#if defined(PSI_ISO_PER_FRAGMENT) || defined(PSI_ADAPTIVE)
+// Segments split into pieces (issue 5), integrated and composited front to back in this
+// fragment: at transfer-function nodes (adaptive sampling, Moreland §4.3: color and attenuation
+// are linear on each piece) and, for per-fragment isosurfaces, at isovalue crossings, where the
+// lit surface is composited at its depth (Roettger et al. §10: the part in front, the surface,
+// the part behind). An isovalue counts on [front, back) of a segment, so that a crossing on a
+// face shared by two cells is drawn once.
+#ifdef PSI_ISO_PER_FRAGMENT
+uniform float isoValues[PSI_ISO_COUNT]; // ascending
+flat in vec3 isoG0;
+flat in mat3 isoJ;
+flat in vec3 isoV0;
+
+// Isosurface i at view point p: the normal from the linear gradient field of the cell.
+vec4 isoSurface(int i, vec3 p, vec3 dir)
+{
+  return isoShade(i, isoG0 + isoJ * (p - isoV0), dir);
 }
 #define PSI_ISO_SPLITS PSI_ISO_COUNT
 #else
@@ -127,7 +168,7 @@ vec4 integrateSplit(float sf, float sb, float D, vec3 p0, vec3 dir)
     ni += nStep;
   }
 #endif
-#ifdef PSI_ISO_COUNT
+#ifdef PSI_ISO_PER_FRAGMENT
   int iStep = ds >= 0.0 ? 1 : -1;
   int ii = ds >= 0.0 ? 0 : PSI_ISO_COUNT - 1;
   while (ii >= 0 && ii < PSI_ISO_COUNT && dirS * (isoValues[ii] - sf) < 0.0)
@@ -146,7 +187,7 @@ vec4 integrateSplit(float sf, float sb, float D, vec3 p0, vec3 dir)
       kind = 1;
     }
 #endif
-#ifdef PSI_ISO_COUNT
+#ifdef PSI_ISO_PER_FRAGMENT
     if (ii >= 0 && ii < PSI_ISO_COUNT && dirS * (sb - isoValues[ii]) > 0.0 &&
       dirS * (next - isoValues[ii]) >= 0.0)
     {
@@ -167,7 +208,7 @@ vec4 integrateSplit(float sf, float sb, float D, vec3 p0, vec3 dir)
       ni += nStep;
     }
 #endif
-#ifdef PSI_ISO_COUNT
+#ifdef PSI_ISO_PER_FRAGMENT
     if (kind == 2)
     {
       splitAcc += (1.0 - splitAcc.a) * isoSurface(ii, p0 + (t * D) * dir, dir);
@@ -198,6 +239,8 @@ vec3 viewPointAt(float depth)
 bool clipSegment(out float sf, out float sb, out float D, out float frontDepth, out vec3 pFront,
   out vec3 rayDir)
 {
+  vec4 tetV0 = clipVertex(clipTet.x), tetV1 = clipVertex(clipTet.y);
+  vec4 tetV2 = clipVertex(clipTet.z), tetV3 = clipVertex(clipTet.w);
   vec3 V[4] = vec3[4](tetV0.xyz, tetV1.xyz, tetV2.xyz, tetV3.xyz);
   vec3 o = viewPointAt(0.0);
   vec3 dir = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : normalize(o);
@@ -265,6 +308,21 @@ void exactSegment(out float sf, out float sb, out float D)
 
 void main()
 {
+#ifdef PSI_ISO_TRIANGLES
+  if (piece.z >= 0.0)
+  {
+    // An isosurface fragment (hidden by opaque geometry through the depth test).
+    vec3 p = viewPointAt(gl_FragCoord.z);
+    vec3 dir = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : normalize(p);
+#ifdef PSI_EXACT_SEGMENTS
+    vec3 n = frontPoint.xyz;
+#else
+    vec3 n = segment;
+#endif
+    gl_FragData[0] = isoShade(int(piece.z + 0.5), n, dir);
+    return;
+  }
+#endif
   float sf, sb, D;
 #ifdef PSI_EXACT_SEGMENTS
   exactSegment(sf, sb, D);
@@ -275,7 +333,7 @@ void main()
 #endif
   float frontDepth = gl_FragCoord.z;
   vec3 pFront = vec3(0.0), rayDir = vec3(0.0, 0.0, -1.0);
-#ifdef PSI_ISO_COUNT
+#ifdef PSI_ISO_PER_FRAGMENT
 #ifdef PSI_EXACT_SEGMENTS
   pFront = frontPoint.xyz;
   rayDir = normalize(frontPoint.xyz);
@@ -285,7 +343,7 @@ void main()
 #endif
 #endif
 #ifdef PSI_NEAR_CLIP
-  if (clipped == 1 && !clipSegment(sf, sb, D, frontDepth, pFront, rayDir))
+  if (clipTet.x >= 0 && !clipSegment(sf, sb, D, frontDepth, pFront, rayDir))
   {
     discard;
   }
@@ -310,7 +368,13 @@ void main()
     }
   }
 #endif
-#if defined(PSI_ISO_COUNT) || defined(PSI_ADAPTIVE)
+#ifdef PSI_ISO_TRIANGLES
+  if (!clipToPiece(sf, sb, D))
+  {
+    discard;
+  }
+#endif
+#if defined(PSI_ISO_PER_FRAGMENT) || defined(PSI_ADAPTIVE)
   vec4 c = integrateSplit(sf, sb, max(D, 0.0), pFront, rayDir);
 #else
   vec4 c = integrateSegment(sf, sb, max(D, 0.0));

@@ -14,7 +14,10 @@
 // positions are interpolated back into 3D with perspective-correct weights (lambda_i / w_i).
 
 layout(points) in;
-layout(triangle_strip, max_vertices = 8) out;
+#ifndef PSI_GS_MAX_VERTICES
+#define PSI_GS_MAX_VERTICES 8 // the largest decomposition (class 2: a strip of 5 and one of 3)
+#endif
+layout(triangle_strip, max_vertices = PSI_GS_MAX_VERTICES) out;
 
 in vec4 vsP0[];
 in vec4 vsP1[];
@@ -55,29 +58,36 @@ noperspective out vec3 segment; // front scalar, back scalar, thickness
 smooth out vec4 frontPoint; // view-space xyz, w = scalar
 flat out vec4 backPlane;    // n . x = w
 flat out vec4 scalarGrad;   // xyz: gradient of the scalar, w: bound on the thickness
-vec3 gradient;
 #endif
+vec3 gradient; // of the scalar, view coordinates (exact segments and isosurfaces)
 
 #ifdef PSI_NEAR_CLIP
 // Tetrahedra that cross the near plane cannot be projected: they are drawn as a screen quad
 // covering their near-clipped projection, and the fragment shader intersects each ray with the
-// tetrahedron exactly (clipped = 1, the four vertices passed flat).
+// tetrahedron exactly. clipTet: the point ids (fetched by the fragment shader), x = -1 when not
+// clipped; one output slot instead of four vertices keeps the geometry-shader output small.
 uniform float nearZ; // view-space z of the near plane (negative)
-flat out int clipped;
-flat out vec4 tetV0;
-flat out vec4 tetV1;
-flat out vec4 tetV2;
-flat out vec4 tetV3;
+flat out ivec4 clipTet;
+#endif
+
+#if defined(PSI_ISO_COUNT) || defined(PSI_NEAR_CLIP)
+flat in uvec4 vsIds[];
 #endif
 
 #ifdef PSI_ISO_COUNT
-// Isosurfaces (issue 5): the scalar is linear in the tetrahedron, so its isosurface there is the
-// planar marching-tetrahedra polygon; the fragment shader meets it exactly along each ray. For
-// smooth shading the normal is the gradient field interpolated linearly from the smoothed point
-// gradients: g(x) = isoG0 + isoJ (x - isoV0) in view coordinates, passed flat.
-flat in uvec4 vsIds[];
+// Isosurfaces (issue 5). The scalar is linear in the tetrahedron, so its isosurface there is the
+// planar marching-tetrahedra polygon. Smooth shading uses the gradient field interpolated linearly
+// from the smoothed point gradients (view coordinates); flat shading the cell's own gradient.
+#ifdef PSI_ISO_SMOOTH
 uniform samplerBuffer pointGradients; // model-space (shifted) gradient per point
 uniform mat3 normalMatrix;            // model -> view for gradients (inverse transpose)
+#endif
+vec3 pointNormal[4];
+#endif
+
+#ifdef PSI_ISO_PER_FRAGMENT
+// Per-fragment isosurfaces (HAPT §3.4's "per-pixel" strategy): the fragment shader meets the
+// surface exactly along each ray; the normal field g(x) = isoG0 + isoJ (x - isoV0) is passed flat.
 flat out vec3 isoG0;
 flat out mat3 isoJ;
 flat out vec3 isoV0;
@@ -85,6 +95,19 @@ vec3 tetIsoG0;
 mat3 tetIsoJ;
 #endif
 
+#ifdef PSI_ISO_TRIANGLES
+// On-the-fly marching tetrahedra (HAPT §3.4): each isosurface crossing the cell is emitted as one
+// or two triangles, in visibility order with the volume: the cell is drawn once per scalar
+// interval between its crossings ("piece"), the farthest first, each piece's fragments
+// integrating only the part of their ray segment inside that interval, with the surface that
+// bounds the piece on the eye's side drawn right after it (Roettger et al. §10: behind, surface,
+// in front). Primitives emitted by one invocation are blended in emission order.
+// Surface vertices carry their normal in frontPoint.xyz (perspective) or segment (parallel).
+uniform float isoValues[PSI_ISO_COUNT]; // ascending
+uniform int parallelProjection;
+flat out vec3 piece; // volume: [x, y) scalar interval, z = -1; isosurface: z = its index
+vec3 currentPiece = vec3(-3.0e38, 3.0e38, -1.0);
+#endif
 vec4 clipP[4];
 vec3 viewP[4];
 float scalar[4];
@@ -154,17 +177,16 @@ void setEdge(int a, int b)
 
 void setFlat(int isClipped)
 {
-#ifdef PSI_ISO_COUNT
+#ifdef PSI_ISO_PER_FRAGMENT
   isoG0 = tetIsoG0;
   isoJ = tetIsoJ;
   isoV0 = viewP[0];
 #endif
+#ifdef PSI_ISO_TRIANGLES
+  piece = currentPiece;
+#endif
 #ifdef PSI_NEAR_CLIP
-  clipped = isClipped;
-  tetV0 = vec4(viewP[0], scalar[0]);
-  tetV1 = vec4(viewP[1], scalar[1]);
-  tetV2 = vec4(viewP[2], scalar[2]);
-  tetV3 = vec4(viewP[3], scalar[3]);
+  clipTet = isClipped == 1 ? ivec4(vsIds[0]) : ivec4(-1);
 #endif
 }
 
@@ -259,89 +281,22 @@ void emitClipped()
 }
 #endif
 
-void main()
+// Projection class and the four vertices in the class's order, from the truth table.
+int cls, p0, p1, p2, p3;
+
+// seed 003 Fig. 3: classifies the projection and computes the thick vertex's segment.
+void classify()
 {
-  vec4 raw[4] = vec4[4](vsP0[0], vsP1[0], vsP2[0], vsP3[0]);
-#ifdef PSI_EARLY_DISCARD
-  {
-    float smin = min(min(vsP0[0].w, vsP1[0].w), min(vsP2[0].w, vsP3[0].w));
-    float smax = max(max(vsP0[0].w, vsP1[0].w), max(vsP2[0].w, vsP3[0].w));
-    if (transparentRange(smin, smax))
-    {
-      return;
-    }
-  }
-#endif
-  int inFront = 0;
-  for (int i = 0; i < 4; ++i)
-  {
-    viewP[i] = raw[i].xyz;
-    scalar[i] = raw[i].w;
-#ifdef PSI_NEAR_CLIP
-    inFront += viewP[i].z > nearZ ? 1 : 0;
-#endif
-  }
-#ifdef PSI_ISO_COUNT
-  {
-    uvec4 ids = vsIds[0];
-    vec3 g0 = normalMatrix * texelFetch(pointGradients, int(ids.x)).xyz;
-    vec3 g1 = normalMatrix * texelFetch(pointGradients, int(ids.y)).xyz;
-    vec3 g2 = normalMatrix * texelFetch(pointGradients, int(ids.z)).xyz;
-    vec3 g3 = normalMatrix * texelFetch(pointGradients, int(ids.w)).xyz;
-    mat3 E = mat3(viewP[1] - viewP[0], viewP[2] - viewP[0], viewP[3] - viewP[0]);
-    float det = determinant(E);
-    float scale = max(max(dot(E[0], E[0]), dot(E[1], E[1])), dot(E[2], E[2]));
-    tetIsoG0 = g0;
-    // J E = [g1-g0 g2-g0 g3-g0]; a degenerate cell keeps the vertex gradient (flat shading).
-    tetIsoJ = abs(det) > 1e-7 * scale * sqrt(scale) ?
-      mat3(g1 - g0, g2 - g0, g3 - g0) * inverse(E) : mat3(0.0);
-  }
-#endif
-#ifdef PSI_NEAR_CLIP
-  if (inFront == 4)
-  {
-    return; // wholly between the eye and the near plane (or behind the eye)
-  }
-  if (inFront > 0)
-  {
-    emitClipped();
-    return;
-  }
-#endif
-  for (int i = 0; i < 4; ++i)
-  {
-    clipP[i] = VCDCMatrix * vec4(viewP[i], 1.0);
-    if (clipP[i].w <= 0.0)
-    {
-      return; // behind the eye; only reachable without PSI_NEAR_CLIP, which the mapper prevents
-    }
-    ndc[i] = clipP[i].xy / clipP[i].w;
-  }
-#ifdef PSI_EXACT_SEGMENTS
-  {
-    // s(x) = s0 + g . (x - V0) with g from the three edge equations (Cramer's rule); a
-    // zero-volume tetrahedron has no interior to integrate and is skipped.
-    vec3 e1 = viewP[1] - viewP[0], e2 = viewP[2] - viewP[0], e3 = viewP[3] - viewP[0];
-    vec3 c23 = cross(e2, e3), c31 = cross(e3, e1), c12 = cross(e1, e2);
-    float det = dot(e1, c23);
-    float scale = max(max(dot(e1, e1), dot(e2, e2)), dot(e3, e3));
-    if (abs(det) <= 1e-7 * scale * sqrt(scale))
-    {
-      return;
-    }
-    gradient = ((scalar[1] - scalar[0]) * c23 + (scalar[2] - scalar[0]) * c31 +
-                 (scalar[3] - scalar[0]) * c12) / det;
-  }
-#endif
-  // seed 003 Fig. 3
   int t1 = int(sign(cross2(ndc[1] - ndc[0], ndc[2] - ndc[0]))) + 1;
   int t2 = int(sign(cross2(ndc[1] - ndc[0], ndc[3] - ndc[0]))) + 1;
   int t3 = int(sign(cross2(ndc[2] - ndc[0], ndc[3] - ndc[0]))) + 1;
   int t4 = int(sign(cross2(ndc[1] - ndc[2], ndc[1] - ndc[3]))) + 1;
   int entry = classTable[27 * t1 + 9 * t2 + 3 * t3 + t4];
-  int cls = entry & 15;
-  int p0 = (entry >> 4) & 3, p1 = (entry >> 6) & 3, p2 = (entry >> 8) & 3, p3 = (entry >> 10) & 3;
-
+  cls = entry & 15;
+  p0 = (entry >> 4) & 3;
+  p1 = (entry >> 6) & 3;
+  p2 = (entry >> 8) & 3;
+  p3 = (entry >> 10) & 3;
   if (cls == 1)
   {
     // Ray through p3 meets face p0 p1 p2: screen barycentrics, made perspective-correct.
@@ -353,9 +308,6 @@ void main()
     vec3 h = l.x * viewP[p0] + l.y * viewP[p1] + l.z * viewP[p2];
     float sh = l.x * scalar[p0] + l.y * scalar[p1] + l.z * scalar[p2];
     setThick(viewP[p3], scalar[p3], h, sh);
-    emitThin(p0); emitThin(p1); setEdge(p0, p1); emitThick();
-    setEdge(p1, p2); emitThin(p2); setEdge(p2, p0); emitThin(p0);
-    EndPrimitive();
   }
   else if (cls == 2)
   {
@@ -369,6 +321,31 @@ void main()
     alongEdge(p0, p1, clamp(t, 0.0, 1.0), pa, sa);
     alongEdge(p2, p3, clamp(u, 0.0, 1.0), pb, sb);
     setThick(pa, sa, pb, sb);
+  }
+  else if (cls == 3)
+  {
+    vec3 h;
+    float sh;
+    alongEdge(p0, p1, edgeParam(p0, p1, p3), h, sh);
+    setThick(viewP[p3], scalar[p3], h, sh);
+  }
+  else if (cls == 4)
+  {
+    setThick(viewP[p2], scalar[p2], viewP[p3], scalar[p3]);
+  }
+}
+
+// Emits the Shirley-Tuchman decomposition of the classified projection.
+void emitProjection()
+{
+  if (cls == 1)
+  {
+    emitThin(p0); emitThin(p1); setEdge(p0, p1); emitThick();
+    setEdge(p1, p2); emitThin(p2); setEdge(p2, p0); emitThin(p0);
+    EndPrimitive();
+  }
+  else if (cls == 2)
+  {
     // silhouette quad p0 p2 p1 p3 around the crossing
     emitThin(p0); emitThin(p2); setEdge(p0, p2); emitThick();
     setEdge(p2, p1); emitThin(p1); setEdge(p1, p3); emitThin(p3);
@@ -378,18 +355,240 @@ void main()
   }
   else if (cls == 3)
   {
-    vec3 h;
-    float sh;
-    alongEdge(p0, p1, edgeParam(p0, p1, p3), h, sh);
-    setThick(viewP[p3], scalar[p3], h, sh);
     emitThin(p1); emitThin(p2); setEdge(p1, p2); emitThick();
     setEdge(p2, p0); emitThin(p0);
     EndPrimitive();
   }
   else if (cls == 4)
   {
-    setThick(viewP[p2], scalar[p2], viewP[p3], scalar[p3]);
     emitThin(p0); emitThin(p1); setEdge(p0, p1); emitThick();
     EndPrimitive();
   }
+}
+
+// The cell's volume: projected, or as a screen box when the near plane cuts it.
+void emitVolume(bool nearClipped)
+{
+#ifdef PSI_NEAR_CLIP
+  if (nearClipped)
+  {
+    emitClipped();
+    return;
+  }
+#endif
+  emitProjection();
+}
+
+#ifdef PSI_ISO_TRIANGLES
+// One vertex of an isosurface polygon: where isovalue c crosses edge a-b.
+void emitIsoVertex(int a, int b, float c)
+{
+  float t = clamp((c - scalar[a]) / (scalar[b] - scalar[a]), 0.0, 1.0);
+  vec3 p = mix(viewP[a], viewP[b], t);
+  vec3 n = mix(pointNormal[a], pointNormal[b], t);
+  setFlat(0);
+#ifdef PSI_EXACT_SEGMENTS
+  frontPoint = vec4(n, 0.0);
+#else
+  segment = n;
+#endif
+  gl_Position = VCDCMatrix * vec4(p, 1.0);
+  EmitVertex();
+}
+
+// Marching tetrahedra for isovalue i: a vertex is above when s >= c, so a surface exactly on a
+// face shared by two cells belongs to one of them only. One vertex apart: a triangle on its three
+// edges; two and two: a quad, as a strip of two triangles.
+void emitSurface(int i)
+{
+  float c = isoValues[i];
+  currentPiece = vec3(0.0, 0.0, float(i));
+  // GLSL 1.50: no bitCount / findLSB; vertices listed above first, then below.
+  int order[4];
+  int count = 0;
+  for (int k = 0; k < 4; ++k)
+  {
+    if (scalar[k] >= c)
+    {
+      order[count++] = k;
+    }
+  }
+  int n = count;
+  for (int k = 0; k < 4; ++k)
+  {
+    if (scalar[k] < c)
+    {
+      order[n++] = k;
+    }
+  }
+  if (count == 0 || count == 4)
+  {
+    return;
+  }
+  if (count == 2)
+  {
+    emitIsoVertex(order[0], order[2], c); emitIsoVertex(order[0], order[3], c);
+    emitIsoVertex(order[1], order[2], c); emitIsoVertex(order[1], order[3], c);
+  }
+  else
+  {
+    int lone = count == 1 ? order[0] : order[3];
+    for (int k = 0; k < 4; ++k)
+    {
+      if (k != lone)
+      {
+        emitIsoVertex(lone, k, c);
+      }
+    }
+  }
+  EndPrimitive();
+}
+
+// Draws piece [lo, hi) of the cell's volume (skipped when early discard finds it transparent).
+void emitPiece(float lo, float hi, float smin, float smax, bool nearClipped)
+{
+#ifdef PSI_EARLY_DISCARD
+  if (transparentRange(max(lo, smin), min(hi, smax)))
+  {
+    return;
+  }
+#endif
+  currentPiece = vec3(lo, hi, -1.0);
+  emitVolume(nearClipped);
+}
+
+// Along a ray from the eye the (linear) scalar is monotone, starting from its extrapolated value
+// at the eye, sEye: the level sets crossed are the ones on one side of sEye, nearest first. So,
+// back to front: the pieces above sEye from the highest down, each followed by the surface at
+// its lower end; the pieces below sEye from the lowest up, each followed by the surface at its
+// upper end (no ray sees both sides); last the piece containing sEye. In parallel projection
+// sEye is -inf or +inf, by the sign of the scalar's change along the view direction (0, 0, -1).
+void emitPiecesAndSurfaces(float smin, float smax, bool nearClipped)
+{
+  const float big = 3.0e38;
+  int first = 0;
+  while (first < PSI_ISO_COUNT && isoValues[first] <= smin)
+  {
+    ++first;
+  }
+  int last = first - 1;
+  while (last + 1 < PSI_ISO_COUNT && isoValues[last + 1] <= smax)
+  {
+    ++last;
+  }
+  if (last < first)
+  {
+    emitPiece(-big, big, smin, smax, nearClipped);
+    return;
+  }
+  float sEye = parallelProjection == 1 ? (gradient.z < 0.0 ? -big : big)
+                                       : scalar[0] - dot(gradient, viewP[0]);
+  // piece j lies between isoValues[j - 1] and isoValues[j], j = first .. last + 1
+  int e = first;
+  while (e <= last && isoValues[e] <= sEye)
+  {
+    ++e;
+  }
+  for (int j = last + 1; j > e; --j)
+  {
+    emitPiece(isoValues[j - 1], j == last + 1 ? big : isoValues[j], smin, smax, nearClipped);
+    emitSurface(j - 1);
+  }
+  for (int j = first; j < e; ++j)
+  {
+    emitPiece(j == first ? -big : isoValues[j - 1], isoValues[j], smin, smax, nearClipped);
+    emitSurface(j);
+  }
+  emitPiece(e == first ? -big : isoValues[e - 1], e == last + 1 ? big : isoValues[e], smin, smax,
+    nearClipped);
+}
+#endif
+
+void main()
+{
+  vec4 raw[4] = vec4[4](vsP0[0], vsP1[0], vsP2[0], vsP3[0]);
+  float smin = min(min(raw[0].w, raw[1].w), min(raw[2].w, raw[3].w));
+  float smax = max(max(raw[0].w, raw[1].w), max(raw[2].w, raw[3].w));
+#if defined(PSI_EARLY_DISCARD) && !defined(PSI_ISO_TRIANGLES)
+  if (transparentRange(smin, smax))
+  {
+    return;
+  }
+#endif
+  int inFront = 0;
+  for (int i = 0; i < 4; ++i)
+  {
+    viewP[i] = raw[i].xyz;
+    scalar[i] = raw[i].w;
+#ifdef PSI_NEAR_CLIP
+    inFront += viewP[i].z > nearZ ? 1 : 0;
+#endif
+  }
+#if defined(PSI_EXACT_SEGMENTS) || defined(PSI_ISO_COUNT)
+  {
+    // s(x) = s0 + g . (x - V0) with g from the three edge equations (Cramer's rule).
+    vec3 e1 = viewP[1] - viewP[0], e2 = viewP[2] - viewP[0], e3 = viewP[3] - viewP[0];
+    vec3 c23 = cross(e2, e3), c31 = cross(e3, e1), c12 = cross(e1, e2);
+    float det = dot(e1, c23);
+    float scale = max(max(dot(e1, e1), dot(e2, e2)), dot(e3, e3));
+    bool degenerate = abs(det) <= 1e-7 * scale * sqrt(scale);
+#if defined(PSI_EXACT_SEGMENTS) || defined(PSI_ISO_TRIANGLES)
+    if (degenerate)
+    {
+      return; // a zero-volume tetrahedron has no interior to integrate or to cut a surface from
+    }
+#endif
+    gradient = degenerate ? vec3(0.0)
+                          : ((scalar[1] - scalar[0]) * c23 + (scalar[2] - scalar[0]) * c31 +
+                              (scalar[3] - scalar[0]) * c12) / det;
+  }
+#endif
+#ifdef PSI_ISO_COUNT
+  for (int k = 0; k < 4; ++k)
+  {
+#ifdef PSI_ISO_SMOOTH
+    pointNormal[k] = normalMatrix * texelFetch(pointGradients, int(vsIds[0][k])).xyz;
+#else
+    pointNormal[k] = gradient; // flat shading: the cell's gradient
+#endif
+  }
+#endif
+#ifdef PSI_ISO_PER_FRAGMENT
+  {
+    mat3 E = mat3(viewP[1] - viewP[0], viewP[2] - viewP[0], viewP[3] - viewP[0]);
+    float det = determinant(E);
+    float scale = max(max(dot(E[0], E[0]), dot(E[1], E[1])), dot(E[2], E[2]));
+    tetIsoG0 = pointNormal[0];
+    // J E = [n1-n0 n2-n0 n3-n0]; a degenerate cell keeps the vertex gradient (flat shading).
+    tetIsoJ = abs(det) > 1e-7 * scale * sqrt(scale) ?
+      mat3(pointNormal[1] - pointNormal[0], pointNormal[2] - pointNormal[0],
+        pointNormal[3] - pointNormal[0]) * inverse(E) : mat3(0.0);
+  }
+#endif
+  bool nearClipped = false;
+#ifdef PSI_NEAR_CLIP
+  if (inFront == 4)
+  {
+    return; // wholly between the eye and the near plane (or behind the eye)
+  }
+  nearClipped = inFront > 0;
+#endif
+  if (!nearClipped)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      clipP[i] = VCDCMatrix * vec4(viewP[i], 1.0);
+      if (clipP[i].w <= 0.0)
+      {
+        return; // behind the eye; only reachable without PSI_NEAR_CLIP, which the mapper prevents
+      }
+      ndc[i] = clipP[i].xy / clipP[i].w;
+    }
+    classify();
+  }
+#ifdef PSI_ISO_TRIANGLES
+  emitPiecesAndSurfaces(smin, smax, nearClipped);
+#else
+  emitVolume(nearClipped);
+#endif
 }

@@ -12,9 +12,9 @@ out vec4 vsP0; // view-space xyz, w = scalar
 out vec4 vsP1;
 out vec4 vsP2;
 out vec4 vsP3;
-#ifdef PSI_ISO_COUNT
-// Isosurface variants: the point ids go on to the geometry shader, which fetches the smoothed
-// point gradients (isosurface normals).
+#if defined(PSI_ISO_COUNT) || defined(PSI_NEAR_CLIP)
+// Isosurface and near-plane variants: the point ids go on to the geometry shader (smoothed point
+// gradients as isosurface normals; the fragment shader's exact clipping of a cut cell).
 flat out uvec4 vsIds;
 #endif
 
@@ -30,7 +30,7 @@ void main()
   vsP1 = viewPoint(tetPointIds.y);
   vsP2 = viewPoint(tetPointIds.z);
   vsP3 = viewPoint(tetPointIds.w);
-#ifdef PSI_ISO_COUNT
+#if defined(PSI_ISO_COUNT) || defined(PSI_NEAR_CLIP)
   vsIds = tetPointIds;
 #endif
 }

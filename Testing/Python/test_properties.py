@@ -42,6 +42,8 @@ cases = [
     ("EarlyDiscard", [0, 1], None),
     ("AdaptiveSampling", ["On", "Auto", "Off"], None),
     ("IsosurfaceValues", [[mid], [lo + 0.3 * (hi - lo), mid, lo + 0.7 * (hi - lo)], []], None),
+    ("IsosurfaceShading", ["Flat", "Unlit", "Smooth"], None),
+    ("IsosurfaceMethod", ["Per Fragment", "Marching Tetrahedra"], None),
 ]
 for name, values, _ in cases:
     for v in values:
@@ -65,6 +67,24 @@ green = render()
 t.check(green[:, :, 1].mean() > with_iso[:, :, 1].mean() + 1.0,
         "a solid green isosurface color shows (green %.1f vs %.1f)"
         % (green[:, :, 1].mean(), with_iso[:, :, 1].mean()))
+d.IsosurfaceShading = "Unlit"
+unlit = render()
+t.check(psi_testing.mean_error(unlit, green) > 0.002, "IsosurfaceShading Unlit changes the image")
+d.IsosurfaceShading = "Flat"
+flat = render()
+t.check(psi_testing.mean_error(flat, green) > 0.0005, "IsosurfaceShading Flat changes the image")
+d.IsosurfaceShading = "Smooth"
+d.IsosurfaceMethod = "Per Fragment"
+per_fragment = render()
+d.UpdatePropertyInformation()
+t.check(d.GetProperty("LastUsedIsosurfaceMethod").GetElement(0) == 1, "per-fragment method used")
+d.IsosurfaceMethod = "Marching Tetrahedra"
+render()
+d.UpdatePropertyInformation()
+t.check(d.GetProperty("LastUsedIsosurfaceMethod").GetElement(0) == 0, "marching tetrahedra used")
+t.check(psi_testing.mean_error(per_fragment, green) < 0.5 / 255,
+        "IsosurfaceMethod: both methods draw the same image (%.4f)"
+        % psi_testing.mean_error(per_fragment, green))
 d.IsosurfaceOpacity = 0.3
 faint = render()
 t.check(psi_testing.mean_error(faint, green) > 0.002, "isosurface opacity changes the image")
