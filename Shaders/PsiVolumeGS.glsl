@@ -281,6 +281,21 @@ void emitClipped()
 }
 #endif
 
+#ifdef PSI_ISO_COUNT
+// Isosurface normals at the four vertices.
+void fetchNormals()
+{
+  for (int k = 0; k < 4; ++k)
+  {
+#ifdef PSI_ISO_SMOOTH
+    pointNormal[k] = normalMatrix * texelFetch(pointGradients, int(vsIds[0][k])).xyz;
+#else
+    pointNormal[k] = gradient; // flat shading: the cell's gradient
+#endif
+  }
+}
+#endif
+
 // Projection class and the four vertices in the class's order, from the truth table.
 int cls, p0, p1, p2, p3;
 
@@ -481,6 +496,7 @@ void emitPiecesAndSurfaces(float smin, float smax, bool nearClipped)
     emitPiece(-big, big, smin, smax, nearClipped);
     return;
   }
+  fetchNormals(); // only cells with a surface pay for the normals
   float sEye = parallelProjection == 1 ? (gradient.z < 0.0 ? -big : big)
                                        : scalar[0] - dot(gradient, viewP[0]);
   // piece j lies between isoValues[j - 1] and isoValues[j], j = first .. last + 1
@@ -543,15 +559,8 @@ void main()
                               (scalar[3] - scalar[0]) * c12) / det;
   }
 #endif
-#ifdef PSI_ISO_COUNT
-  for (int k = 0; k < 4; ++k)
-  {
-#ifdef PSI_ISO_SMOOTH
-    pointNormal[k] = normalMatrix * texelFetch(pointGradients, int(vsIds[0][k])).xyz;
-#else
-    pointNormal[k] = gradient; // flat shading: the cell's gradient
-#endif
-  }
+#ifdef PSI_ISO_PER_FRAGMENT
+  fetchNormals();
 #endif
 #ifdef PSI_ISO_PER_FRAGMENT
   {

@@ -6,4 +6,4 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/setup-deps.sh"
 bash "$root/scripts/build.sh" >/dev/null
-xvfb-run -a -s "-screen 0 1280x1024x24" pvpython "$root/scripts/psi_render.py" "$@"
+xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" pvpython "$root/scripts/psi_render.py" "$@"
