@@ -993,9 +993,9 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     {
       // Geometry-shader output: the 8-vertex decomposition once per piece (up to niso + 1) and
       // a 4-vertex strip per surface, each vertex with its outputs (PsiVolumeGS.glsl):
-      // gl_Position 4, frontPoint + backPlane + scalarGrad 12 or segment 3, piece 3, clipTet 4.
+      // gl_Position 4, frontPoint + backPlane + scalarGrad 12 or segment 3, piece 1, clipTet 4.
       const int vertices = 8 * (niso + 1) + 4 * niso;
-      const int components = 4 + (!parallel && this->ExactPerspectiveSegments ? 12 : 3) + 3 +
+      const int components = 4 + (!parallel && this->ExactPerspectiveSegments ? 12 : 3) + 1 +
         (nearClip ? 4 : 0);
       GLint maxVertices = 0, maxComponents = 0;
       glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &maxVertices);

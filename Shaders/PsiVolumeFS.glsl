@@ -90,16 +90,24 @@ vec4 isoShade(int i, vec3 n, vec3 dir)
 // Marching-tetrahedra isosurfaces from the geometry shader: a volume fragment integrates only
 // the part of its segment inside its piece's scalar interval [lo, hi); a surface fragment is the
 // lit surface (normal interpolated from the polygon's vertices).
-flat in vec3 piece;
+flat in float piece; // see PsiVolumeGS.glsl: >= 0 a volume piece, < 0 a surface
+uniform float isoValues[PSI_ISO_COUNT]; // ascending
 
 bool clipToPiece(inout float sf, inout float sb, inout float D)
 {
+  int j = int(piece + 0.5);
+  if (j > PSI_ISO_COUNT)
+  {
+    return true; // the whole cell
+  }
+  const float big = 3.0e38;
+  vec2 range = vec2(j > 0 ? isoValues[j - 1] : -big, j < PSI_ISO_COUNT ? isoValues[j] : big);
   float ds = sb - sf;
   if (ds == 0.0)
   {
-    return sf >= piece.x && sf < piece.y;
+    return sf >= range.x && sf < range.y;
   }
-  float ta = clamp((piece.x - sf) / ds, 0.0, 1.0), tb = clamp((piece.y - sf) / ds, 0.0, 1.0);
+  float ta = clamp((range.x - sf) / ds, 0.0, 1.0), tb = clamp((range.y - sf) / ds, 0.0, 1.0);
   float t0 = min(ta, tb), t1 = max(ta, tb);
   if (!(t1 > t0))
   {
@@ -309,7 +317,7 @@ void exactSegment(out float sf, out float sb, out float D)
 void main()
 {
 #ifdef PSI_ISO_TRIANGLES
-  if (piece.z >= 0.0)
+  if (piece < 0.0)
   {
     // An isosurface fragment (hidden by opaque geometry through the depth test).
     vec3 p = viewPointAt(gl_FragCoord.z);
@@ -319,7 +327,7 @@ void main()
 #else
     vec3 n = segment;
 #endif
-    gl_FragData[0] = isoShade(int(piece.z + 0.5), n, dir);
+    gl_FragData[0] = isoShade(int(-piece - 0.5), n, dir);
     return;
   }
 #endif

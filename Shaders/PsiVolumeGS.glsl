@@ -105,8 +105,11 @@ mat3 tetIsoJ;
 // Surface vertices carry their normal in frontPoint.xyz (perspective) or segment (parallel).
 uniform float isoValues[PSI_ISO_COUNT]; // ascending
 uniform int parallelProjection;
-flat out vec3 piece; // volume: [x, y) scalar interval, z = -1; isosurface: z = its index
-vec3 currentPiece = vec3(-3.0e38, 3.0e38, -1.0);
+// piece (one component, to fit more isovalues in the geometry shader's output): j >= 0, the
+// volume between isoValues[j - 1] and isoValues[j] (j = 0 .. PSI_ISO_COUNT, open-ended at the
+// ends), j = PSI_ISO_COUNT + 1 the whole cell; -(i + 1): the surface of isovalue i.
+flat out float piece;
+float currentPiece = float(PSI_ISO_COUNT + 1);
 #endif
 vec4 clipP[4];
 vec3 viewP[4];
@@ -417,7 +420,7 @@ void emitIsoVertex(int a, int b, float c)
 void emitSurface(int i)
 {
   float c = isoValues[i];
-  currentPiece = vec3(0.0, 0.0, float(i));
+  currentPiece = -float(i + 1);
   // GLSL 1.50: no bitCount / findLSB; vertices listed above first, then below.
   int order[4];
   int count = 0;
@@ -459,16 +462,18 @@ void emitSurface(int i)
   EndPrimitive();
 }
 
-// Draws piece [lo, hi) of the cell's volume (skipped when early discard finds it transparent).
-void emitPiece(float lo, float hi, float smin, float smax, bool nearClipped)
+// Draws piece j of the cell's volume (skipped when early discard finds it transparent).
+void emitPiece(int j, float smin, float smax, bool nearClipped)
 {
 #ifdef PSI_EARLY_DISCARD
-  if (transparentRange(max(lo, smin), min(hi, smax)))
+  float lo = j > 0 && j <= PSI_ISO_COUNT ? max(isoValues[j - 1], smin) : smin;
+  float hi = j < PSI_ISO_COUNT ? min(isoValues[j], smax) : smax;
+  if (transparentRange(lo, hi))
   {
     return;
   }
 #endif
-  currentPiece = vec3(lo, hi, -1.0);
+  currentPiece = float(j);
   emitVolume(nearClipped);
 }
 
@@ -493,13 +498,13 @@ void emitPiecesAndSurfaces(float smin, float smax, bool nearClipped)
   }
   if (last < first)
   {
-    emitPiece(-big, big, smin, smax, nearClipped);
+    emitPiece(PSI_ISO_COUNT + 1, smin, smax, nearClipped); // no crossing: the whole cell
     return;
   }
   fetchNormals(); // only cells with a surface pay for the normals
   float sEye = parallelProjection == 1 ? (gradient.z < 0.0 ? -big : big)
                                        : scalar[0] - dot(gradient, viewP[0]);
-  // piece j lies between isoValues[j - 1] and isoValues[j], j = first .. last + 1
+  // piece j lies between isoValues[j - 1] and isoValues[j]; this cell has pieces first..last+1
   int e = first;
   while (e <= last && isoValues[e] <= sEye)
   {
@@ -507,16 +512,15 @@ void emitPiecesAndSurfaces(float smin, float smax, bool nearClipped)
   }
   for (int j = last + 1; j > e; --j)
   {
-    emitPiece(isoValues[j - 1], j == last + 1 ? big : isoValues[j], smin, smax, nearClipped);
+    emitPiece(j, smin, smax, nearClipped);
     emitSurface(j - 1);
   }
   for (int j = first; j < e; ++j)
   {
-    emitPiece(j == first ? -big : isoValues[j - 1], isoValues[j], smin, smax, nearClipped);
+    emitPiece(j, smin, smax, nearClipped);
     emitSurface(j);
   }
-  emitPiece(e == first ? -big : isoValues[e - 1], e == last + 1 ? big : isoValues[e], smin, smax,
-    nearClipped);
+  emitPiece(e, smin, smax, nearClipped);
 }
 #endif
 
