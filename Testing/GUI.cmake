@@ -1,32 +1,96 @@
 # XML-driven GUI regression tests (issue 6): pqevents scripts (the format of Tools > Record Test)
 # replayed in the real `paraview` client, with image baselines under Testing/Data/Baseline/.
 # Needs an X server: run ctest under xvfb-run, as for the other GL tests.
+#
+# This file is used twice:
+#  - included from Testing/CMakeLists.txt, it adds one CTest test per script;
+#  - run as `cmake -P GUI.cmake -D...` (CMAKE_SCRIPT_MODE_FILE set), it is the test driver: it
+#    empties the test directory, runs the client, prints its output and fails when the client
+#    failed or when fewer strict image checks passed than the script calls (a Python error in the
+#    shell is otherwise silent).
+#
+# Intermediate image checks in ParaView 5.11 (pqXMLEventSource): a <pqcompareview object="VIEW"
+# baseline="..." width= height= threshold= /> element captures the view at width x height and
+# compares it with vtkTesting. A failure only logs "ERROR: The following event FAILED !!! Yet will
+# continue with the rest of the test." and the client still exits 0, hence the
+# FAIL_REGULAR_EXPRESSION below. The baseline path takes $PARAVIEW_TEST_BASELINE_DIR
+# (--baseline-directory), the test image is written to --test-directory, which must exist.
+# vtkTesting forgives per-channel differences below 105, so the scripts also run the strict check
+# of XML/PsiGUICheck.py through the Python shell (see that file).
+
+if (CMAKE_SCRIPT_MODE_FILE)
+  # --- driver -------------------------------------------------------------------------------
+  file(REMOVE_RECURSE "${TEST_DIR}")
+  file(MAKE_DIRECTORY "${TEST_DIR}")
+  file(READ "${SCRIPT}" _script)
+  # the strict checks the script calls: <pqevent ... arguments="psi['check'](...)" />
+  string(REGEX MATCHALL "arguments=\"psi\\['check'\\]" _calls "${_script}")
+  list(LENGTH _calls _expected)
+  execute_process(
+    COMMAND "${PARAVIEW}" --dr
+            "--plugin-search-paths=${PLUGIN_DIR}"
+            --plugins=PsiVolume
+            "--test-script=${SCRIPT}"
+            "--test-baseline=${BASELINE}"
+            --test-threshold=5
+            "--test-directory=${TEST_DIR}"
+            "--baseline-directory=${BASELINE_DIR}"
+            "--data-directory=${DATA_DIR}"
+            --exit
+    # below the CTest TIMEOUT, so that a client stuck in a dialog is killed, not left running
+    TIMEOUT 100
+    RESULT_VARIABLE _rc
+    OUTPUT_VARIABLE _out
+    ERROR_VARIABLE _out
+    ECHO_OUTPUT_VARIABLE
+    ECHO_ERROR_VARIABLE)
+  string(REGEX MATCHALL "PsiGUICheck passed:" _passed "${_out}")
+  list(LENGTH _passed _npassed)
+  message("PsiGUI driver: client exit code ${_rc}; ${_npassed} of ${_expected} strict image checks passed")
+  if (NOT _rc EQUAL 0 OR NOT _npassed EQUAL _expected)
+    message(FATAL_ERROR "PsiGUI driver: test failed")
+  endif ()
+  return ()
+endif ()
+
 # paraview_add_client_tests() needs the ParaView::paraview target, which the Debian package does
-# not export, so the equivalent command line is written out here (options of ParaView 5.11).
+# not export, so the equivalent command line is written out (options of ParaView 5.11).
 find_program(PARAVIEW_CLIENT_EXECUTABLE NAMES paraview)
 if (NOT PARAVIEW_CLIENT_EXECUTABLE)
   message(STATUS "paraview client not found: GUI tests disabled")
   return ()
 endif ()
 
-set(psi_gui_tests PsiVolumeGUI)
+# Each script's steps are compared with Data/Baseline/<name>_<step>.png or <name>.png, and the
+# client compares the final view with <name>_baseline below (--test-baseline; a failure there
+# makes the client exit 1).
+#   PsiVolumeGUI: integration methods, isosurfaces, state save/load (see XML/PsiVolumeGUI.xml).
+#   PsiVolumeGUIOpacityState: known bug, disabled until fixed (see the XML file's header).
+set(psi_gui_tests PsiVolumeGUI PsiVolumeGUIOpacityState)
+set(PsiVolumeGUI_baseline PsiVolumeGUI.png)
+set(PsiVolumeGUIOpacityState_baseline PsiVolumeGUI_Average.png)
+set(PsiVolumeGUIOpacityState_disabled TRUE)
 foreach (name IN LISTS psi_gui_tests)
-  set(test_dir "${CMAKE_BINARY_DIR}/Testing/Temporary/GUI/${name}")
-  file(MAKE_DIRECTORY "${test_dir}")
   add_test(NAME PsiGUI.${name}
-    COMMAND "${PARAVIEW_CLIENT_EXECUTABLE}" --dr
-            "--plugin-search-paths=$<TARGET_FILE_DIR:PsiVolume>"
-            --plugins=PsiVolume
-            "--test-script=${CMAKE_CURRENT_SOURCE_DIR}/XML/${name}.xml"
-            "--test-baseline=${CMAKE_CURRENT_SOURCE_DIR}/Data/Baseline/${name}.png"
-            --test-threshold=5
-            "--test-directory=${test_dir}"
-            "--baseline-directory=${CMAKE_CURRENT_SOURCE_DIR}/Data/Baseline"
-            --exit)
+    COMMAND "${CMAKE_COMMAND}"
+            "-DPARAVIEW=${PARAVIEW_CLIENT_EXECUTABLE}"
+            "-DPLUGIN_DIR=$<TARGET_FILE_DIR:PsiVolume>"
+            "-DSCRIPT=${CMAKE_CURRENT_SOURCE_DIR}/XML/${name}.xml"
+            "-DBASELINE=${CMAKE_CURRENT_SOURCE_DIR}/Data/Baseline/${${name}_baseline}"
+            "-DBASELINE_DIR=${CMAKE_CURRENT_SOURCE_DIR}/Data/Baseline"
+            "-DDATA_DIR=${CMAKE_CURRENT_SOURCE_DIR}"
+            "-DTEST_DIR=${CMAKE_BINARY_DIR}/Testing/Temporary/GUI/${name}"
+            -P "${CMAKE_CURRENT_LIST_FILE}")
   set_tests_properties(PsiGUI.${name} PROPERTIES
     LABELS "GUI"
     TIMEOUT 120
-    # QtTesting prints this when a widget path does not exist in this ParaView version.
-    FAIL_REGULAR_EXPRESSION "Couldn't find object|Failed to parse"
+    # "Couldn't find object": a widget path does not exist in this ParaView version;
+    # "Failed to parse": bad XML; "The following event FAILED": an intermediate <pqcompareview>
+    # (or <pqcompareimage>) did not match its baseline; "PsiGUICheck FAILED": the strict check;
+    # "Unhandled error": any other event QtTesting could not play.
+    FAIL_REGULAR_EXPRESSION "Couldn't find object|Failed to parse|The following event FAILED|PsiGUICheck FAILED|Unhandled error"
     RESOURCE_LOCK PsiGUI)
+  if (${name}_disabled)
+    set_tests_properties(PsiGUI.${name} PROPERTIES DISABLED TRUE)
+  endif ()
 endforeach ()

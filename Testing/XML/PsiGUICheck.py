@@ -1,0 +1,91 @@
+# Strict pixel check of the active render view, called from the pqevents GUI tests through the
+# Python shell (<pqevent object=".../pythonShell/consoleWidget" command="executeCommand" .../>).
+#
+# Why: ParaView 5.11's own comparison (<pqcompareview>, --test-baseline: vtkTesting with
+# vtkImageDifference) ignores every pixel whose best match within +-2 pixels differs by less
+# than 105 levels in each channel. Switching the integration method of a volume changes pixels by
+# at most ~50 levels, so that comparison passes (error exactly 0) whatever method is drawn. This
+# check captures the view the way <pqcompareview> does (ViewSize 300x300, PPI 72,
+# CaptureWindow(1)), compares it with the same baseline PNG, and fails when more than MAX_PIXELS
+# pixels differ by more than LEVEL in some channel. Same-method replays differ by 0 on llvmpipe.
+#
+# Loaded with runpy.run_path (no __pycache__ in the source tree). Prints one line per check on the
+# process's own stdout/stderr (the shell widget's output is not on the console): Testing/GUI.cmake
+# counts "PsiGUICheck passed:" lines and fails on "PsiGUICheck FAILED".
+import os
+import sys
+
+LEVEL = 8  # per-channel difference (0-255) above which a pixel counts as changed
+MAX_PIXELS = 150  # of 90000; a method swap changes thousands
+
+
+def _say(stream, text):
+    stream.write(text + "\n")
+    stream.flush()
+
+
+def _capture(size):
+    from paraview import simple
+
+    view = simple.GetActiveView()
+    if view is None:
+        raise RuntimeError("no active view")
+    old_size, old_ppi = list(view.ViewSize), view.PPI
+    view.ViewSize, view.PPI = list(size), 72
+    try:
+        image = view.SMProxy.CaptureWindow(1)
+    finally:
+        view.ViewSize, view.PPI = old_size, old_ppi
+    if image is None:
+        raise RuntimeError("CaptureWindow returned nothing")
+    return image
+
+
+def _pixels(image):
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    dims = image.GetDimensions()
+    rgb = vtk_to_numpy(image.GetPointData().GetScalars())[:, :3].astype(int)
+    return dims[0], dims[1], rgb
+
+
+def check(baseline_dir, test_dir, name, test_name=None, level=LEVEL, max_pixels=MAX_PIXELS,
+          size=(300, 300)):
+    """Compares the active view with baseline_dir/name.png; writes it to test_dir/test_name.png."""
+    test_name = test_name or name
+    try:
+        from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
+
+        image = _capture(size)
+        os.makedirs(test_dir, exist_ok=True)
+        test_png = os.path.join(test_dir, test_name + ".png")
+        writer = vtkPNGWriter()
+        writer.SetInputData(image)
+        writer.SetFileName(test_png)
+        writer.Write()
+        baseline_png = os.path.join(baseline_dir, name + ".png")
+        if not os.path.exists(baseline_png):
+            _say(sys.__stderr__, "PsiGUICheck FAILED: %s: no baseline %s (test image written to %s)"
+                 % (name, baseline_png, test_png))
+            return False
+        reader = vtkPNGReader()
+        reader.SetFileName(baseline_png)
+        reader.Update()
+        tw, th, test = _pixels(image)
+        bw, bh, base = _pixels(reader.GetOutput())
+        if (tw, th) != (bw, bh):
+            _say(sys.__stderr__, "PsiGUICheck FAILED: %s: image %dx%d, baseline %dx%d"
+                 % (name, tw, th, bw, bh))
+            return False
+        diff = abs(test - base).max(axis=1)
+        changed = int((diff > level).sum())
+        summary = "%s: %d pixels differ by more than %d (limit %d), largest difference %d, mean %.3f" \
+            % (test_name, changed, level, max_pixels, int(diff.max()), float(diff.mean()))
+        if changed > max_pixels:
+            _say(sys.__stderr__, "PsiGUICheck FAILED: " + summary + "; test image " + test_png)
+            return False
+        _say(sys.__stdout__, "PsiGUICheck passed: " + summary)
+        return True
+    except Exception as error:  # the shell would swallow the traceback
+        _say(sys.__stderr__, "PsiGUICheck FAILED: %s: %s: %s" % (name, type(error).__name__, error))
+        return False
