@@ -989,7 +989,8 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     {
       defines += "#define PSI_ISO_SMOOTH\n";
     }
-    if (this->IsosurfaceMethod == ISO_MARCHING_TETRAHEDRA)
+    if (this->IsosurfaceMethod == ISO_MARCHING_TETRAHEDRA ||
+      (this->IsosurfaceMethod == ISO_AUTO && this->EarlyDiscard && I.TransferHasZeroOpacity))
     {
       // Geometry-shader output: the 8-vertex decomposition once per piece (up to niso + 1) and
       // a 4-vertex strip per surface, each vertex with its outputs (PsiVolumeGS.glsl):
@@ -1309,7 +1310,9 @@ void vtkPsiVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "TransferFunctionSamples: " << this->TransferFunctionSamples << "\n";
   os << indent << "IsosurfaceMethod: "
-     << (this->IsosurfaceMethod == ISO_MARCHING_TETRAHEDRA ? "marching tetrahedra" : "per fragment")
+     << (this->IsosurfaceMethod == ISO_MARCHING_TETRAHEDRA ? "marching tetrahedra"
+            : this->IsosurfaceMethod == ISO_PER_FRAGMENT    ? "per fragment"
+                                                            : "auto")
      << ", shading: " << (this->IsosurfaceShading == ISO_SMOOTH ? "smooth" : "flat") << "\n";
   os << indent << "NumberOfTetrahedra: " << this->NumberOfTetrahedra << "\n";
   os << indent << "NumberOfSkippedCells: " << this->NumberOfSkippedCells << "\n";

@@ -414,6 +414,13 @@ int main(int argc, char* argv[])
         const bool usedMT =
           mapper->GetLastUsedIsosurfaceMethod() == vtkPsiVolumeMapper::ISO_MARCHING_TETRAHEDRA;
         const bool discarded = mapper->GetLastUsedEarlyDiscard();
+        mapper->SetIsosurfaceMethod(vtkPsiVolumeMapper::ISO_AUTO);
+        Grab(win);
+        PSI_CHECK(mapper->GetLastUsedIsosurfaceMethod() ==
+            (k.Gap && k.FitsGS ? vtkPsiVolumeMapper::ISO_MARCHING_TETRAHEDRA
+                               : vtkPsiVolumeMapper::ISO_PER_FRAGMENT),
+          "%s view %d: Auto uses marching tetrahedra exactly when early discard applies", k.Name,
+          view);
         ren->RemoveActor(actor);
         const Diff d = Compare(mt, perFragment);
         int differ = 0;

@@ -43,7 +43,7 @@ cases = [
     ("AdaptiveSampling", ["On", "Auto", "Off"], None),
     ("IsosurfaceValues", [[mid], [lo + 0.3 * (hi - lo), mid, lo + 0.7 * (hi - lo)], []], None),
     ("IsosurfaceShading", ["Flat", "Unlit", "Smooth"], None),
-    ("IsosurfaceMethod", ["Per Fragment", "Marching Tetrahedra"], None),
+    ("IsosurfaceMethod", ["Per Fragment", "Marching Tetrahedra", "Auto"], None),
 ]
 for name, values, _ in cases:
     for v in values:
@@ -82,6 +82,11 @@ d.IsosurfaceMethod = "Marching Tetrahedra"
 render()
 d.UpdatePropertyInformation()
 t.check(d.GetProperty("LastUsedIsosurfaceMethod").GetElement(0) == 0, "marching tetrahedra used")
+d.IsosurfaceMethod = "Auto"
+render()
+d.UpdatePropertyInformation()
+t.check(d.GetProperty("LastUsedIsosurfaceMethod").GetElement(0) == 1,
+        "Auto: per fragment for a volume without zero-opacity regions")
 t.check(psi_testing.mean_error(per_fragment, green) < 0.5 / 255,
         "IsosurfaceMethod: both methods draw the same image (%.4f)"
         % psi_testing.mean_error(per_fragment, green))
