@@ -60,8 +60,10 @@ public:
   vtkGetMacro(ExactPerspectiveSegments, bool);
   vtkBooleanMacro(ExactPerspectiveSegments, bool);
 
-  /// Visibility order: centroid sort (default) or MPVONC (Williams 1992), which orders across
-  /// shared faces exactly (for convex meshes) using the mesh connectivity.
+  /// Visibility order: MPVONC (Williams 1992, default), which orders across shared faces exactly
+  /// (for convex meshes) using the mesh connectivity, or the centroid sort, faster but wrong
+  /// across some shared faces: on the Kuhn cells of structured grids (long and thin) seen head-on
+  /// it draws visible lines (TestPsiVolumeRender: max error 0.054 vs 0.005 with MPVONC).
   enum SortMethods
   {
     CENTROID = 0,
@@ -197,7 +199,7 @@ protected:
 
   int IntegrationMethod = PARTIAL_PRE_INTEGRATION;
   int TransferFunctionSamples = 1024;
-  int SortMethod = CENTROID;
+  int SortMethod = MPVONC;
   double LastPreIntegrationSeconds = 0;
   vtkIdType LastSortCycles = 0;
   bool ExactPerspectiveSegments = true;
