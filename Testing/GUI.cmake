@@ -65,11 +65,11 @@ endif ()
 # client compares the final view with <name>_baseline below (--test-baseline; a failure there
 # makes the client exit 1).
 #   PsiVolumeGUI: integration methods, isosurfaces, state save/load (see XML/PsiVolumeGUI.xml).
-#   PsiVolumeGUIOpacityState: known bug, disabled until fixed (see the XML file's header).
+#   PsiVolumeGUIOpacityState: the opacity unit distance typed in the 'Psi Volume Opacity' group
+#     survives state save/load (see the XML file's header).
 set(psi_gui_tests PsiVolumeGUI PsiVolumeGUIOpacityState)
 set(PsiVolumeGUI_baseline PsiVolumeGUI.png)
 set(PsiVolumeGUIOpacityState_baseline PsiVolumeGUI_Average.png)
-set(PsiVolumeGUIOpacityState_disabled TRUE)
 foreach (name IN LISTS psi_gui_tests)
   add_test(NAME PsiGUI.${name}
     COMMAND "${CMAKE_COMMAND}"

@@ -99,7 +99,28 @@ t.check(e_hex < 0.01, "voxel input renders like the tetrahedralized mesh (%.5f)"
 simple.Delete(d2)
 simple.Delete(view2)
 
-# State files: representation type and method survive save/load.
+# State files: representation type, method and opacity survive save/load.
+# 'Psi Volume' reads ScalarOpacityFunction / ScalarOpacityUnitDistance from its own copies
+# (PsiScalarOpacityFunction / PsiScalarOpacityUnitDistance), the outputs of the one-way
+# ShareProperties link from the VolumeRepresentation: what is set on the representation (here,
+# and by the panel's 'Psi Volume Opacity' group) must reach them, and the state must restore both.
+def opacity(rep):
+    """(unit distance, Psi copy of it, opacity function, Psi copy of it) of a representation."""
+    return (rep.ScalarOpacityUnitDistance, rep.PsiScalarOpacityUnitDistance,
+            rep.ScalarOpacityFunction.SMProxy, rep.PsiScalarOpacityFunction.SMProxy)
+
+
+def check_opacity(rep, what):
+    unit, psi_unit, pwf, psi_pwf = opacity(rep)
+    t.check(unit == 2.0 and psi_unit == 2.0,
+            "%s: ScalarOpacityUnitDistance %g, 'Psi Volume' copy %g (2 expected)"
+            % (what, unit, psi_unit))
+    t.check(pwf is not None and psi_pwf == pwf and
+            pwf == simple.GetOpacityTransferFunction(array).SMProxy,
+            "%s: 'Psi Volume' uses the color map's opacity function" % what)
+
+
+check_opacity(d, "before save")
 d.IntegrationMethod = "Average"
 simple.Render(view)
 before = psi_testing.grab(view)
@@ -114,6 +135,8 @@ after = psi_testing.grab(view)
 reps = [r for r in simple.GetRepresentations().values() if r.GetProperty("IntegrationMethod")]
 t.check(any(r.Representation == "Psi Volume" and r.IntegrationMethod == "Average" for r in reps),
         "state file restores 'Psi Volume' and its integration method")
+for r in reps:
+    check_opacity(r, "after load")
 e_state = psi_testing.mean_error(after, before)
 t.check(e_state < 0.5 / 255, "reloaded state renders the same image (%.5f)" % e_state)
 t.finish()
