@@ -122,8 +122,8 @@ public:
   ///  - ISO_AUTO (default): marching tetrahedra when early discard applies (the opacity function
   ///    has zero regions, e.g. plain contours: only the surfaces and the visible pieces are
   ///    drawn), per fragment otherwise. Both give the same image; on the Blunt Fin with
-  ///    llvmpipe, marching tetrahedra take 0.43x the per-fragment time for plain contours and
-  ///    1.28x with a visible volume everywhere (Benchmarks/bench_features.py).
+  ///    llvmpipe, marching tetrahedra take 0.43-0.50x the per-fragment time for plain contours and
+  ///    1.25-1.28x with a visible volume everywhere (Benchmarks/bench_features.py).
   enum IsosurfaceMethods
   {
     ISO_MARCHING_TETRAHEDRA = 0,
