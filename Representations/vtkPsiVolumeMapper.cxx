@@ -587,6 +587,43 @@ void vtkPsiVolumeMapper::SetIsosurfaceValue(int i, double value)
   this->Modified();
 }
 
+void vtkPsiVolumeMapper::SetNumberOfIsosurfaceOpacities(int n)
+{
+  n = std::max(0, n);
+  if (static_cast<size_t>(n) != this->IsosurfaceOpacities.size())
+  {
+    this->IsosurfaceOpacities.resize(n, this->IsosurfaceOpacity);
+    this->Modified();
+  }
+}
+
+void vtkPsiVolumeMapper::SetIsosurfaceOpacityValue(int i, double opacity)
+{
+  if (i < 0)
+  {
+    return;
+  }
+  if (static_cast<size_t>(i) >= this->IsosurfaceOpacities.size())
+  {
+    this->IsosurfaceOpacities.resize(i + 1, this->IsosurfaceOpacity);
+  }
+  else if (this->IsosurfaceOpacities[i] == opacity)
+  {
+    return;
+  }
+  this->IsosurfaceOpacities[i] = opacity;
+  this->Modified();
+}
+
+void vtkPsiVolumeMapper::SetIsosurfaceOpacities(const std::vector<double>& opacities)
+{
+  if (opacities != this->IsosurfaceOpacities)
+  {
+    this->IsosurfaceOpacities = opacities;
+    this->Modified();
+  }
+}
+
 double vtkPsiVolumeMapper::GetIsosurfaceValue(int i) const
 {
   return i >= 0 && static_cast<size_t>(i) < this->IsosurfaceValues.size()
@@ -870,22 +907,40 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
 
   // ---- 4b. Isosurfaces and adaptive sampling: only what is switched on costs anything.
-  std::vector<float> isoValues;
-  for (double v : this->IsosurfaceValues)
+  // (value, opacity) of each finite isovalue, ascending; a repeated value keeps its first entry.
+  std::vector<std::pair<float, float>> isoList;
+  for (size_t i = 0; i < this->IsosurfaceValues.size(); ++i)
   {
+    const double v = this->IsosurfaceValues[i];
+    const double o = i < this->IsosurfaceOpacities.size() ? this->IsosurfaceOpacities[i]
+                                                           : this->IsosurfaceOpacity;
     if (std::isfinite(v) && std::abs(v) < 1e37)
     {
-      isoValues.push_back(static_cast<float>(v));
+      isoList.emplace_back(static_cast<float>(v),
+        static_cast<float>(std::isfinite(o) ? std::min(1.0, std::max(0.0, o)) : 1.0));
     }
   }
-  std::sort(isoValues.begin(), isoValues.end());
-  isoValues.erase(std::unique(isoValues.begin(), isoValues.end()), isoValues.end());
-  if (isoValues.size() > static_cast<size_t>(MaxIsosurfaces))
+  std::stable_sort(isoList.begin(), isoList.end(),
+    [](const std::pair<float, float>& a, const std::pair<float, float>& b) {
+      return a.first < b.first;
+    });
+  isoList.erase(std::unique(isoList.begin(), isoList.end(),
+                  [](const std::pair<float, float>& a, const std::pair<float, float>& b) {
+                    return a.first == b.first;
+                  }),
+    isoList.end());
+  if (isoList.size() > static_cast<size_t>(MaxIsosurfaces))
   {
     vtkWarningMacro("Psi Volume draws at most " << MaxIsosurfaces << " isosurfaces; "
-                                                << isoValues.size() - MaxIsosurfaces
+                                                << isoList.size() - MaxIsosurfaces
                                                 << " ignored.");
-    isoValues.resize(MaxIsosurfaces);
+    isoList.resize(MaxIsosurfaces);
+  }
+  std::vector<float> isoValues, isoOpacities;
+  for (const auto& vo : isoList)
+  {
+    isoValues.push_back(vo.first);
+    isoOpacities.push_back(vo.second);
   }
   const bool iso = !isoValues.empty();
   const bool smoothIso = iso && this->IsosurfaceShading == ISO_SMOOTH;
@@ -1145,7 +1200,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
     prog->SetUniform1fv("isoValues", niso, isoValues.data());
     prog->SetUniform3fv("isoColors", niso, reinterpret_cast<const float(*)[3]>(colors.data()));
-    prog->SetUniformf("isoOpacity", static_cast<float>(this->IsosurfaceOpacity));
+    prog->SetUniform1fv("isoOpacities", niso, isoOpacities.data());
     prog->SetUniformi("isoLighting", this->IsosurfaceLighting ? 1 : 0);
     // The renderer's lights as VTK's surface shaders see them (directional: focal point minus
     // position, in view coordinates; diffuse color times intensity).

@@ -98,6 +98,12 @@ public:
   /// Opacity of every isosurface, 0..1 (default 1: opaque, hides what is behind it).
   vtkSetClampMacro(IsosurfaceOpacity, double, 0.0, 1.0);
   vtkGetMacro(IsosurfaceOpacity, double);
+  /// Each isosurface's own opacity, in the order of the isovalues as given: entry i applies to
+  /// isovalue i; isovalues without an entry use IsosurfaceOpacity. Values are clamped to 0..1.
+  void SetNumberOfIsosurfaceOpacities(int n);
+  void SetIsosurfaceOpacityValue(int i, double opacity);
+  void SetIsosurfaceOpacities(const std::vector<double>& opacities);
+  const std::vector<double>& GetIsosurfaceOpacities() const { return this->IsosurfaceOpacities; }
   /// Solid color of the isosurfaces, used when IsosurfaceUseColorMap is off.
   vtkSetVector3Macro(IsosurfaceColor, double);
   vtkGetVector3Macro(IsosurfaceColor, double);
@@ -213,6 +219,7 @@ protected:
   bool LastUsedOpaqueClipping = false;
   std::vector<double> IsosurfaceValues;
   double IsosurfaceOpacity = 1.0;
+  std::vector<double> IsosurfaceOpacities;
   double IsosurfaceColor[3] = { 1.0, 1.0, 1.0 };
   bool IsosurfaceUseColorMap = true;
   bool IsosurfaceLighting = true;

@@ -7,6 +7,8 @@
 #include "vtkObjectFactory.h"
 #include "vtkPsiVolumeMapper.h"
 
+#include <algorithm>
+
 namespace
 {
 constexpr const char* MapperName = "Psi Volume";
@@ -105,6 +107,25 @@ void vtkPsiVolumeRepresentation::SetIsosurfaceOpacity(double opacity)
   if (opacity != this->PsiMapper->GetIsosurfaceOpacity())
   {
     this->PsiMapper->SetIsosurfaceOpacity(opacity);
+    this->Modified();
+  }
+}
+
+void vtkPsiVolumeRepresentation::SetNumberOfIsosurfaceOpacities(int n)
+{
+  if (static_cast<size_t>(std::max(0, n)) != this->PsiMapper->GetIsosurfaceOpacities().size())
+  {
+    this->PsiMapper->SetNumberOfIsosurfaceOpacities(n);
+    this->Modified();
+  }
+}
+
+void vtkPsiVolumeRepresentation::SetIsosurfaceOpacityValue(int i, double opacity)
+{
+  const std::vector<double>& o = this->PsiMapper->GetIsosurfaceOpacities();
+  if (i < 0 || static_cast<size_t>(i) >= o.size() || o[i] != opacity)
+  {
+    this->PsiMapper->SetIsosurfaceOpacityValue(i, opacity);
     this->Modified();
   }
 }

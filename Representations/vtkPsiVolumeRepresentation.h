@@ -51,6 +51,8 @@ public:
   void SetNumberOfIsosurfaces(int n);
   void SetIsosurfaceValue(int i, double value);
   void SetIsosurfaceOpacity(double opacity);
+  void SetNumberOfIsosurfaceOpacities(int n);
+  void SetIsosurfaceOpacityValue(int i, double opacity);
   void SetIsosurfaceColor(double r, double g, double b);
   void SetIsosurfaceUseColorMap(int on);
   /// 0: smooth, 1: flat (both lit by the view's lights), 2: unlit.

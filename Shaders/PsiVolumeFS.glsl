@@ -58,7 +58,7 @@ vec2 psiCoord(vec2 tauD)
 
 #ifdef PSI_ISO_COUNT
 uniform vec3 isoColors[PSI_ISO_COUNT];
-uniform float isoOpacity;
+uniform float isoOpacities[PSI_ISO_COUNT]; // each surface's own
 uniform int isoLighting;
 uniform int lightCount;
 uniform vec3 lightDirVC[PSI_MAX_LIGHTS]; // direction the light travels, view coordinates
@@ -82,7 +82,7 @@ vec4 isoShade(int i, vec3 n, vec3 dir)
     }
     c *= lit;
   }
-  return vec4(c * isoOpacity, isoOpacity);
+  return vec4(c * isoOpacities[i], isoOpacities[i]);
 }
 #endif
 

@@ -379,6 +379,7 @@ int main(int argc, char* argv[])
       int Shading;
       bool Gap;
       bool FitsGS; // marching tetrahedra fit the geometry shader's output in every view
+      std::vector<double> Opacities; // each surface's own (IsosurfaceOpacities)
     };
     std::vector<double> twelve;
     for (int i = 0; i < 12; ++i)
@@ -390,13 +391,16 @@ int main(int argc, char* argv[])
       { "three flat", { c, a, b }, 0.6, vtkPsiVolumeMapper::ISO_FLAT, false, true },
       { "two, opacity gap", { r[0] + 0.3 * span, b }, 0.5, vtkPsiVolumeMapper::ISO_SMOOTH, true,
         true },
-      { "twelve (GS limit)", twelve, 0.3, vtkPsiVolumeMapper::ISO_SMOOTH, false, false } };
+      { "twelve (GS limit)", twelve, 0.3, vtkPsiVolumeMapper::ISO_SMOOTH, false, false },
+      { "three own opacities", { a, b, c }, 1.0, vtkPsiVolumeMapper::ISO_SMOOTH, true, true,
+        { 0.2, 1.0, 0.5 } } };
     for (const Case& k : cases)
     {
       property->SetScalarOpacity(k.Gap ? gap.Get() : linear.Get());
       mapper->SetIsosurfaceValues(k.Values);
       mapper->SetIsosurfaceOpacity(k.Opacity);
       mapper->SetIsosurfaceShading(k.Shading);
+      mapper->SetIsosurfaceOpacities(k.Opacities);
       for (int view = 0; view < 4; ++view)
       {
         setView(view < 3 ? view : 0);
@@ -452,6 +456,7 @@ int main(int argc, char* argv[])
       }
     }
     property->SetScalarOpacity(linear);
+    mapper->SetIsosurfaceOpacities({});
     mapper->SetIsosurfaceShading(vtkPsiVolumeMapper::ISO_SMOOTH);
     mapper->SetIsosurfaceOpacity(1.0);
   }

@@ -160,6 +160,36 @@ mm = np.abs(full).sum(axis=2) > 30.0
 ratio = half[mm].sum() / max(full[mm].sum(), 1e-9)
 # (0.5 of the front layer plus 0.25 of the one behind it, ...: between 0.5 and 0.75 of opaque)
 t.check(0.5 < ratio < 0.8, "IsosurfaceOpacity 0.5 lets the background through (ratio %.3f)" % ratio)
+# Each isosurface's own opacity (IsosurfaceOpacities, in the order of the values): an inner
+# surface made fully transparent vanishes (the image is that of the outer one alone), and an
+# entry of 0.5 gives what the common IsosurfaceOpacity 0.5 gives.
+outer, inner_v = mid - 12.0, mid + 30.0
+d.IsosurfaceValues = [outer]
+simple.Render(view)
+outer_only = psi_testing.grab(view)
+d.IsosurfaceValues = [inner_v, outer]  # given out of order: entries follow the values
+d.IsosurfaceOpacities = [0.0, 1.0]
+simple.Render(view)
+inner_hidden = psi_testing.grab(view)
+t.check(psi_testing.covered(outer_only, BG) > 1000 and
+        psi_testing.mean_error(inner_hidden, outer_only) < 0.2 / 255,
+        "IsosurfaceOpacities: a surface of opacity 0 vanishes (%.4f)"
+        % psi_testing.mean_error(inner_hidden, outer_only))
+d.IsosurfaceOpacities = [1.0, 0.5]
+simple.Render(view)
+per_surface = psi_testing.grab(view)
+d.IsosurfaceOpacities = [1.0]  # the outer one without an entry: IsosurfaceOpacity
+d.IsosurfaceOpacity = 0.5
+simple.Render(view)
+common = psi_testing.grab(view)
+t.check(psi_testing.mean_error(per_surface, common) < 0.2 / 255 and
+        psi_testing.mean_error(per_surface, inner_hidden) > 1.0 / 255,
+        "IsosurfaceOpacities: an entry of 0.5 equals IsosurfaceOpacity 0.5 for that surface "
+        "(%.4f), and lets the inner surface show (%.4f)"
+        % (psi_testing.mean_error(per_surface, common),
+           psi_testing.mean_error(per_surface, inner_hidden)))
+d.IsosurfaceOpacities = []
+d.IsosurfaceOpacity = 1.0
 # Removing the isosurfaces restores the plain (here empty) image.
 d.IsosurfaceValues = []
 simple.Render(view)

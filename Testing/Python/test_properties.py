@@ -42,6 +42,7 @@ cases = [
     ("EarlyDiscard", [0, 1], None),
     ("AdaptiveSampling", ["On", "Auto", "Off"], None),
     ("IsosurfaceValues", [[mid], [lo + 0.3 * (hi - lo), mid, lo + 0.7 * (hi - lo)], []], None),
+    ("IsosurfaceOpacities", [[0.5], [0.2, 0.9], []], None),
     ("IsosurfaceShading", ["Flat", "Unlit", "Smooth"], None),
     ("IsosurfaceMethod", ["Per Fragment", "Marching Tetrahedra", "Auto"], None),
 ]
