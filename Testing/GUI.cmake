@@ -67,7 +67,10 @@ endif ()
 #   PsiVolumeGUI: integration methods, isosurfaces, state save/load (see XML/PsiVolumeGUI.xml).
 #   PsiVolumeGUIOpacityState: the opacity unit distance typed in the 'Psi Volume Opacity' group
 #     survives state save/load (see the XML file's header).
-set(psi_gui_tests PsiVolumeGUI PsiVolumeGUIOpacityState)
+#   PsiVolumeGUIOpenFile: File > Open of a tetrahedral .off file (the plugin's reader), rendered
+#     with 'Psi Volume'.
+set(psi_gui_tests PsiVolumeGUI PsiVolumeGUIOpacityState PsiVolumeGUIOpenFile)
+set(PsiVolumeGUIOpenFile_baseline PsiVolumeGUIOpenFile.png)
 set(PsiVolumeGUI_baseline PsiVolumeGUI.png)
 set(PsiVolumeGUIOpacityState_baseline PsiVolumeGUI_Average.png)
 foreach (name IN LISTS psi_gui_tests)
