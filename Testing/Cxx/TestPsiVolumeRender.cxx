@@ -50,10 +50,21 @@ struct Scene
   vtkNew<vtkPiecewiseFunction> Opacity;
 };
 
-// The Wavelet source on [-half, half]^3, cells scaled to `cell` units, split into tetrahedra.
-void MakeScene(Scene& s, int half, double cell, double unitDistance, bool linearTF = false)
+void MakeKuhnWavelet(vtkUnstructuredGrid* grid, int half, double cell);
+
+// The Wavelet source on [-half, half]^3, cells scaled to `cell` units, split into tetrahedra
+// (by vtkDataSetTriangleFilter, or into Kuhn tetrahedra).
+void MakeScene(Scene& s, int half, double cell, double unitDistance, bool linearTF = false,
+  bool kuhn = false)
 {
-  psitest::MakeWaveletTets(s.Grid, half, cell);
+  if (kuhn)
+  {
+    MakeKuhnWavelet(s.Grid, half, cell);
+  }
+  else
+  {
+    psitest::MakeWaveletTets(s.Grid, half, cell);
+  }
   double r[2];
   s.Grid->GetPointData()->GetScalars()->GetRange(r);
   // Linear-in-RGB color map and a ramp with a peak: control points are the reference's
@@ -275,8 +286,7 @@ int main(int argc, char* argv[])
   // the centroid order composites some neighbours in the wrong order, MPVONC is exact.
   {
     Scene kuhn;
-    MakeScene(kuhn, 2, 4.0, 0.3, true);
-    MakeKuhnWavelet(kuhn.Grid, 2, 4.0);
+    MakeScene(kuhn, 2, 4.0, 0.3, true, true);
     const psi::ReferenceScene kuhnRef = MakeReference(kuhn);
     mapper->SetInputData(kuhn.Grid);
     vol->SetProperty(kuhn.Property);
