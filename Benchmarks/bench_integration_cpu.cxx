@@ -3,6 +3,7 @@
 // max / mean error over Moreland's sweeps (seed 001 Figs. 6.5-6.11: D = 0.001, 0.1, 1, 100 over
 // the (alpha_f, alpha_b) plane, back luminance 1, front 0), each against the reference of its
 // optical model. `--csv` prints machine-readable rows for Benchmarks/bench_integration.py.
+#include "PsiReferenceIntegrals.h"
 #include "PsiIntegrationMethods.h"
 #include "PsiPreIntegrationTable.h"
 #include "PsiTable.h"

@@ -1,7 +1,7 @@
 # Isosurfaces and adaptive transfer-function sampling (issue 5), included from
 # Testing/CMakeLists.txt. GL tests need an X server (run ctest under xvfb-run).
 add_executable(TestPsiIsosurfaces Cxx/TestPsiIsosurfaces.cxx)
-target_link_libraries(TestPsiIsosurfaces PRIVATE PsiVolume::Representations
+target_link_libraries(TestPsiIsosurfaces PRIVATE PsiVolume::Representations PsiTestSupport
   VTK::RenderingOpenGL2 VTK::FiltersGeneral VTK::FiltersSources VTK::ImagingCore VTK::IOImage
   VTK::RenderingCore)
 vtk_module_autoinit(TARGETS TestPsiIsosurfaces MODULES VTK::RenderingOpenGL2)

@@ -18,6 +18,6 @@ set_tests_properties(ConformingTetrahedralizeBluntFin ConformingTetrahedralizeBa
   PROPERTIES SKIP_RETURN_CODE 77)
 
 add_executable(TestMPVONC Cxx/TestMPVONC.cxx)
-target_link_libraries(TestMPVONC PRIVATE PsiVolume::Filters PsiVolume::Representations
+target_link_libraries(TestMPVONC PRIVATE PsiVolume::Filters PsiVolume::Representations PsiTestSupport
   CGAL::CGAL VTK::CommonCore VTK::CommonDataModel VTK::CommonExecutionModel)
 add_test(NAME MPVONC COMMAND TestMPVONC)

@@ -3,6 +3,7 @@
 // the C++ functions (PsiIntegrationMethods) and with the reference of each method's model:
 // Moreland's sweeps and the hard cases of issue 3. Needs an X server (xvfb-run).
 #include "PsiHardCases.h"
+#include "PsiReferenceIntegrals.h"
 #include "PsiIntegrationMethods.h"
 #include "PsiTable.h"
 #include "PsiTestCheck.h"

@@ -3,6 +3,7 @@
 // plus the hard cases of issue 3: D = 0, tau = 0, tau_b = tau_f exactly and within 1e-12, tau D
 // from 1e-9 to 1e6, alpha = 1 and just below, luminance outside [0, 1], non-finite input.
 #include "PsiHardCases.h"
+#include "PsiReferenceIntegrals.h"
 #include "PsiIntegrationMethods.h"
 #include "PsiTable.h"
 #include "PsiTestCheck.h"

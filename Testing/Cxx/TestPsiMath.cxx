@@ -1,5 +1,6 @@
 // GL-free tests of the math behind 'Psi Volume': the PTINT truth table and the fan it implies,
 // Psi and the segment integrals against an independent quadrature, and the Psi table.
+#include "PsiReferenceIntegrals.h"
 #include "PsiIntegration.h"
 #include "PsiProjectionClasses.h"
 #include "PsiTable.h"

@@ -10,7 +10,7 @@
 #ifndef PsiReferenceRaycaster_h
 #define PsiReferenceRaycaster_h
 
-#include "PsiVolumeRepresentationsModule.h"
+#include "PsiVolumeCoreModule.h"
 
 #include <array>
 #include <functional>
@@ -45,7 +45,7 @@ struct ReferenceCamera
 };
 
 /// Renders rgb (3 doubles per pixel, rows from the bottom) in [0, 1] (not clamped).
-PSIVOLUMEREPRESENTATIONS_EXPORT std::vector<double> RenderReference(
+std::vector<double> RenderReference(
   const ReferenceScene& scene, const ReferenceCamera& camera);
 
 } // namespace psi

@@ -13,7 +13,9 @@
 #ifndef PsiIntegration_h
 #define PsiIntegration_h
 
-#include "PsiVolumeRepresentationsModule.h"
+#include "PsiVolumeCoreModule.h"
+
+#include <cmath>
 
 #include <array>
 
@@ -35,29 +37,41 @@ struct Segment
 /// Psi(tau_b D, tau_f D) by 30-point Gauss-Legendre quadrature (Boost.Math) on the part of
 /// [0, 1] where the integrand exceeds 1e-18; accurate to ~1e-15 for any non-negative arguments,
 /// including +inf (Psi = 0). Returns NaN for NaN input.
-PSIVOLUMEREPRESENTATIONS_EXPORT double Psi(double taubD, double taufD);
+PSIVOLUMECORE_EXPORT double Psi(double taubD, double taufD);
 
 /// gamma = tau D / (tau D + 1), the table coordinate of seed 000 Eq. 11 (in [0, 1]; +inf -> 1).
-PSIVOLUMEREPRESENTATIONS_EXPORT double GammaOf(double tauD);
+PSIVOLUMECORE_EXPORT double GammaOf(double tauD);
 /// Inverse of GammaOf: tau D = gamma / (1 - gamma).
-PSIVOLUMEREPRESENTATIONS_EXPORT double TauDOf(double gamma);
+PSIVOLUMECORE_EXPORT double TauDOf(double gamma);
 
 /// zeta = exp(-(tau_b + tau_f) D / 2), seed 000 Eq. 8.
-PSIVOLUMEREPRESENTATIONS_EXPORT double Zeta(double taubD, double taufD);
+PSIVOLUMECORE_EXPORT double Zeta(double taubD, double taufD);
 
 /// Shirley-Tuchman average luminance and attenuation (seed 001 §3.2): L and tau taken as the
 /// mean of the two ends, alpha = 1 - exp(-tau D), color = L alpha.
-PSIVOLUMEREPRESENTATIONS_EXPORT Rgba IntegrateAverage(const Segment& s);
+PSIVOLUMECORE_EXPORT Rgba IntegrateAverage(const Segment& s);
 
 /// Seed 000 Eq. 7 given a Psi value (exact Psi, or a table lookup): partial pre-integration.
-PSIVOLUMEREPRESENTATIONS_EXPORT Rgba IntegrateWithPsi(const Segment& s, double psi);
+PSIVOLUMECORE_EXPORT Rgba IntegrateWithPsi(const Segment& s, double psi);
 
-/// The reference: the integral itself, evaluated by nested adaptive quadrature in long double,
-/// independent of Psi and of every closed form above. Slow; for tests and error measurement.
-PSIVOLUMEREPRESENTATIONS_EXPORT Rgba IntegrateReference(const Segment& s);
+// Where the exponent E(u) = b u + c u^2 (b = tau_f D, c = (tau_b D - tau_f D)/2) reaches `cut`.
+// E is non-decreasing on [0, 1] because E'(u) = b (1 - u) + tau_b D u >= 0.
+template <typename Real>
+inline Real TruncationPoint(Real b, Real c, Real cut)
+{
+  const Real e1 = b + c; // E(1) = (tau_b D + tau_f D) / 2
+  if (e1 <= cut)
+  {
+    return 1;
+  }
+  const Real disc = b * b + 4 * c * cut;
+  // Stable root of c u^2 + b u - cut = 0 (Numerical Recipes §5.6 form).
+  const Real u = 2 * cut / (b + std::sqrt(disc > 0 ? disc : Real(0)));
+  return u < 1 ? u : Real(1);
+}
 
 /// Over operator for premultiplied colors: front over back.
-PSIVOLUMEREPRESENTATIONS_EXPORT Rgba Over(const Rgba& front, const Rgba& back);
+PSIVOLUMECORE_EXPORT Rgba Over(const Rgba& front, const Rgba& back);
 
 } // namespace psi
 

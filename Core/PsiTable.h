@@ -12,14 +12,14 @@
 #ifndef PsiTable_h
 #define PsiTable_h
 
-#include "PsiVolumeRepresentationsModule.h"
+#include "PsiVolumeCoreModule.h"
 
 #include <vector>
 
 namespace psi
 {
 
-struct PSIVOLUMEREPRESENTATIONS_EXPORT PsiTable
+struct PSIVOLUMECORE_EXPORT PsiTable
 {
   int N = 0;
   /// Row-major: Values[j * N + i] = Psi(u_b = i/(N-1), u_f = j/(N-1)), u = WarpOfGamma(gamma).
@@ -31,16 +31,16 @@ struct PSIVOLUMEREPRESENTATIONS_EXPORT PsiTable
 };
 
 /// u = 1 - sqrt(1 - gamma), the table coordinate.
-PSIVOLUMEREPRESENTATIONS_EXPORT double WarpOfGamma(double gamma);
+PSIVOLUMECORE_EXPORT double WarpOfGamma(double gamma);
 /// tau D at table coordinate u: (1 - u)^-2 - 1.
-PSIVOLUMEREPRESENTATIONS_EXPORT double TauDOfWarp(double u);
+PSIVOLUMECORE_EXPORT double TauDOfWarp(double u);
 
 /// Builds the table by quadrature (psi::Psi), using all hardware threads.
-PSIVOLUMEREPRESENTATIONS_EXPORT PsiTable BuildPsiTable(int n);
+PSIVOLUMECORE_EXPORT PsiTable BuildPsiTable(int n);
 
 /// One table per process, built on first use at the default resolution (1024, or the
 /// PSI_TABLE_SIZE environment variable).
-PSIVOLUMEREPRESENTATIONS_EXPORT const PsiTable& GetDefaultPsiTable();
+PSIVOLUMECORE_EXPORT const PsiTable& GetDefaultPsiTable();
 
 } // namespace psi
 

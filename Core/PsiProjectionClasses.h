@@ -20,7 +20,7 @@
 #ifndef PsiProjectionClasses_h
 #define PsiProjectionClasses_h
 
-#include "PsiVolumeRepresentationsModule.h"
+#include "PsiVolumeCoreModule.h"
 
 #include <array>
 #include <string>
@@ -46,20 +46,20 @@ using ProjectionClassTable = std::array<ProjectionClass, 81>;
 
 /// Index of the truth table for projected points (x[i], y[i]), computed with the tests of
 /// seed 003 Fig. 3. Exposed so the table can be checked against the GLSL code path.
-PSIVOLUMEREPRESENTATIONS_EXPORT int TruthTableIndex(const double x[4], const double y[4]);
+PSIVOLUMECORE_EXPORT int TruthTableIndex(const double x[4], const double y[4]);
 
 /// Classifies one configuration geometrically (no table); used to derive and to test the table.
-PSIVOLUMEREPRESENTATIONS_EXPORT ProjectionClass ClassifyProjection(const double x[4], const double y[4]);
+PSIVOLUMECORE_EXPORT ProjectionClass ClassifyProjection(const double x[4], const double y[4]);
 
 /// Derives the 81-entry table. On an inconsistency (which would be a bug), returns false and
 /// describes it in *error.
-PSIVOLUMEREPRESENTATIONS_EXPORT bool BuildProjectionClassTable(ProjectionClassTable& table, std::string* error = nullptr);
+PSIVOLUMECORE_EXPORT bool BuildProjectionClassTable(ProjectionClassTable& table, std::string* error = nullptr);
 
 /// The table as built once per process.
-PSIVOLUMEREPRESENTATIONS_EXPORT const ProjectionClassTable& GetProjectionClassTable();
+PSIVOLUMECORE_EXPORT const ProjectionClassTable& GetProjectionClassTable();
 
 /// Packs an entry into one int for a GLSL uniform array: cls | p0<<4 | p1<<6 | p2<<8 | p3<<10.
-PSIVOLUMEREPRESENTATIONS_EXPORT int PackProjectionClass(const ProjectionClass& c);
+PSIVOLUMECORE_EXPORT int PackProjectionClass(const ProjectionClass& c);
 
 } // namespace psi
 

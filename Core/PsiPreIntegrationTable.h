@@ -11,7 +11,7 @@
 #ifndef PsiPreIntegrationTable_h
 #define PsiPreIntegrationTable_h
 
-#include "PsiVolumeRepresentationsModule.h"
+#include "PsiVolumeCoreModule.h"
 
 #include <vector>
 
@@ -20,7 +20,7 @@ namespace psi
 struct PsiTable;
 struct TransferFunctionTable;
 
-struct PSIVOLUMEREPRESENTATIONS_EXPORT PreIntegrationTable
+struct PSIVOLUMECORE_EXPORT PreIntegrationTable
 {
   int ScalarSamples = 0, LengthSamples = 0;
   double Range[2] = { 0, 1 };
@@ -35,7 +35,7 @@ struct PSIVOLUMEREPRESENTATIONS_EXPORT PreIntegrationTable
 
 constexpr int MaxPiecesPerEntry = 32;
 
-PSIVOLUMEREPRESENTATIONS_EXPORT PreIntegrationTable BuildPreIntegrationTable(
+PSIVOLUMECORE_EXPORT PreIntegrationTable BuildPreIntegrationTable(
   const TransferFunctionTable& tf, const PsiTable& psi, double maxLength, int scalarSamples = 128,
   int lengthSamples = 32);
 

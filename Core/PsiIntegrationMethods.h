@@ -13,7 +13,7 @@
 #define PsiIntegrationMethods_h
 
 #include "PsiIntegration.h"
-#include "PsiVolumeRepresentationsModule.h"
+#include "PsiVolumeCoreModule.h"
 
 #include <string>
 #include <vector>
@@ -33,9 +33,9 @@ enum class Method
   Count = 7
 };
 
-PSIVOLUMEREPRESENTATIONS_EXPORT const char* MethodName(Method m);
+PSIVOLUMECORE_EXPORT const char* MethodName(Method m);
 /// True for the methods of the linear-opacity model (4-6).
-PSIVOLUMEREPRESENTATIONS_EXPORT bool UsesLinearOpacity(Method m);
+PSIVOLUMECORE_EXPORT bool UsesLinearOpacity(Method m);
 
 /// A segment given by transfer-function values at its ends: luminance and, in `a`, the opacity
 /// function's value (in [0, 1]); D in world units; unit = ScalarOpacityUnitDistance.
@@ -48,27 +48,20 @@ struct TFSegment
 };
 
 /// Segment for the linear-attenuation model: tau = a / unit.
-PSIVOLUMEREPRESENTATIONS_EXPORT Segment AttenuationSegment(const TFSegment& s);
+PSIVOLUMECORE_EXPORT Segment AttenuationSegment(const TFSegment& s);
 
 /// Psi in closed form (Williams, Max and Stein; seed 001 Eq. 3.28), with erfcx and Dawson's
 /// integral evaluated stably (Numerical Recipes' erfc fit, Eq. 3.24, and Rybicki's method), and a
 /// series in (tau_b - tau_f) D where the closed form cancels.
-PSIVOLUMEREPRESENTATIONS_EXPORT double PsiClosedForm(double taubD, double taufD);
-PSIVOLUMEREPRESENTATIONS_EXPORT double Erfcx(double x);  ///< e^{x^2} erfc(x), x >= 0
-PSIVOLUMEREPRESENTATIONS_EXPORT double Dawson(double x); ///< e^{-x^2} int_0^x e^{t^2} dt
+PSIVOLUMECORE_EXPORT double PsiClosedForm(double taubD, double taufD);
+PSIVOLUMECORE_EXPORT double Erfcx(double x);  ///< e^{x^2} erfc(x), x >= 0
+PSIVOLUMECORE_EXPORT double Dawson(double x); ///< e^{-x^2} int_0^x e^{t^2} dt
 
 /// One segment by `m`. For PartialPreIntegration `psiTable` must be given; for
 /// FullPreIntegration, `preintegrated` (see PsiPreIntegrationTable.h) is used by the caller
 /// instead, so this function evaluates it exactly (the limit of an infinitely fine table).
-PSIVOLUMEREPRESENTATIONS_EXPORT Rgba Integrate(
+PSIVOLUMECORE_EXPORT Rgba Integrate(
   Method m, const TFSegment& s, const struct PsiTable* psiTable = nullptr);
-
-/// Reference for the linear-opacity model: alpha linear, tau(s) = -ln(1 - alpha(s)) / unit,
-/// luminance linear; nested adaptive quadrature in long double.
-PSIVOLUMEREPRESENTATIONS_EXPORT Rgba IntegrateReferenceLinearOpacity(const TFSegment& s);
-
-/// The reference of the model `m` approximates.
-PSIVOLUMEREPRESENTATIONS_EXPORT Rgba IntegrateReferenceFor(Method m, const TFSegment& s);
 
 } // namespace psi
 

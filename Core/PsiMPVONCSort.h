@@ -23,7 +23,7 @@
 #ifndef PsiMPVONCSort_h
 #define PsiMPVONCSort_h
 
-#include "PsiVolumeRepresentationsModule.h"
+#include "PsiVolumeCoreModule.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -50,7 +50,7 @@ struct MPVONCResult
 /// direction (from the eye into the scene), as for psi::SortBackToFront.
 /// The relation across a face is decided once, from the face of the tetrahedron with the smaller
 /// id (a neighbour entry without a reciprocal one is ignored), so both sides always agree.
-PSIVOLUMEREPRESENTATIONS_EXPORT MPVONCResult SortMPVONC(const float* points4, const uint32_t* tets,
+PSIVOLUMECORE_EXPORT MPVONCResult SortMPVONC(const float* points4, const uint32_t* tets,
   size_t numTets, const int32_t* neighbors, const double eye[3], bool parallel,
   std::vector<uint32_t>& order);
 

@@ -7,7 +7,7 @@
 #ifndef PsiTransferFunctionTable_h
 #define PsiTransferFunctionTable_h
 
-#include "PsiVolumeRepresentationsModule.h"
+#include "PsiVolumeCoreModule.h"
 
 #include <vector>
 
@@ -16,7 +16,7 @@ class vtkVolumeProperty;
 namespace psi
 {
 
-struct PSIVOLUMEREPRESENTATIONS_EXPORT TransferFunctionTable
+struct PSIVOLUMECORE_EXPORT TransferFunctionTable
 {
   double Range[2] = { 0, 1 }; ///< scalar at the first and the last sample
   int Size = 0;
@@ -27,7 +27,7 @@ struct PSIVOLUMEREPRESENTATIONS_EXPORT TransferFunctionTable
 };
 
 /// Samples component 0 of `property` at `size` evenly spaced scalars over `range`.
-PSIVOLUMEREPRESENTATIONS_EXPORT TransferFunctionTable SampleTransferFunction(
+PSIVOLUMECORE_EXPORT TransferFunctionTable SampleTransferFunction(
   vtkVolumeProperty* property, const double range[2], int size);
 
 } // namespace psi

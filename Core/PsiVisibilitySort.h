@@ -7,7 +7,7 @@
 #ifndef PsiVisibilitySort_h
 #define PsiVisibilitySort_h
 
-#include "PsiVolumeRepresentationsModule.h"
+#include "PsiVolumeCoreModule.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -17,13 +17,13 @@ namespace psi
 {
 
 /// Centroids (x, y, z per tetrahedron) of `numTets` cells given by 4 point ids each.
-PSIVOLUMEREPRESENTATIONS_EXPORT std::vector<float> ComputeCentroids(
+PSIVOLUMECORE_EXPORT std::vector<float> ComputeCentroids(
   const float* points4, const uint32_t* tets, size_t numTets);
 
 /// Fills `order` with the ids of all tetrahedra, farthest first.
 /// eye: camera position (perspective) or, with parallel = true, the view direction (from the eye
 /// into the scene), all in the same coordinates as the centroids.
-PSIVOLUMEREPRESENTATIONS_EXPORT void SortBackToFront(const std::vector<float>& centroids,
+PSIVOLUMECORE_EXPORT void SortBackToFront(const std::vector<float>& centroids,
   const double eye[3], bool parallel, std::vector<uint32_t>& order);
 
 } // namespace psi

@@ -2,7 +2,6 @@
 
 #include "PsiTable.h"
 
-#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/special_functions/erf.hpp>
 
 #include <algorithm>
@@ -251,55 +250,6 @@ Rgba Integrate(Method m, const TFSegment& s, const PsiTable* psiTable)
     default:
       return Rgba{ { 0, 0, 0, 0 } };
   }
-}
-
-Rgba IntegrateReferenceLinearOpacity(const TFSegment& s)
-{
-  using R = long double;
-  Rgba out{ { 0, 0, 0, 0 } };
-  if (!(s.D > 0))
-  {
-    return out;
-  }
-  const R D = s.D / s.unit; // in unit distances
-  const R af = std::min(std::max(s.af, 0.0), 1.0), ab = std::min(std::max(s.ab, 0.0), 1.0);
-  auto tau = [&](R u) { // per unit distance, u from the front
-    const R a = af + (ab - af) * u;
-    return a >= 1 ? std::numeric_limits<R>::infinity() : -std::log1p(-a);
-  };
-  using GK = boost::math::quadrature::gauss_kronrod<R, 31>;
-  // Optical depth from the front to u: D int_0^u -ln(1 - alpha(s)) ds with alpha linear, in closed
-  // form through F(w) = w ln w - w, w = 1 - alpha (no method under test uses this form).
-  const R k = ab - af;
-  auto F = [](R w) { return w > 0 ? w * std::log(w) - w : R(0); };
-  auto depth = [&](R u) {
-    if (u <= 0)
-    {
-      return R(0);
-    }
-    if (std::abs(k) < 1e-7L)
-    {
-      return -D * u * std::log1p(-(af + 0.5L * k * u)); // error O(k^2)
-    }
-    return D / k * (F(1 - af - k * u) - F(1 - af)); // d/du F(w(u)) = -k ln w
-
-  };
-  // alpha = 1 at an end makes tau infinite only at that point: -ln(1 - alpha) is integrable, the
-  // optical depth stays finite, and Gauss-Kronrod nodes never sit on the end points.
-  for (int k = 0; k < 3; ++k)
-  {
-    const R lf = s.Lf[k], lb = s.Lb[k];
-    auto g = [&](R u) { return D * tau(u) * (lf + (lb - lf) * u) * std::exp(-depth(u)); };
-    out[k] = static_cast<double>(GK::integrate(g, R(0), R(1), 15, R(1e-12)));
-  }
-  out[3] = static_cast<double>(-std::expm1(-depth(R(1))));
-  return out;
-}
-
-Rgba IntegrateReferenceFor(Method m, const TFSegment& s)
-{
-  return UsesLinearOpacity(m) ? IntegrateReferenceLinearOpacity(s)
-                              : IntegrateReference(AttenuationSegment(s));
 }
 
 } // namespace psi

@@ -11,7 +11,7 @@
 #ifndef PsiTetConnectivity_h
 #define PsiTetConnectivity_h
 
-#include "PsiVolumeRepresentationsModule.h"
+#include "PsiVolumeCoreModule.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -32,11 +32,11 @@ struct TetConnectivityResult
 /// or -1 for a boundary face. Faces shared by more than two tetrahedra (non-manifold) are counted
 /// and get -1 on every side: no pairing of them is right for a visibility order.
 /// numPoints may be 0 (then it is computed as 1 + the largest id). numTets must be < 2^31.
-PSIVOLUMEREPRESENTATIONS_EXPORT TetConnectivityResult ComputeTetNeighbors(
+PSIVOLUMECORE_EXPORT TetConnectivityResult ComputeTetNeighbors(
   const uint32_t* tets, size_t numTets, size_t numPoints, std::vector<int32_t>& neighbors);
 
 /// Bit i set (1 << i) where face i of the tetrahedron is a boundary face (neighbour -1).
-PSIVOLUMEREPRESENTATIONS_EXPORT std::vector<uint8_t> BoundaryFaceFlags(
+PSIVOLUMECORE_EXPORT std::vector<uint8_t> BoundaryFaceFlags(
   const std::vector<int32_t>& neighbors);
 
 } // namespace psi
