@@ -227,7 +227,6 @@ MPVONCResult SortMPVONC(const float* points4, const uint32_t* tets, size_t numTe
       }
     }
   }
-  result.UnorderedTets = numTets - order.size();
   return result;
 }
 

@@ -36,7 +36,6 @@ struct MPVONCResult
 {
   size_t CyclesBroken = 0;        ///< tetrahedra emitted while none was ready (cycle breaks)
   size_t ViolatedConstraints = 0; ///< face constraints the cycle breaks had to violate
-  size_t UnorderedTets = 0;       ///< tetrahedra not placed (always 0: the fallback places all)
   size_t Constraints = 0;         ///< interior faces that impose an order
   size_t DegenerateFaces = 0;     ///< interior faces seen edge-on (or of flat tetrahedra)
   size_t InconsistentFaces = 0;   ///< neighbour entries without a reciprocal entry (ignored)

@@ -39,9 +39,6 @@ struct ProjectionClass
   std::array<int, 4> p{ { 0, 1, 2, 3 } };
 };
 
-/// Number of triangles each class emits (seed 003 Fig. 1), indexed by class.
-constexpr int TrianglesPerClass[5] = { 0, 3, 4, 2, 1 };
-
 using ProjectionClassTable = std::array<ProjectionClass, 81>;
 
 /// Index of the truth table for projected points (x[i], y[i]), computed with the tests of

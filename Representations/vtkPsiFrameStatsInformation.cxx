@@ -22,12 +22,7 @@ void vtkPsiFrameStatsInformation::CopyFromObject(vtkObject* object)
   {
     return;
   }
-  this->NumberOfTetrahedra = repr->GetNumberOfTetrahedra();
-  this->NumberOfSkippedCells = repr->GetNumberOfSkippedCells();
-  this->LastSortCycles = repr->GetLastSortCycles();
-  this->LastRenderSeconds = repr->GetLastRenderSeconds();
-  this->LastSortSeconds = repr->GetLastSortSeconds();
-  this->LastPreIntegrationSeconds = repr->GetLastPreIntegrationSeconds();
+  this->Stats = repr->GetFrameStats();
 }
 
 void vtkPsiFrameStatsInformation::AddInformation(vtkPVInformation* other)
@@ -37,22 +32,16 @@ void vtkPsiFrameStatsInformation::AddInformation(vtkPVInformation* other)
   {
     return;
   }
-  this->NumberOfTetrahedra += stats->NumberOfTetrahedra;
-  this->NumberOfSkippedCells += stats->NumberOfSkippedCells;
-  this->LastSortCycles += stats->LastSortCycles;
-  this->LastRenderSeconds = std::max(this->LastRenderSeconds, stats->LastRenderSeconds);
-  this->LastSortSeconds = std::max(this->LastSortSeconds, stats->LastSortSeconds);
-  this->LastPreIntegrationSeconds =
-    std::max(this->LastPreIntegrationSeconds, stats->LastPreIntegrationSeconds);
+  this->Stats.Add(stats->Stats);
 }
 
 void vtkPsiFrameStatsInformation::CopyToStream(vtkClientServerStream* stream)
 {
   stream->Reset();
-  *stream << vtkClientServerStream::Reply << static_cast<long long>(this->NumberOfTetrahedra)
-          << static_cast<long long>(this->NumberOfSkippedCells)
-          << static_cast<long long>(this->LastSortCycles) << this->LastRenderSeconds
-          << this->LastSortSeconds << this->LastPreIntegrationSeconds << vtkClientServerStream::End;
+  *stream << vtkClientServerStream::Reply << static_cast<long long>(this->Stats.NumberOfTetrahedra)
+          << static_cast<long long>(this->Stats.NumberOfSkippedCells)
+          << static_cast<long long>(this->Stats.LastSortCycles) << this->Stats.LastRenderSeconds
+          << this->Stats.LastSortSeconds << this->Stats.LastPreIntegrationSeconds << vtkClientServerStream::End;
 }
 
 void vtkPsiFrameStatsInformation::CopyFromStream(const vtkClientServerStream* stream)
@@ -62,21 +51,21 @@ void vtkPsiFrameStatsInformation::CopyFromStream(const vtkClientServerStream* st
   {
     stream->GetArgument(0, i, &counts[i]);
   }
-  this->NumberOfTetrahedra = static_cast<vtkIdType>(counts[0]);
-  this->NumberOfSkippedCells = static_cast<vtkIdType>(counts[1]);
-  this->LastSortCycles = static_cast<vtkIdType>(counts[2]);
-  stream->GetArgument(0, 3, &this->LastRenderSeconds);
-  stream->GetArgument(0, 4, &this->LastSortSeconds);
-  stream->GetArgument(0, 5, &this->LastPreIntegrationSeconds);
+  this->Stats.NumberOfTetrahedra = static_cast<vtkIdType>(counts[0]);
+  this->Stats.NumberOfSkippedCells = static_cast<vtkIdType>(counts[1]);
+  this->Stats.LastSortCycles = static_cast<vtkIdType>(counts[2]);
+  stream->GetArgument(0, 3, &this->Stats.LastRenderSeconds);
+  stream->GetArgument(0, 4, &this->Stats.LastSortSeconds);
+  stream->GetArgument(0, 5, &this->Stats.LastPreIntegrationSeconds);
 }
 
 void vtkPsiFrameStatsInformation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "NumberOfTetrahedra: " << this->NumberOfTetrahedra << "\n";
-  os << indent << "NumberOfSkippedCells: " << this->NumberOfSkippedCells << "\n";
-  os << indent << "LastSortCycles: " << this->LastSortCycles << "\n";
-  os << indent << "LastRenderSeconds: " << this->LastRenderSeconds << "\n";
-  os << indent << "LastSortSeconds: " << this->LastSortSeconds << "\n";
-  os << indent << "LastPreIntegrationSeconds: " << this->LastPreIntegrationSeconds << "\n";
+  os << indent << "NumberOfTetrahedra: " << this->Stats.NumberOfTetrahedra << "\n";
+  os << indent << "NumberOfSkippedCells: " << this->Stats.NumberOfSkippedCells << "\n";
+  os << indent << "LastSortCycles: " << this->Stats.LastSortCycles << "\n";
+  os << indent << "LastRenderSeconds: " << this->Stats.LastRenderSeconds << "\n";
+  os << indent << "LastSortSeconds: " << this->Stats.LastSortSeconds << "\n";
+  os << indent << "LastPreIntegrationSeconds: " << this->Stats.LastPreIntegrationSeconds << "\n";
 }

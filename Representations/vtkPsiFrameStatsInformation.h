@@ -18,6 +18,7 @@
 #ifndef vtkPsiFrameStatsInformation_h
 #define vtkPsiFrameStatsInformation_h
 
+#include "PsiFrameStats.h"
 #include "PsiVolumeRepresentationsModule.h"
 #include "vtkPVInformation.h"
 
@@ -36,16 +37,16 @@ public:
 
   ///@{
   /// Summed over the processes.
-  vtkGetMacro(NumberOfTetrahedra, vtkIdType);
-  vtkGetMacro(NumberOfSkippedCells, vtkIdType);
-  vtkGetMacro(LastSortCycles, vtkIdType);
+  vtkIdType GetNumberOfTetrahedra() const { return this->Stats.NumberOfTetrahedra; }
+  vtkIdType GetNumberOfSkippedCells() const { return this->Stats.NumberOfSkippedCells; }
+  vtkIdType GetLastSortCycles() const { return this->Stats.LastSortCycles; }
   ///@}
 
   ///@{
   /// Largest over the processes.
-  vtkGetMacro(LastRenderSeconds, double);
-  vtkGetMacro(LastSortSeconds, double);
-  vtkGetMacro(LastPreIntegrationSeconds, double);
+  double GetLastRenderSeconds() const { return this->Stats.LastRenderSeconds; }
+  double GetLastSortSeconds() const { return this->Stats.LastSortSeconds; }
+  double GetLastPreIntegrationSeconds() const { return this->Stats.LastPreIntegrationSeconds; }
   ///@}
 
 protected:
@@ -56,12 +57,9 @@ private:
   vtkPsiFrameStatsInformation(const vtkPsiFrameStatsInformation&) = delete;
   void operator=(const vtkPsiFrameStatsInformation&) = delete;
 
-  vtkIdType NumberOfTetrahedra = 0;
-  vtkIdType NumberOfSkippedCells = 0;
-  vtkIdType LastSortCycles = 0;
-  double LastRenderSeconds = 0;
-  double LastSortSeconds = 0;
-  double LastPreIntegrationSeconds = 0;
+#ifndef __VTK_WRAP__
+  psi::FrameStats Stats;
+#endif
 };
 
 #endif

@@ -1,15 +1,19 @@
 /**
  * @class   vtkPsiVolumeMapper
- * @brief   HAPT-style geometry-shader projected tetrahedra with selectable ray integration.
+ * @brief   Projected tetrahedra in a geometry shader (Maximo et al. 2010) with selectable ray
+ *          integration (Moreland & Angel 2004 and the methods of Moreland's dissertation).
  *
- * Renders the tetrahedra of an unstructured grid (Maximo et al., HAPT, seed 002):
- *  - the mesh is uploaded once: points (xyz + scalar) as a texture buffer, tetrahedra as one
- *    uvec4 vertex attribute each; per frame only the visibility order (an index buffer) changes;
- *  - tetrahedra are drawn as GL_POINTS in back-to-front order (PsiVisibilitySort);
- *  - a geometry shader classifies each projection with the PTINT ternary truth table
- *    (PsiProjectionClasses) and emits 1-4 triangles carrying front scalar, back scalar, thickness;
- *  - a fragment shader integrates the segment (IntegrationMethod) into a floating-point target,
- *    clipped against the opaque geometry already drawn, which is then composited over the scene.
+ * The mapper conducts one frame through parts that each own one job and its GPU resources
+ * (docs/architecture.md follows a frame through them):
+ *  - PsiMeshBuffers: the tetrahedra gathered from the input (psi::GatherTetMesh) and uploaded
+ *    once: points as a texture buffer, one uvec4 attribute of point ids per tetrahedron;
+ *  - PsiVisibilityOrder: back-to-front order (centroid or MPVONC, psi::TetSort) as an index
+ *    buffer of GL_POINTS, re-sorted when the view changes;
+ *  - PsiTransferTextures: transfer function, opacity prefix, Psi and pre-integration tables;
+ *  - psi::ComposeShaders: the program for the features the scene calls for;
+ *  - PsiRenderTarget: scene depth copies, the float target, the composite over the scene.
+ * A geometry shader classifies each projection with the PTINT ternary truth table (Marroquim et
+ * al. 2008) and emits 1-4 triangles; a fragment shader integrates each ray segment.
  *
  * Cell scalars are supported by giving each tetrahedron its own four points (constant scalar).
  * Cells that are not tetrahedra, and tetrahedra with a NaN/Inf scalar, are skipped and counted
@@ -21,13 +25,22 @@
 #include "PsiVolumeRepresentationsModule.h"
 #include "vtkUnstructuredGridVolumeMapper.h"
 
+#include "PsiFrameStats.h"
+#include "PsiIsosurfaceList.h"
+
 #include <memory>
 #include <string>
 #include <vector>
 
 class vtkRenderer;
+class vtkShaderProgram;
 class vtkVolume;
 class vtkWindow;
+struct PsiFrameCamera;
+namespace psi
+{
+struct ShaderFeatures;
+}
 
 class PSIVOLUMEREPRESENTATIONS_EXPORT vtkPsiVolumeMapper : public vtkUnstructuredGridVolumeMapper
 {
@@ -87,16 +100,18 @@ public:
   vtkGetMacro(TransferFunctionSamples, int);
 
   ///@{
-  /// Isosurfaces drawn inside the volume (issue 5), in exact visibility order with the volume
-  /// inside every cell (see IsosurfaceMethod). Values may come in any order: they are sorted when drawn, and duplicates and non-finite
-  /// values dropped. With none, the program is the plain volume's: no cost at all.
+  /// Isosurfaces drawn inside the volume, in exact visibility order with the volume inside every
+  /// cell (see IsosurfaceMethod). Values may come in any order: when set they are sorted, and
+  /// duplicates and non-finite values dropped (psi::IsosurfaceList); at most
+  /// psi::IsosurfaceList::MaxCount (32) are drawn, with a warning. With none, the program is the
+  /// plain volume's: no cost at all.
   void SetNumberOfIsosurfaces(int n);
   int GetNumberOfIsosurfaces() const { return static_cast<int>(this->IsosurfaceValues.size()); }
   void SetIsosurfaceValue(int i, double value);
   double GetIsosurfaceValue(int i) const;
   void SetIsosurfaceValues(const std::vector<double>& values);
   /// Opacity of every isosurface, 0..1 (default 1: opaque, hides what is behind it).
-  vtkSetClampMacro(IsosurfaceOpacity, double, 0.0, 1.0);
+  void SetIsosurfaceOpacity(double opacity);
   vtkGetMacro(IsosurfaceOpacity, double);
   /// Each isosurface's own opacity, in the order of the isovalues as given: entry i applies to
   /// isovalue i; isovalues without an entry use IsosurfaceOpacity. Values are clamped to 0..1.
@@ -127,9 +142,7 @@ public:
   ///    composites the surfaces there (no extra geometry; every fragment pays the search).
   ///  - ISO_AUTO (default): marching tetrahedra when early discard applies (the opacity function
   ///    has zero regions, e.g. plain contours: only the surfaces and the visible pieces are
-  ///    drawn), per fragment otherwise. Both give the same image; on the Blunt Fin with
-  ///    llvmpipe, marching tetrahedra take 0.43-0.50x the per-fragment time for plain contours and
-  ///    1.25-1.28x with a visible volume everywhere (Benchmarks/bench_features.py).
+  ///    drawn), per fragment otherwise. Both give the same image (the README has the costs).
   enum IsosurfaceMethods
   {
     ISO_MARCHING_TETRAHEDRA = 0,
@@ -167,7 +180,7 @@ public:
   /// Largest number of transfer-function nodes used for adaptive sampling (more are thinned).
   static constexpr int MaxAdaptiveNodes = 64;
   /// Largest number of isosurfaces (more are ignored with a warning).
-  static constexpr int MaxIsosurfaces = 32;
+  static constexpr int MaxIsosurfaces = psi::IsosurfaceList::MaxCount;
 
   void Render(vtkRenderer* ren, vtkVolume* vol) override;
   void ReleaseGraphicsResources(vtkWindow* win) override;
@@ -176,14 +189,15 @@ public:
   /// What the last Render did: tetrahedra drawn, cells skipped (non-tetrahedra, non-finite
   /// scalars), CPU seconds spent sorting and in the whole call (GL work is asynchronous: call
   /// vtkRenderWindow::WaitForCompletion() before reading a wall-clock frame time).
-  vtkGetMacro(NumberOfTetrahedra, vtkIdType);
-  vtkGetMacro(NumberOfSkippedCells, vtkIdType);
-  vtkGetMacro(LastSortSeconds, double);
+  const psi::FrameStats& GetFrameStats() const { return this->Stats; }
+  vtkIdType GetNumberOfTetrahedra() const { return this->Stats.NumberOfTetrahedra; }
+  vtkIdType GetNumberOfSkippedCells() const { return this->Stats.NumberOfSkippedCells; }
+  double GetLastSortSeconds() const { return this->Stats.LastSortSeconds; }
   /// Seconds spent rebuilding the full pre-integration table (last rebuild).
-  vtkGetMacro(LastPreIntegrationSeconds, double);
+  double GetLastPreIntegrationSeconds() const { return this->Stats.LastPreIntegrationSeconds; }
   /// Cycles MPVONC had to break in the last sort.
-  vtkGetMacro(LastSortCycles, vtkIdType);
-  vtkGetMacro(LastRenderSeconds, double);
+  vtkIdType GetLastSortCycles() const { return this->Stats.LastSortCycles; }
+  double GetLastRenderSeconds() const { return this->Stats.LastRenderSeconds; }
   /// Zeroes the read-outs above (no frame drawn, e.g. empty input).
   void ResetStatistics();
   /// Whether the last frame needed the near-plane path (camera inside or close to the mesh).
@@ -206,20 +220,16 @@ protected:
   int IntegrationMethod = PARTIAL_PRE_INTEGRATION;
   int TransferFunctionSamples = 1024;
   int SortMethod = MPVONC;
-  double LastPreIntegrationSeconds = 0;
-  vtkIdType LastSortCycles = 0;
   bool ExactPerspectiveSegments = true;
   bool EarlyDiscard = true;
   bool LastUsedEarlyDiscard = false;
-  vtkIdType NumberOfTetrahedra = 0;
-  vtkIdType NumberOfSkippedCells = 0;
-  double LastSortSeconds = 0;
-  double LastRenderSeconds = 0;
   bool LastUsedNearPlaneClipping = false;
   bool LastUsedOpaqueClipping = false;
   std::vector<double> IsosurfaceValues;
   double IsosurfaceOpacity = 1.0;
   std::vector<double> IsosurfaceOpacities;
+  psi::IsosurfaceList Isosurfaces; ///< normalized from the three above when they are set
+  psi::FrameStats Stats;
   double IsosurfaceColor[3] = { 1.0, 1.0, 1.0 };
   bool IsosurfaceUseColorMap = true;
   bool IsosurfaceLighting = true;
@@ -235,6 +245,17 @@ protected:
 private:
   vtkPsiVolumeMapper(const vtkPsiVolumeMapper&) = delete;
   void operator=(const vtkPsiVolumeMapper&) = delete;
+
+  void UpdateIsosurfaceList();
+  bool UpdateMesh(vtkRenderer* ren, vtkUnstructuredGridBase* input);
+  void WarnAboutSkippedCells();
+  void UpdateTables(vtkRenderer* ren, vtkVolume* vol);
+  psi::ShaderFeatures ChooseFeatures(
+    vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam);
+  vtkShaderProgram* ReadyProgram(vtkRenderer* ren, const psi::ShaderFeatures& features);
+  void SetShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkVolume* vol,
+    const PsiFrameCamera& cam, const psi::ShaderFeatures& features);
+  void DeactivateTables(const psi::ShaderFeatures& features);
 
   struct Internals;
   std::unique_ptr<Internals> Impl;

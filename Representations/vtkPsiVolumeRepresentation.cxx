@@ -217,9 +217,9 @@ double vtkPsiVolumeRepresentation::GetLastSortSeconds()
   return this->PsiMapper->GetLastSortSeconds();
 }
 
-vtkPsiVolumeMapper* vtkPsiVolumeRepresentation::GetPsiVolumeMapper()
+const psi::FrameStats& vtkPsiVolumeRepresentation::GetFrameStats() const
 {
-  return this->PsiMapper;
+  return this->PsiMapper->GetFrameStats();
 }
 
 void vtkPsiVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)

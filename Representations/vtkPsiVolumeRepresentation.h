@@ -12,6 +12,7 @@
 #define vtkPsiVolumeRepresentation_h
 
 #include "PsiVolumeRepresentationsModule.h"
+#include "PsiFrameStats.h"
 #include "vtkNew.h"
 #include "vtkUnstructuredGridVolumeRepresentation.h"
 
@@ -71,9 +72,11 @@ public:
   double GetLastSortSeconds();
   double GetLastPreIntegrationSeconds();
   vtkIdType GetLastSortCycles();
+#ifndef __VTK_WRAP__
+  /// All of the above at once (vtkPsiFrameStatsInformation gathers it over the processes).
+  const psi::FrameStats& GetFrameStats() const;
+#endif
   ///@}
-
-  vtkPsiVolumeMapper* GetPsiVolumeMapper();
 
 protected:
   vtkPsiVolumeRepresentation();

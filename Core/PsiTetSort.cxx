@@ -1,0 +1,121 @@
+#include "PsiTetSort.h"
+
+#include "PsiMPVONCSort.h"
+#include "PsiTetConnectivity.h"
+#include "PsiVisibilitySort.h"
+
+#include "vtkSMPTools.h"
+
+#include <atomic>
+
+namespace psi
+{
+TetSort::~TetSort() = default;
+
+namespace
+{
+class CentroidSort : public TetSort
+{
+public:
+  void SetMesh(const TetMesh* mesh, std::vector<int32_t>) override
+  {
+    this->Centroids = ComputeCentroids(mesh->Points4.data(), mesh->Tets.data(), mesh->NumberOfTets());
+  }
+  size_t Sort(const double eye[3], bool parallel, std::vector<uint32_t>& order) override
+  {
+    SortBackToFront(this->Centroids, eye, parallel, order);
+    return 0;
+  }
+
+private:
+  std::vector<float> Centroids;
+};
+
+class MPVONC : public TetSort
+{
+public:
+  void SetMesh(const TetMesh* mesh, std::vector<int32_t> faceNeighbors) override
+  {
+    this->Mesh = mesh;
+    this->Neighbors = std::move(faceNeighbors);
+    if (!this->Neighbors.empty() && !FaceNeighborsMatch(*mesh, this->Neighbors))
+    {
+      this->Neighbors.clear();
+    }
+  }
+  size_t Sort(const double eye[3], bool parallel, std::vector<uint32_t>& order) override
+  {
+    const size_t n = this->Mesh->NumberOfTets();
+    if (this->Neighbors.size() != 4 * n)
+    {
+      ComputeTetNeighbors(this->Mesh->Tets.data(), n, this->Mesh->NumberOfPoints(), this->Neighbors);
+    }
+    const MPVONCResult r = SortMPVONC(this->Mesh->Points4.data(), this->Mesh->Tets.data(), n,
+      this->Neighbors.data(), eye, parallel, order);
+    return r.CyclesBroken;
+  }
+
+private:
+  const TetMesh* Mesh = nullptr;
+  std::vector<int32_t> Neighbors;
+};
+
+// Whether tetrahedron `other` has a point at the position of point id `p`.
+bool HasPointAt(const TetMesh& m, uint32_t other, uint32_t p)
+{
+  const float* q = &m.Points4[4 * static_cast<size_t>(p)];
+  for (int v = 0; v < 4; ++v)
+  {
+    const float* r = &m.Points4[4 * static_cast<size_t>(m.Tets[4 * static_cast<size_t>(other) + v])];
+    if (r[0] == q[0] && r[1] == q[1] && r[2] == q[2])
+    {
+      return true;
+    }
+  }
+  return false;
+}
+} // namespace
+
+bool FaceNeighborsMatch(const TetMesh& m, const std::vector<int32_t>& nb)
+{
+  const size_t n = m.NumberOfTets();
+  if (nb.size() != 4 * n)
+  {
+    return false;
+  }
+  std::atomic<bool> ok(true);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType t = begin; t < end && ok.load(std::memory_order_relaxed); ++t)
+    {
+      for (int f = 0; f < 4; ++f)
+      {
+        const int32_t j = nb[4 * t + f];
+        if (j < 0)
+        {
+          continue;
+        }
+        bool match = static_cast<size_t>(j) < n && j != t;
+        for (int v = 0; v < 4 && match; ++v) // face f is opposite vertex f
+        {
+          match = v == f || HasPointAt(m, static_cast<uint32_t>(j), m.Tets[4 * t + v]);
+        }
+        if (!match)
+        {
+          ok = false;
+        }
+      }
+    }
+  });
+  return ok;
+}
+
+std::unique_ptr<TetSort> NewCentroidSort()
+{
+  return std::unique_ptr<TetSort>(new CentroidSort);
+}
+
+std::unique_ptr<TetSort> NewMPVONCSort()
+{
+  return std::unique_ptr<TetSort>(new MPVONC);
+}
+} // namespace psi

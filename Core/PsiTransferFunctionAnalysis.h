@@ -1,0 +1,37 @@
+// PsiTransferFunctionAnalysis: what the renderer needs to know about a transfer function beyond
+// its sampled table (GL-free): its exact value at a scalar, the control points where it bends
+// (adaptive sampling splits segments there, Moreland's dissertation §4.3), and where its opacity
+// is zero (early discard, Maximo et al. 2010 §3.5).
+#ifndef PsiTransferFunctionAnalysis_h
+#define PsiTransferFunctionAnalysis_h
+
+#include "PsiVolumeCoreModule.h"
+
+#include <vector>
+
+class vtkVolumeProperty;
+
+namespace psi
+{
+struct TransferFunctionTable;
+
+/// Color (rgb) and opacity of component 0 of `property` at scalar s, from the functions
+/// themselves (not a table).
+PSIVOLUMECORE_EXPORT void EvaluateTransferFunction(
+  vtkVolumeProperty* property, double s, double rgba[4]);
+
+/// Control points of the color and opacity functions strictly inside `range` where the transfer
+/// function bends (not collinear with its neighbouring nodes, or a step): the scalars at which a
+/// segment must be split for color and attenuation to be linear on each piece. Ascending; evenly
+/// thinned to at most `maxNodes`.
+PSIVOLUMECORE_EXPORT std::vector<float> TransferFunctionKinks(
+  vtkVolumeProperty* property, const double range[2], int maxNodes);
+
+/// Prefix counts of the table's samples with non-zero opacity: entry i counts samples 0..i. A
+/// scalar interval meets only zero-opacity samples when the counts at its ends are equal
+/// (Maximo et al. 2010 §3.5). `hasZeroOpacity` tells whether the table has a zero region at all.
+PSIVOLUMECORE_EXPORT std::vector<float> OpacityPrefixCounts(
+  const TransferFunctionTable& table, bool& hasZeroOpacity);
+} // namespace psi
+
+#endif

@@ -1,0 +1,126 @@
+#include "PsiMeshBuffers.h"
+
+#include "vtkDataArray.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkUnstructuredGridBase.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <sstream>
+
+PsiMeshBuffers::PsiMeshBuffers() = default;
+PsiMeshBuffers::~PsiMeshBuffers() = default;
+
+bool PsiMeshBuffers::NeedsUpdate(
+  vtkUnstructuredGridBase* input, vtkDataArray* scalars, const std::string& arrayKey) const
+{
+  const vtkMTimeType time = std::max(input->GetMTime(), scalars->GetMTime());
+  return !this->OnGPU || time != this->Time || input != this->Input ||
+    arrayKey != this->ArrayKey;
+}
+
+bool PsiMeshBuffers::Update(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBase* input,
+  vtkDataArray* scalars, bool cellScalars, const std::string& arrayKey, std::string& error)
+{
+  this->Mesh = psi::GatherTetMesh(input, scalars, cellScalars);
+  this->Time = std::max(input->GetMTime(), scalars->GetMTime());
+  this->Input = input;
+  this->ArrayKey = arrayKey;
+  ++this->Version;
+  bool fits = true;
+  GLint maxTexels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  if (this->Mesh.NumberOfPoints() > static_cast<size_t>(maxTexels) ||
+    this->Mesh.NumberOfTets() > 0xffffffffu)
+  {
+    std::ostringstream msg;
+    msg << "mesh too large for this GPU (" << this->Mesh.NumberOfPoints()
+        << " points; the limit is " << maxTexels << ").";
+    error = msg.str();
+    this->Mesh = psi::TetMesh();
+    fits = false;
+  }
+  if (!this->OnGPU)
+  {
+    glGenBuffers(1, &this->TetBuffer);
+    glGenVertexArrays(1, &this->VAO);
+  }
+  const std::vector<float>& points4 = this->Mesh.Points4;
+  this->PointsBuffer->Upload(points4.empty() ? std::vector<float>(4, 0.f) : points4,
+    vtkOpenGLBufferObject::TextureBuffer);
+  this->PointsTexture->SetContext(renWin);
+  this->PointsTexture->CreateTextureBuffer(
+    static_cast<unsigned int>(std::max<size_t>(this->Mesh.NumberOfPoints(), 1)), 4, VTK_FLOAT,
+    this->PointsBuffer);
+  glBindBuffer(GL_ARRAY_BUFFER, this->TetBuffer);
+  glBufferData(GL_ARRAY_BUFFER, this->Mesh.Tets.size() * sizeof(uint32_t),
+    this->Mesh.Tets.data(), GL_STATIC_DRAW);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  this->OnGPU = true;
+  this->GradientsOnGPU = false;
+  return fits;
+}
+
+void PsiMeshBuffers::UpdateGradients(vtkOpenGLRenderWindow* renWin)
+{
+  if (this->GradientsOnGPU)
+  {
+    return;
+  }
+  this->GradientBuffer->Upload(
+    psi::PointGradients(this->Mesh), vtkOpenGLBufferObject::TextureBuffer);
+  this->GradientTexture->SetContext(renWin);
+  this->GradientTexture->CreateTextureBuffer(
+    static_cast<unsigned int>(std::max<size_t>(this->Mesh.NumberOfPoints(), 1)), 4, VTK_FLOAT,
+    this->GradientBuffer);
+  this->GradientsOnGPU = true;
+}
+
+void PsiMeshBuffers::Activate(vtkShaderProgram* program, bool gradients)
+{
+  this->PointsTexture->Activate();
+  program->SetUniformi("points", this->PointsTexture->GetTextureUnit());
+  this->GradientsActive = gradients && this->GradientsOnGPU;
+  if (this->GradientsActive)
+  {
+    this->GradientTexture->Activate();
+    program->SetUniformi("pointGradients", this->GradientTexture->GetTextureUnit());
+  }
+  glBindVertexArray(this->VAO);
+  glBindBuffer(GL_ARRAY_BUFFER, this->TetBuffer);
+  const GLint loc = glGetAttribLocation(program->GetHandle(), "tetPointIds");
+  glEnableVertexAttribArray(loc);
+  glVertexAttribIPointer(loc, 4, GL_UNSIGNED_INT, 0, nullptr);
+}
+
+void PsiMeshBuffers::Deactivate()
+{
+  glBindVertexArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  this->PointsTexture->Deactivate();
+  if (this->GradientsActive)
+  {
+    this->GradientTexture->Deactivate();
+    this->GradientsActive = false;
+  }
+}
+
+void PsiMeshBuffers::ReleaseGraphicsResources(vtkWindow* win)
+{
+  if (this->OnGPU)
+  {
+    glDeleteBuffers(1, &this->TetBuffer);
+    glDeleteVertexArrays(1, &this->VAO);
+  }
+  this->TetBuffer = this->VAO = 0;
+  this->PointsBuffer->ReleaseGraphicsResources();
+  this->PointsTexture->ReleaseGraphicsResources(win);
+  this->GradientBuffer->ReleaseGraphicsResources();
+  this->GradientTexture->ReleaseGraphicsResources(win);
+  this->GradientsOnGPU = false;
+  this->OnGPU = false;
+  this->Time = 0;
+}

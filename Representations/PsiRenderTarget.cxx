@@ -1,0 +1,148 @@
+#include "PsiRenderTarget.h"
+
+#include "PsiCompositeFS.h"
+
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+PsiRenderTarget::PsiRenderTarget() = default;
+PsiRenderTarget::~PsiRenderTarget() = default;
+
+bool PsiRenderTarget::CaptureDepthTexture(
+  vtkRenderer* ren, vtkOpenGLRenderWindow* renWin, bool sampleDepth)
+{
+  int w, h, x0, y0;
+  ren->GetTiledSizeAndOrigin(&w, &h, &x0, &y0);
+  if (w <= 0 || h <= 0)
+  {
+    return false;
+  }
+  vtkOpenGLState* ostate = renWin->GetState();
+  this->DepthTexture->SetContext(renWin);
+  this->DepthSampleTexture->SetContext(renWin);
+  if (this->Size[0] != w || this->Size[1] != h || !this->Framebuffer)
+  {
+    this->DepthTexture->AllocateDepth(w, h, vtkTextureObject::Float32);
+    this->DepthSampleTexture->AllocateDepth(w, h, vtkTextureObject::Float32);
+    ostate->PushFramebufferBindings();
+    if (!this->Framebuffer)
+    {
+      this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      this->Framebuffer->SetContext(renWin);
+      this->Framebuffer->PopulateFramebuffer(w, h, true, 1, VTK_FLOAT, false, 0, 0);
+    }
+    this->Framebuffer->Bind();
+    this->Framebuffer->Resize(w, h);
+    this->Framebuffer->AddDepthAttachment(this->DepthTexture);
+    ostate->PopFramebufferBindings();
+    this->Size[0] = w;
+    this->Size[1] = h;
+  }
+  this->Origin[0] = x0;
+  this->Origin[1] = y0;
+  // the scene's depth, read from the framebuffer bound for reading (the one being rendered)
+  this->DepthTexture->Activate();
+  this->DepthTexture->CopyFromFrameBuffer(x0, y0, 0, 0, w, h);
+  this->DepthTexture->Deactivate();
+  this->SampleDepth = sampleDepth;
+  if (sampleDepth)
+  {
+    this->DepthSampleTexture->Activate();
+    this->DepthSampleTexture->CopyFromFrameBuffer(x0, y0, 0, 0, w, h);
+  }
+  return true;
+}
+
+void PsiRenderTarget::SetShaderParameters(vtkShaderProgram* program)
+{
+  if (this->SampleDepth)
+  {
+    program->SetUniformi("sceneDepth", this->DepthSampleTexture->GetTextureUnit());
+  }
+  const float viewport[2] = { static_cast<float>(this->Size[0]),
+    static_cast<float>(this->Size[1]) };
+  program->SetUniform2f("viewportSize", viewport);
+}
+
+void PsiRenderTarget::DrawAndComposite(
+  vtkOpenGLRenderWindow* renWin, const std::function<void()>& drawVolume)
+{
+  vtkOpenGLState* ostate = renWin->GetState();
+  {
+    vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable cull(ostate, GL_CULL_FACE);
+    vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
+    vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
+    vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
+    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+    vtkOpenGLState::ScopedglClearColor clearColor(ostate);
+
+    ostate->PushFramebufferBindings();
+    this->Framebuffer->Bind();
+    this->Framebuffer->ActivateDrawBuffer(0);
+    ostate->vtkglViewport(0, 0, this->Size[0], this->Size[1]);
+    ostate->vtkglDisable(GL_SCISSOR_TEST);
+    ostate->vtkglClearColor(0, 0, 0, 0);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+    ostate->vtkglEnable(GL_DEPTH_TEST); // against the scene's opaque geometry
+    ostate->vtkglDepthFunc(GL_LESS);
+    ostate->vtkglDepthMask(GL_FALSE);
+    ostate->vtkglDisable(GL_CULL_FACE);
+    ostate->vtkglEnable(GL_BLEND);
+    // premultiplied "over", back to front
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    drawVolume();
+    ostate->PopFramebufferBindings();
+
+    ostate->vtkglViewport(this->Origin[0], this->Origin[1], this->Size[0], this->Size[1]);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    this->Composite(renWin);
+  }
+  if (this->SampleDepth)
+  {
+    this->DepthSampleTexture->Deactivate();
+  }
+}
+
+// The volume image (premultiplied) over the scene, with the blending the caller set.
+void PsiRenderTarget::Composite(vtkOpenGLRenderWindow* renWin)
+{
+  if (!this->CompositeQuad)
+  {
+    this->CompositeQuad.reset(new vtkOpenGLQuadHelper(renWin, nullptr, PsiCompositeFS, ""));
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(this->CompositeQuad->Program);
+  }
+  if (this->CompositeQuad->Program)
+  {
+    vtkTextureObject* color = this->Framebuffer->GetColorAttachmentAsTextureObject(0);
+    color->Activate();
+    this->CompositeQuad->Program->SetUniformi("volumeImage", color->GetTextureUnit());
+    this->CompositeQuad->Render();
+    color->Deactivate();
+  }
+}
+
+void PsiRenderTarget::ReleaseGraphicsResources(vtkWindow* win)
+{
+  this->DepthTexture->ReleaseGraphicsResources(win);
+  this->DepthSampleTexture->ReleaseGraphicsResources(win);
+  if (this->Framebuffer)
+  {
+    this->Framebuffer->ReleaseGraphicsResources(win);
+    this->Framebuffer = nullptr;
+  }
+  this->CompositeQuad.reset();
+  this->Size[0] = this->Size[1] = 0;
+}

@@ -1,0 +1,53 @@
+// PsiRenderTarget: where the volume is drawn and how it reaches the scene. The tetrahedra are
+// composited back to front ("over", premultiplied) into a float color target whose depth
+// attachment is a copy of the scene's depth, so that the hardware depth test hides cells behind
+// opaque geometry; a second copy is sampled by the shaders when opaque geometry or the near
+// plane cuts through cells. The float image is then composited over the scene.
+#ifndef PsiRenderTarget_h
+#define PsiRenderTarget_h
+
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+
+#include <functional>
+#include <memory>
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkRenderer;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+class PsiRenderTarget
+{
+public:
+  PsiRenderTarget();
+  ~PsiRenderTarget();
+
+  /// Sizes the target to the renderer's tile and copies the scene depth from the framebuffer
+  /// being rendered; with `sampleDepth` also the copy the shaders read. False for an empty tile.
+  bool CaptureDepthTexture(vtkRenderer* ren, vtkOpenGLRenderWindow* renWin, bool sampleDepth);
+  /// Sets the shaders' `sceneDepth` sampler and `viewportSize` (after CaptureDepthTexture).
+  void SetShaderParameters(vtkShaderProgram* program);
+  /// Clears the float target, runs `drawVolume` into it with blending and the depth test set
+  /// (all GL state restored afterwards), and composites the result over the scene.
+  void DrawAndComposite(vtkOpenGLRenderWindow* renWin, const std::function<void()>& drawVolume);
+  void ReleaseGraphicsResources(vtkWindow* win);
+
+private:
+  PsiRenderTarget(const PsiRenderTarget&) = delete;
+  void operator=(const PsiRenderTarget&) = delete;
+  void Composite(vtkOpenGLRenderWindow* renWin);
+
+  vtkNew<vtkTextureObject> DepthTexture;
+  vtkNew<vtkTextureObject> DepthSampleTexture;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+  std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
+  int Size[2] = { 0, 0 };
+  int Origin[2] = { 0, 0 };
+  bool SampleDepth = false;
+};
+
+#endif

@@ -1,0 +1,54 @@
+// PsiShaderParameters: the camera of one frame and the uniforms that do not belong to a GPU
+// table (those are set by each table's Activate, PsiTransferTextures): camera matrices,
+// isosurfaces with the scene's lights, adaptive-sampling nodes. One named step per concern, as
+// vtkOpenGLGPUVolumeRayCastMapper's SetCameraShaderParameters and its siblings.
+#ifndef PsiShaderParameters_h
+#define PsiShaderParameters_h
+
+#include "PsiIsosurfaceList.h"
+
+#include <vector>
+
+class vtkRenderer;
+class vtkShaderProgram;
+class vtkVolume;
+class vtkVolumeProperty;
+
+struct PsiFrameCamera
+{
+  double MCVC[16];   ///< model (shifted mesh) -> view, row-major
+  double View[16];   ///< world -> view, row-major
+  double VCDC[16];   ///< view -> clip, row-major
+  double DCVC[16];   ///< its inverse
+  bool Parallel = false;
+  double NearZ = 0;  ///< view-space z of the near plane (negative)
+
+  /// The camera of `ren` for the mesh of `vol` shifted by `shift` (psi::TetMesh::Shift).
+  static PsiFrameCamera FromRenderer(vtkRenderer* ren, vtkVolume* vol, const double shift[3]);
+  /// Whether the near plane cuts the box `bounds` (mesh coordinates): then cells crossing it
+  /// need the near-clipping path.
+  bool NearPlaneCuts(const double bounds[6]) const;
+};
+
+/// MCVCMatrix, VCDCMatrix, DCVCMatrix, nearZ, parallelProjection.
+void SetCameraShaderParameters(vtkShaderProgram* program, const PsiFrameCamera& camera);
+
+struct PsiIsosurfaceStyle
+{
+  bool UseColorMap = true;    ///< color each surface through the color map at its value
+  double Color[3] = { 1, 1, 1 }; ///< otherwise this solid color
+  bool Lighting = true;
+  bool Smooth = true;         ///< interpolated point gradients (needs normalMatrix)
+  int MaxLights = 8;
+};
+
+/// isoValues, isoColors, isoOpacities, isoLighting, the lights (lightCount, lightDirVC,
+/// lightColor) and, for smooth shading, normalMatrix.
+void SetIsosurfaceShaderParameters(vtkShaderProgram* program, const psi::IsosurfaceList& list,
+  const PsiIsosurfaceStyle& style, vtkVolumeProperty* property, vtkRenderer* ren,
+  const PsiFrameCamera& camera);
+
+/// tfNodes, tfNodeCount: where adaptive sampling splits segments.
+void SetAdaptiveShaderParameters(vtkShaderProgram* program, const std::vector<float>& nodes);
+
+#endif

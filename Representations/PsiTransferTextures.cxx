@@ -1,0 +1,197 @@
+#include "PsiTransferTextures.h"
+
+#include "PsiTable.h"
+#include "PsiTransferFunctionAnalysis.h"
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkVolumeProperty.h"
+
+namespace
+{
+void SetLinearClamped(vtkTextureObject* t, bool r = false)
+{
+  t->SetMinificationFilter(vtkTextureObject::Linear);
+  t->SetMagnificationFilter(vtkTextureObject::Linear);
+  t->SetWrapS(vtkTextureObject::ClampToEdge);
+  t->SetWrapT(vtkTextureObject::ClampToEdge);
+  if (r)
+  {
+    t->SetWrapR(vtkTextureObject::ClampToEdge);
+  }
+}
+
+void SetUniform2(vtkShaderProgram* p, const char* name, double a, double b)
+{
+  const float v[2] = { static_cast<float>(a), static_cast<float>(b) };
+  p->SetUniform2f(name, v);
+}
+} // namespace
+
+// ---- transfer function ------------------------------------------------------------------------
+PsiTransferFunctionTexture::PsiTransferFunctionTexture() = default;
+PsiTransferFunctionTexture::~PsiTransferFunctionTexture() = default;
+
+bool PsiTransferFunctionTexture::NeedsUpdate(
+  vtkVolumeProperty* property, const double range[2], int samples) const
+{
+  return property->GetMTime() > this->Time || this->Range[0] != range[0] ||
+    this->Range[1] != range[1] || this->Samples != samples;
+}
+
+void PsiTransferFunctionTexture::Update(vtkOpenGLRenderWindow* renWin,
+  vtkVolumeProperty* property, const double range[2], int samples)
+{
+  psi::TransferFunctionTable tf = psi::SampleTransferFunction(property, range, samples);
+  if (tf.Rgba != this->Table.Rgba || !this->Texture->GetHandle())
+  {
+    this->Texture->SetContext(renWin);
+    this->Texture->Create2DFromRaw(tf.Size, 1, 4, VTK_FLOAT, tf.Rgba.data());
+    SetLinearClamped(this->Texture);
+    this->Table = std::move(tf);
+    psi::OpacityPrefixCounts(this->Table, this->ZeroOpacity);
+    ++this->Version;
+  }
+  this->Time = property->GetMTime();
+  this->Range[0] = range[0];
+  this->Range[1] = range[1];
+  this->Samples = samples;
+}
+
+void PsiTransferFunctionTexture::Activate(vtkShaderProgram* program)
+{
+  this->Texture->Activate();
+  program->SetUniformi("transferFunction", this->Texture->GetTextureUnit());
+  // texture coordinate = s * scale + shift, on texel centres
+  const double n = this->Table.Size, r0 = this->Table.Range[0], r1 = this->Table.Range[1];
+  const double scale = (n - 1) / (n * (r1 - r0));
+  SetUniform2(program, "tfScaleShift", scale, 0.5 / n - r0 * scale);
+}
+
+void PsiTransferFunctionTexture::Deactivate()
+{
+  this->Texture->Deactivate();
+}
+
+void PsiTransferFunctionTexture::ReleaseGraphicsResources(vtkWindow* win)
+{
+  this->Texture->ReleaseGraphicsResources(win);
+  this->Table = psi::TransferFunctionTable();
+  this->Time = 0;
+}
+
+// ---- opacity prefix counts (early discard) ----------------------------------------------------
+PsiOpacityPrefixTexture::PsiOpacityPrefixTexture() = default;
+PsiOpacityPrefixTexture::~PsiOpacityPrefixTexture() = default;
+
+void PsiOpacityPrefixTexture::Update(
+  vtkOpenGLRenderWindow* renWin, const PsiTransferFunctionTexture& transfer)
+{
+  bool zero = false;
+  std::vector<float> prefix = psi::OpacityPrefixCounts(transfer.GetTable(), zero);
+  this->Texture->SetContext(renWin);
+  this->Texture->Create2DFromRaw(transfer.GetTable().Size, 1, 1, VTK_FLOAT, prefix.data());
+  this->Version = transfer.GetVersion();
+}
+
+void PsiOpacityPrefixTexture::Activate(
+  vtkShaderProgram* program, const psi::TransferFunctionTable& table)
+{
+  this->Texture->Activate();
+  program->SetUniformi("opacityPrefix", this->Texture->GetTextureUnit());
+  // scalar -> sample index: (s - r0) (N - 1) / (r1 - r0)
+  const double n = table.Size, r0 = table.Range[0], r1 = table.Range[1];
+  SetUniform2(program, "tfIndexScaleShift", (n - 1) / (r1 - r0), -r0 * (n - 1) / (r1 - r0));
+  program->SetUniformi("tfSamples", table.Size);
+}
+
+void PsiOpacityPrefixTexture::Deactivate()
+{
+  this->Texture->Deactivate();
+}
+
+void PsiOpacityPrefixTexture::ReleaseGraphicsResources(vtkWindow* win)
+{
+  this->Texture->ReleaseGraphicsResources(win);
+  this->Version = -1;
+}
+
+// ---- Psi table (partial pre-integration) ------------------------------------------------------
+PsiPsiTableTexture::PsiPsiTableTexture() = default;
+PsiPsiTableTexture::~PsiPsiTableTexture() = default;
+
+void PsiPsiTableTexture::Update(vtkOpenGLRenderWindow* renWin)
+{
+  const psi::PsiTable& table = psi::GetDefaultPsiTable();
+  this->Texture->SetContext(renWin);
+  this->Texture->Create2DFromRaw(
+    table.N, table.N, 1, VTK_FLOAT, const_cast<float*>(table.Values.data()));
+  SetLinearClamped(this->Texture);
+  this->Size = table.N;
+}
+
+void PsiPsiTableTexture::Activate(vtkShaderProgram* program)
+{
+  this->Texture->Activate();
+  program->SetUniformi("psiTable", this->Texture->GetTextureUnit());
+  SetUniform2(program, "psiScaleShift", (this->Size - 1.0) / this->Size, 0.5 / this->Size);
+}
+
+void PsiPsiTableTexture::Deactivate()
+{
+  this->Texture->Deactivate();
+}
+
+void PsiPsiTableTexture::ReleaseGraphicsResources(vtkWindow* win)
+{
+  this->Texture->ReleaseGraphicsResources(win);
+  this->Size = 0;
+}
+
+// ---- full pre-integration (Röttger et al. 2000) -----------------------------------------------
+PsiPreIntegrationTexture::PsiPreIntegrationTexture() = default;
+PsiPreIntegrationTexture::~PsiPreIntegrationTexture() = default;
+
+bool PsiPreIntegrationTexture::NeedsUpdate(int transferVersion, double maxLength) const
+{
+  return !this->Valid || this->Version != transferVersion || this->Table.MaxLength != maxLength;
+}
+
+double PsiPreIntegrationTexture::Update(
+  vtkOpenGLRenderWindow* renWin, const PsiTransferFunctionTexture& transfer, double maxLength)
+{
+  this->Table =
+    psi::BuildPreIntegrationTable(transfer.GetTable(), psi::GetDefaultPsiTable(), maxLength);
+  this->Texture->SetContext(renWin);
+  this->Texture->Create3DFromRaw(this->Table.ScalarSamples, this->Table.ScalarSamples,
+    this->Table.LengthSamples, 4, VTK_FLOAT, this->Table.Rgba.data());
+  SetLinearClamped(this->Texture, true);
+  this->Table.Rgba.clear();
+  this->Table.Rgba.shrink_to_fit();
+  this->Version = transfer.GetVersion();
+  this->Valid = true;
+  return this->Table.BuildSeconds;
+}
+
+void PsiPreIntegrationTexture::Activate(vtkShaderProgram* program)
+{
+  this->Texture->Activate();
+  program->SetUniformi("preIntegrated", this->Texture->GetTextureUnit());
+  const double ns = this->Table.ScalarSamples, nd = this->Table.LengthSamples;
+  const double r0 = this->Table.Range[0], r1 = this->Table.Range[1];
+  const double ss = (ns - 1) / (ns * (r1 - r0));
+  SetUniform2(program, "preScalarScaleShift", ss, 0.5 / ns - r0 * ss);
+  SetUniform2(program, "preLengthScaleShift", (nd - 1) / (nd * this->Table.MaxLength), 0.5 / nd);
+}
+
+void PsiPreIntegrationTexture::Deactivate()
+{
+  this->Texture->Deactivate();
+}
+
+void PsiPreIntegrationTexture::ReleaseGraphicsResources(vtkWindow* win)
+{
+  this->Texture->ReleaseGraphicsResources(win);
+  this->Valid = false;
+}

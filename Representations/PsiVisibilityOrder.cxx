@@ -1,0 +1,83 @@
+#include "PsiVisibilityOrder.h"
+
+#include "vtkMatrix4x4.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace
+{
+// The eye in model coordinates, or in parallel projection the view direction (0, 0, -1).
+void EyeInModel(const double mcvc[16], bool parallel, double eye[3])
+{
+  double inv[16];
+  vtkMatrix4x4::Invert(mcvc, inv);
+  for (int k = 0; k < 3; ++k)
+  {
+    eye[k] = parallel ? -inv[4 * k + 2] : inv[4 * k + 3] / inv[15];
+  }
+}
+} // namespace
+
+PsiVisibilityOrder::PsiVisibilityOrder() = default;
+PsiVisibilityOrder::~PsiVisibilityOrder() = default;
+
+bool PsiVisibilityOrder::NeedsUpdate(
+  int meshVersion, int method, const double mcvc[16], bool parallel) const
+{
+  return !this->OnGPU || meshVersion != this->MeshVersion || method != this->Method ||
+    parallel != this->Parallel || !std::equal(mcvc, mcvc + 16, this->View.begin());
+}
+
+void PsiVisibilityOrder::Update(const psi::TetMesh& mesh, int meshVersion,
+  std::vector<int32_t> faceNeighbors, int method, const double mcvc[16], bool parallel)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  if (method != this->Method || meshVersion != this->MeshVersion || !this->Sort)
+  {
+    this->Sort = method == MPVONC ? psi::NewMPVONCSort() : psi::NewCentroidSort();
+    this->Sort->SetMesh(&mesh, std::move(faceNeighbors));
+  }
+  double eye[3];
+  EyeInModel(mcvc, parallel, eye);
+  this->LastCycles = this->Sort->Sort(eye, parallel, this->Order);
+  if (!this->IndexBuffer)
+  {
+    glGenBuffers(1, &this->IndexBuffer);
+  }
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, this->Order.size() * sizeof(uint32_t),
+    this->Order.data(), GL_STREAM_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  this->Method = method;
+  this->MeshVersion = meshVersion;
+  std::copy(mcvc, mcvc + 16, this->View.begin());
+  this->Parallel = parallel;
+  this->OnGPU = true;
+  this->LastSortSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void PsiVisibilityOrder::Draw() const
+{
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
+  // Streamed in chunks so that no single draw call is unbounded (huge meshes).
+  const size_t n = this->Order.size(), chunk = size_t(1) << 22;
+  for (size_t first = 0; first < n; first += chunk)
+  {
+    const size_t count = std::min(chunk, n - first);
+    glDrawElements(GL_POINTS, static_cast<GLsizei>(count), GL_UNSIGNED_INT,
+      reinterpret_cast<const void*>(first * sizeof(uint32_t)));
+  }
+}
+
+void PsiVisibilityOrder::ReleaseGraphicsResources(vtkWindow*)
+{
+  if (this->IndexBuffer)
+  {
+    glDeleteBuffers(1, &this->IndexBuffer);
+  }
+  this->IndexBuffer = 0;
+  this->OnGPU = false;
+}
