@@ -1,4 +1,4 @@
-# Tests of the Filters module and of MPVONC (issue 4), included from Testing/CMakeLists.txt.
+# Tests of the Filters module and of MPVONC, included from Testing/CMakeLists.txt.
 # Tests that read the shared data exit with 77 when it is absent: reported as skipped, not passed.
 set(CGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE TRUE)
 find_package(CGAL REQUIRED)
@@ -21,3 +21,9 @@ add_executable(TestMPVONC Cxx/TestMPVONC.cxx)
 target_link_libraries(TestMPVONC PRIVATE PsiVolume::Filters PsiVolume::Representations PsiTestSupport
   CGAL::CGAL VTK::CommonCore VTK::CommonDataModel VTK::CommonExecutionModel)
 add_test(NAME MPVONC COMMAND TestMPVONC)
+
+# The renderer's mesh gathering and its reuse of the filter's FaceNeighbors (GL-free).
+add_executable(TestTetMesh Cxx/TestTetMesh.cxx)
+target_link_libraries(TestTetMesh PRIVATE PsiVolume::Filters PsiVolume::Core VTK::CommonCore
+  VTK::CommonDataModel VTK::CommonExecutionModel)
+add_test(NAME TetMesh COMMAND TestTetMesh)

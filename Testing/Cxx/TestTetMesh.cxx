@@ -1,0 +1,168 @@
+// The mesh as the renderer gathers it (psi::GatherTetMesh) and the reuse of the conforming
+// filter's FaceNeighbors array by MPVONC (psi::FaceNeighborsFromArray, psi::FaceNeighborsMatch):
+//  - the filter's neighbours equal those computed from the gathered mesh;
+//  - cells skipped by the renderer (a non-tetrahedron, a NaN scalar) are remapped, and the
+//    remapped neighbours equal those computed from the reduced mesh;
+//  - with cell scalars (private points per tetrahedron) the filter's neighbours still match by
+//    position, where connectivity by point id finds none;
+//  - a stale array (cells reordered downstream) is rejected;
+//  - the sort interface gives a permutation either way.
+#include "PsiTestCheck.h"
+#include "PsiTetConnectivity.h"
+#include "PsiTetMesh.h"
+#include "PsiTetSort.h"
+#include "vtkPsiConformingTetrahedralize.h"
+
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkImageData.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace
+{
+vtkSmartPointer<vtkUnstructuredGrid> Tetrahedralized(int n)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(n, n + 1, n);
+  image->SetSpacing(1.0, 0.75, 1.25);
+  vtkNew<vtkDoubleArray> s;
+  s->SetName("s");
+  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    image->GetPoint(i, x);
+    s->InsertNextValue(x[0] + 2 * x[1] - x[2]);
+  }
+  image->GetPointData()->SetScalars(s);
+  vtkNew<vtkPsiConformingTetrahedralize> filter;
+  filter->SetInputData(image);
+  filter->Update();
+  vtkSmartPointer<vtkUnstructuredGrid> out = filter->GetOutput();
+  vtkNew<vtkDoubleArray> cs;
+  cs->SetName("c");
+  for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+  {
+    cs->InsertNextValue(double(c % 7));
+  }
+  out->GetCellData()->AddArray(cs);
+  return out;
+}
+
+std::vector<int32_t> Computed(const psi::TetMesh& m)
+{
+  std::vector<int32_t> nb;
+  psi::ComputeTetNeighbors(m.Tets.data(), m.NumberOfTets(), m.NumberOfPoints(), nb);
+  return nb;
+}
+
+bool Sorts(const psi::TetMesh& m, std::vector<int32_t> nb)
+{
+  auto sort = psi::NewMPVONCSort();
+  sort->SetMesh(&m, std::move(nb));
+  std::vector<uint32_t> order;
+  const double eye[3] = { 30, 20, 10 };
+  sort->Sort(eye, false, order);
+  std::vector<uint32_t> sorted(order);
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<uint32_t> ids(m.NumberOfTets());
+  std::iota(ids.begin(), ids.end(), 0u);
+  return sorted == ids;
+}
+
+void TestFilterNeighbors()
+{
+  auto ug = Tetrahedralized(5);
+  vtkDataArray* fn = ug->GetCellData()->GetArray("FaceNeighbors");
+  PSI_CHECK(fn != nullptr, "the filter writes FaceNeighbors");
+  const psi::TetMesh m = psi::GatherTetMesh(ug, ug->GetPointData()->GetArray("s"), false);
+  std::vector<int32_t> nb;
+  PSI_CHECK(psi::FaceNeighborsFromArray(m, fn, ug->GetNumberOfCells(), nb), "array taken");
+  PSI_CHECK(m.SourceCells.empty(), "no cell skipped");
+  PSI_CHECK(nb == Computed(m), "filter neighbours equal computed ones");
+  PSI_CHECK(psi::FaceNeighborsMatch(m, nb), "filter neighbours match the mesh");
+  PSI_CHECK(Sorts(m, nb), "MPVONC with the filter's neighbours: a permutation");
+}
+
+void TestSkippedCells()
+{
+  auto ug = Tetrahedralized(5);
+  const vtkIdType nc = ug->GetNumberOfCells();
+  // a NaN at one point skips every tetrahedron around it; a triangle appended is skipped too
+  vtkDataArray* s = ug->GetPointData()->GetArray("s");
+  s->SetComponent(17, 0, std::numeric_limits<double>::quiet_NaN());
+  const vtkIdType tri[3] = { 0, 1, 2 };
+  vtkDataArray* fn = ug->GetCellData()->GetArray("FaceNeighbors");
+  ug->InsertNextCell(VTK_TRIANGLE, 3, tri);
+  const double none[4] = { -1, -1, -1, -1 };
+  fn->InsertNextTuple(none);
+  ug->GetCellData()->GetArray("c")->InsertNextTuple1(0);
+  const psi::TetMesh m = psi::GatherTetMesh(ug, s, false);
+  PSI_CHECK(m.NonTetCells == 1 && m.NonFiniteTets > 0, "skipped %lld + %lld",
+    static_cast<long long>(m.NonTetCells), static_cast<long long>(m.NonFiniteTets));
+  PSI_CHECK(m.SourceCells.size() == m.NumberOfTets() &&
+      m.NumberOfTets() + m.NonFiniteTets == static_cast<size_t>(nc),
+    "source cells recorded");
+  std::vector<int32_t> nb;
+  PSI_CHECK(psi::FaceNeighborsFromArray(m, fn, ug->GetNumberOfCells(), nb), "array taken");
+  PSI_CHECK(nb == Computed(m), "remapped neighbours equal those of the reduced mesh");
+  PSI_CHECK(Sorts(m, nb), "MPVONC after skipping: a permutation");
+}
+
+void TestCellScalars()
+{
+  auto ug = Tetrahedralized(4);
+  const psi::TetMesh m = psi::GatherTetMesh(ug, ug->GetCellData()->GetArray("c"), true);
+  PSI_CHECK(m.NumberOfPoints() == 4 * m.NumberOfTets(), "private points per tetrahedron");
+  const std::vector<int32_t> byId = Computed(m);
+  PSI_CHECK(std::count(byId.begin(), byId.end(), -1) == static_cast<long>(byId.size()),
+    "connectivity by point id finds no neighbour with private points");
+  std::vector<int32_t> nb;
+  psi::FaceNeighborsFromArray(
+    m, ug->GetCellData()->GetArray("FaceNeighbors"), ug->GetNumberOfCells(), nb);
+  PSI_CHECK(psi::FaceNeighborsMatch(m, nb) && std::count(nb.begin(), nb.end(), -1) <
+      static_cast<long>(nb.size()) / 2,
+    "the filter's neighbours match by position");
+}
+
+void TestStaleArray()
+{
+  auto ug = Tetrahedralized(4);
+  const psi::TetMesh m = psi::GatherTetMesh(ug, ug->GetPointData()->GetArray("s"), false);
+  std::vector<int32_t> nb;
+  psi::FaceNeighborsFromArray(
+    m, ug->GetCellData()->GetArray("FaceNeighbors"), ug->GetNumberOfCells(), nb);
+  // as if a downstream filter had reordered the cells but passed the array through
+  for (size_t t = 0; t + 1 < m.NumberOfTets(); t += 2)
+  {
+    for (int f = 0; f < 4; ++f)
+    {
+      std::swap(nb[4 * t + f], nb[4 * (t + 1) + f]);
+    }
+  }
+  PSI_CHECK(!psi::FaceNeighborsMatch(m, nb), "a stale array is rejected");
+  PSI_CHECK(Sorts(m, nb), "MPVONC falls back to computed neighbours");
+  vtkNew<vtkIntArray> wrong;
+  wrong->SetNumberOfComponents(3);
+  wrong->SetNumberOfTuples(ug->GetNumberOfCells());
+  PSI_CHECK(!psi::FaceNeighborsFromArray(m, wrong, ug->GetNumberOfCells(), nb) && nb.empty(),
+    "an array of the wrong shape is not taken");
+}
+} // namespace
+
+int main()
+{
+  TestFilterNeighbors();
+  TestSkippedCells();
+  TestCellScalars();
+  TestStaleArray();
+  std::printf("%s\n", psitest::Failures() ? "TestTetMesh FAILED" : "TestTetMesh passed");
+  return psitest::Failures() ? 1 : 0;
+}
