@@ -217,6 +217,28 @@ bool FaceNeighborsFromArray(const TetMesh& mesh, vtkDataArray* cellNeighbors,
   return true;
 }
 
+std::string DescribeSkippedCells(const TetMesh& m)
+{
+  std::string out;
+  if (m.NonTetCells && m.Tets.empty() && !m.NonFiniteTets)
+  {
+    return "found no volume cells in the input (" + std::to_string(m.NonTetCells) +
+      " surface, line or vertex cells): nothing to volume-render. Use a Surface representation.";
+  }
+  if (m.NonTetCells)
+  {
+    out += "skipped " + std::to_string(m.NonTetCells) +
+      " cells that are not linear tetrahedra (e.g. surface cells mixed into the mesh, or input "
+      "given to the mapper without tetrahedralization).";
+  }
+  if (m.NonFiniteTets)
+  {
+    out += std::string(out.empty() ? "" : " It also ") + "skipped " +
+      std::to_string(m.NonFiniteTets) + " tetrahedra with NaN or infinite scalars.";
+  }
+  return out;
+}
+
 std::vector<float> PointGradients(const TetMesh& m)
 {
   const size_t np = m.NumberOfPoints();

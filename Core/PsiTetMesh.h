@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 class vtkDataArray;
@@ -48,6 +49,9 @@ PSIVOLUMECORE_EXPORT TetMesh GatherTetMesh(
 PSIVOLUMECORE_EXPORT bool FaceNeighborsFromArray(
   const TetMesh& mesh, vtkDataArray* cellNeighbors, int64_t numInputCells,
   std::vector<int32_t>& neighbors);
+
+/// What was skipped and why, as a sentence for a warning ("" when nothing was skipped).
+PSIVOLUMECORE_EXPORT std::string DescribeSkippedCells(const TetMesh& mesh);
 
 /// Smoothed point gradients of the piecewise-linear scalar (isosurface normals): each
 /// tetrahedron's gradient weighted by its volume, averaged over the tetrahedra sharing the point.

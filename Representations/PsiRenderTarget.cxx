@@ -7,12 +7,38 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkVolume.h"
 #include "vtk_glew.h"
 
 PsiRenderTarget::PsiRenderTarget() = default;
+
+bool PsiRenderTarget::OpaqueGeometryOverlaps(vtkRenderer* ren, vtkVolume* vol)
+{
+  double vb[6];
+  vol->GetBounds(vb);
+  vtkPropCollection* props = ren->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* p = props->GetNextProp(it))
+  {
+    if (p == vol || !p->GetVisibility() || p->IsA("vtkVolume") || !p->HasOpaqueGeometry())
+    {
+      continue;
+    }
+    const double* b = p->GetBounds();
+    if (b && b[0] <= vb[1] && vb[0] <= b[1] && b[2] <= vb[3] && vb[2] <= b[3] && b[4] <= vb[5] &&
+      vb[4] <= b[5])
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 PsiRenderTarget::~PsiRenderTarget() = default;
 
 bool PsiRenderTarget::CaptureDepthTexture(

@@ -18,6 +18,7 @@ class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
+class vtkVolume;
 class vtkWindow;
 
 class PsiRenderTarget
@@ -26,6 +27,9 @@ public:
   PsiRenderTarget();
   ~PsiRenderTarget();
 
+  /// Whether a visible opaque prop other than `vol` overlaps the volume's bounds: only then can
+  /// opaque geometry cut through cells, which needs the scene depth in the fragment shader.
+  static bool OpaqueGeometryOverlaps(vtkRenderer* ren, vtkVolume* vol);
   /// Sizes the target to the renderer's tile and copies the scene depth from the framebuffer
   /// being rendered; with `sampleDepth` also the copy the shaders read. False for an empty tile.
   bool CaptureDepthTexture(vtkRenderer* ren, vtkOpenGLRenderWindow* renWin, bool sampleDepth);

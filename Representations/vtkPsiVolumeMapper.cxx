@@ -22,7 +22,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
-#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkUnstructuredGridBase.h"
@@ -66,30 +65,6 @@ const char* IntegratorSource(int method)
   }
 }
 
-// Whether any visible opaque prop other than `vol` overlaps the volume's bounds: only then can
-// opaque geometry cut through cells, which needs the scene depth in the fragment shader.
-bool OpaqueGeometryInside(vtkRenderer* ren, vtkVolume* vol)
-{
-  double vb[6];
-  vol->GetBounds(vb);
-  vtkPropCollection* props = ren->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* p = props->GetNextProp(it))
-  {
-    if (p == vol || !p->GetVisibility() || p->IsA("vtkVolume") || !p->HasOpaqueGeometry())
-    {
-      continue;
-    }
-    const double* b = p->GetBounds();
-    if (b && b[0] <= vb[1] && vb[0] <= b[1] && b[2] <= vb[3] && vb[2] <= b[3] && b[4] <= vb[5] &&
-      vb[4] <= b[5])
-    {
-      return true;
-    }
-  }
-  return false;
-}
 } // namespace
 
 struct vtkPsiVolumeMapper::Internals
@@ -166,15 +141,23 @@ void vtkPsiVolumeMapper::UpdateIsosurfaceList()
   }
 }
 
-void vtkPsiVolumeMapper::SetNumberOfIsosurfaces(int n)
+// Isosurface settings: the raw values are kept for the getters; the list drawn is normalized
+// here, once per change (psi::IsosurfaceList).
+void vtkPsiVolumeMapper::SetIsosurfaceVector(std::vector<double>& member, std::vector<double> v)
 {
-  n = std::max(n, 0);
-  if (static_cast<size_t>(n) != this->IsosurfaceValues.size())
+  if (v != member)
   {
-    this->IsosurfaceValues.resize(n, 0.0);
+    member = std::move(v);
     this->UpdateIsosurfaceList();
     this->Modified();
   }
+}
+
+void vtkPsiVolumeMapper::SetNumberOfIsosurfaces(int n)
+{
+  std::vector<double> v = this->IsosurfaceValues;
+  v.resize(std::max(n, 0), 0.0);
+  this->SetIsosurfaceVector(this->IsosurfaceValues, std::move(v));
 }
 
 void vtkPsiVolumeMapper::SetIsosurfaceValue(int i, double value)
@@ -183,57 +166,15 @@ void vtkPsiVolumeMapper::SetIsosurfaceValue(int i, double value)
   {
     return;
   }
-  if (static_cast<size_t>(i) >= this->IsosurfaceValues.size())
-  {
-    this->IsosurfaceValues.resize(i + 1, 0.0);
-  }
-  else if (this->IsosurfaceValues[i] == value)
-  {
-    return;
-  }
-  this->IsosurfaceValues[i] = value;
-  this->UpdateIsosurfaceList();
-  this->Modified();
+  std::vector<double> v = this->IsosurfaceValues;
+  v.resize(std::max<size_t>(v.size(), i + 1), 0.0);
+  v[i] = value;
+  this->SetIsosurfaceVector(this->IsosurfaceValues, std::move(v));
 }
 
-void vtkPsiVolumeMapper::SetNumberOfIsosurfaceOpacities(int n)
+void vtkPsiVolumeMapper::SetIsosurfaceValues(const std::vector<double>& values)
 {
-  n = std::max(0, n);
-  if (static_cast<size_t>(n) != this->IsosurfaceOpacities.size())
-  {
-    this->IsosurfaceOpacities.resize(n, this->IsosurfaceOpacity);
-    this->UpdateIsosurfaceList();
-    this->Modified();
-  }
-}
-
-void vtkPsiVolumeMapper::SetIsosurfaceOpacityValue(int i, double opacity)
-{
-  if (i < 0)
-  {
-    return;
-  }
-  if (static_cast<size_t>(i) >= this->IsosurfaceOpacities.size())
-  {
-    this->IsosurfaceOpacities.resize(i + 1, this->IsosurfaceOpacity);
-  }
-  else if (this->IsosurfaceOpacities[i] == opacity)
-  {
-    return;
-  }
-  this->IsosurfaceOpacities[i] = opacity;
-  this->UpdateIsosurfaceList();
-  this->Modified();
-}
-
-void vtkPsiVolumeMapper::SetIsosurfaceOpacities(const std::vector<double>& opacities)
-{
-  if (opacities != this->IsosurfaceOpacities)
-  {
-    this->IsosurfaceOpacities = opacities;
-    this->UpdateIsosurfaceList();
-    this->Modified();
-  }
+  this->SetIsosurfaceVector(this->IsosurfaceValues, values);
 }
 
 double vtkPsiVolumeMapper::GetIsosurfaceValue(int i) const
@@ -243,14 +184,28 @@ double vtkPsiVolumeMapper::GetIsosurfaceValue(int i) const
     : 0.0;
 }
 
-void vtkPsiVolumeMapper::SetIsosurfaceValues(const std::vector<double>& values)
+void vtkPsiVolumeMapper::SetNumberOfIsosurfaceOpacities(int n)
 {
-  if (values != this->IsosurfaceValues)
+  std::vector<double> v = this->IsosurfaceOpacities;
+  v.resize(std::max(n, 0), this->IsosurfaceOpacity);
+  this->SetIsosurfaceVector(this->IsosurfaceOpacities, std::move(v));
+}
+
+void vtkPsiVolumeMapper::SetIsosurfaceOpacityValue(int i, double opacity)
+{
+  if (i < 0)
   {
-    this->IsosurfaceValues = values;
-    this->UpdateIsosurfaceList();
-    this->Modified();
+    return;
   }
+  std::vector<double> v = this->IsosurfaceOpacities;
+  v.resize(std::max<size_t>(v.size(), i + 1), this->IsosurfaceOpacity);
+  v[i] = opacity;
+  this->SetIsosurfaceVector(this->IsosurfaceOpacities, std::move(v));
+}
+
+void vtkPsiVolumeMapper::SetIsosurfaceOpacities(const std::vector<double>& opacities)
+{
+  this->SetIsosurfaceVector(this->IsosurfaceOpacities, opacities);
 }
 
 const char* vtkPsiVolumeMapper::GetIntegrationMethodName(int method)
@@ -366,32 +321,12 @@ bool vtkPsiVolumeMapper::UpdateMesh(vtkRenderer* ren, vtkUnstructuredGridBase* i
   const psi::TetMesh& mesh = I.Mesh.GetMesh();
   this->Stats.NumberOfSkippedCells = mesh.NonTetCells + mesh.NonFiniteTets;
   this->Stats.NumberOfTetrahedra = static_cast<vtkIdType>(mesh.NumberOfTets());
-  this->WarnAboutSkippedCells();
+  const std::string skipped = psi::DescribeSkippedCells(mesh);
+  if (!skipped.empty())
+  {
+    vtkWarningMacro("Psi Volume " << skipped);
+  }
   return true;
-}
-
-void vtkPsiVolumeMapper::WarnAboutSkippedCells()
-{
-  const psi::TetMesh& mesh = this->Impl->Mesh.GetMesh();
-  if (mesh.NonTetCells && mesh.Tets.empty() && !mesh.NonFiniteTets)
-  {
-    vtkWarningMacro("Psi Volume: the input has no volume cells ("
-      << mesh.NonTetCells
-      << " surface, line or vertex cells): nothing to volume-render. Use a Surface "
-         "representation.");
-  }
-  else if (mesh.NonTetCells)
-  {
-    vtkWarningMacro("Psi Volume skipped "
-      << mesh.NonTetCells
-      << " cells that are not linear tetrahedra (e.g. surface cells mixed into the mesh, or "
-         "input given to the mapper without tetrahedralization).");
-  }
-  if (mesh.NonFiniteTets)
-  {
-    vtkWarningMacro(
-      "Psi Volume skipped " << mesh.NonFiniteTets << " tetrahedra with NaN or infinite scalars.");
-  }
 }
 
 // The transfer-function table, and only the other tables the frame's features need.
@@ -444,7 +379,7 @@ psi::ShaderFeatures vtkPsiVolumeMapper::ChooseFeatures(
   f.Method = this->IntegrationMethod;
   f.ExactSegments = !cam.Parallel && this->ExactPerspectiveSegments;
   f.NearClip = cam.NearPlaneCuts(I.Mesh.GetMesh().Bounds);
-  f.OpaqueClip = OpaqueGeometryInside(ren, vol);
+  f.OpaqueClip = PsiRenderTarget::OpaqueGeometryOverlaps(ren, vol);
   f.IsoCount = this->Isosurfaces.Count();
   f.IsoSmooth = f.IsoCount > 0 && this->IsosurfaceShading == ISO_SMOOTH;
   const bool zeroOpacity = I.Transfer.HasZeroOpacity();

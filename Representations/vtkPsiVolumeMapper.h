@@ -246,9 +246,9 @@ private:
   vtkPsiVolumeMapper(const vtkPsiVolumeMapper&) = delete;
   void operator=(const vtkPsiVolumeMapper&) = delete;
 
+  void SetIsosurfaceVector(std::vector<double>& member, std::vector<double> v);
   void UpdateIsosurfaceList();
   bool UpdateMesh(vtkRenderer* ren, vtkUnstructuredGridBase* input);
-  void WarnAboutSkippedCells();
   void UpdateTables(vtkRenderer* ren, vtkVolume* vol);
   psi::ShaderFeatures ChooseFeatures(
     vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam);
