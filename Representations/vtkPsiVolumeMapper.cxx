@@ -1,14 +1,8 @@
 #include "vtkPsiVolumeMapper.h"
 
 #include "PsiCompositeFS.h"
-#include "PsiIntegrateAverage.h"
-#include "PsiIntegrateAverageOpacity.h"
-#include "PsiIntegrateFullPreIntegration.h"
-#include "PsiIntegrateLinearExact.h"
-#include "PsiIntegrateLinearLuminanceAverageOpacity.h"
-#include "PsiIntegrateLinearOpacityImproved.h"
-#include "PsiIntegratePartialPreIntegration.h"
 #include "PsiIntegrationMethods.h"
+#include "PsiIntegratorSources.h"
 #include "PsiMPVONCSort.h"
 #include "PsiPreIntegrationTable.h"
 #include "PsiTetConnectivity.h"
@@ -73,27 +67,6 @@ void Substitute(std::string& src, const std::string& tag, const std::string& wit
   if (pos != std::string::npos)
   {
     src.replace(pos, tag.size(), with);
-  }
-}
-
-const char* IntegratorSource(int method)
-{
-  switch (method)
-  {
-    case vtkPsiVolumeMapper::AVERAGE:
-      return PsiIntegrateAverage;
-    case vtkPsiVolumeMapper::LINEAR_EXACT:
-      return PsiIntegrateLinearExact;
-    case vtkPsiVolumeMapper::AVERAGE_OPACITY:
-      return PsiIntegrateAverageOpacity;
-    case vtkPsiVolumeMapper::LINEAR_LUMINANCE_AVERAGE_OPACITY:
-      return PsiIntegrateLinearLuminanceAverageOpacity;
-    case vtkPsiVolumeMapper::LINEAR_OPACITY_IMPROVED:
-      return PsiIntegrateLinearOpacityImproved;
-    case vtkPsiVolumeMapper::FULL_PRE_INTEGRATION:
-      return PsiIntegrateFullPreIntegration;
-    default:
-      return PsiIntegratePartialPreIntegration;
   }
 }
 
@@ -640,22 +613,20 @@ void vtkPsiVolumeMapper::SetIsosurfaceValues(const std::vector<double>& values)
   }
 }
 
+void vtkPsiVolumeMapper::SetIntegrationMethod(int method)
+{
+  method = std::min(std::max(method, 0), psi::NumberOfIntegrationMethods() - 1);
+  if (method != this->IntegrationMethod)
+  {
+    this->IntegrationMethod = method;
+    this->Modified();
+  }
+}
+
 const char* vtkPsiVolumeMapper::GetIntegrationMethodName(int method)
 {
-  switch (method)
-  {
-    case AVERAGE:
-      return "Average";
-    case PARTIAL_PRE_INTEGRATION:
-    case LINEAR_EXACT:
-    case AVERAGE_OPACITY:
-    case LINEAR_LUMINANCE_AVERAGE_OPACITY:
-    case LINEAR_OPACITY_IMPROVED:
-    case FULL_PRE_INTEGRATION:
-      return psi::MethodName(static_cast<psi::Method>(method));
-    default:
-      return "Unknown";
-  }
+  const psi::IntegrationMethodInfo* info = psi::FindIntegrationMethod(method);
+  return info ? info->Name : "Unknown";
 }
 
 void vtkPsiVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
@@ -870,8 +841,10 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     I.TransferRange[1] = I.Mesh.ScalarRange[1];
     I.TransferSamples = this->TransferFunctionSamples;
   }
-  const bool needPre = this->IntegrationMethod == FULL_PRE_INTEGRATION;
-  const bool needPsi = this->IntegrationMethod == PARTIAL_PRE_INTEGRATION;
+  const psi::IntegrationMethodInfo& integration =
+    psi::GetIntegrationMethodInfo(static_cast<psi::Method>(this->IntegrationMethod));
+  const bool needPre = integration.NeedsPreIntegrationTable;
+  const bool needPsi = integration.NeedsPsiTable;
   if (needPsi && I.PsiSize == 0)
   {
     const psi::PsiTable& table = psi::GetDefaultPsiTable();
@@ -1094,7 +1067,13 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     Substitute(vs, "//PSI::Features::Dec", defines);
     Substitute(gs, "//PSI::Features::Dec", defines);
     Substitute(fs, "//PSI::Features::Dec", defines);
-    Substitute(fs, "//PSI::Integrator::Impl", IntegratorSource(this->IntegrationMethod));
+    const char* integrator = psi::IntegratorGlslSource(integration.GlslName);
+    if (!integrator)
+    {
+      vtkErrorMacro("Psi Volume: no GLSL integrator " << integration.GlslName << ".glsl embedded.");
+      return;
+    }
+    Substitute(fs, "//PSI::Integrator::Impl", integrator);
     I.Program =
       renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
     I.ProgramKey = key;
