@@ -42,16 +42,19 @@ src, array = psi_bench.load(args.data)
 scene = psi_bench.Scene(src, array, args.size, args.frames)
 refs, ref_seconds = scene.references([int(i * args.frames / args.error_views)
                                       for i in range(args.error_views)])
-methods = [
-    "Average", "Partial Pre-Integration", "Linear Exact", "Average Opacity",
-    "Linear Luminance Average Opacity", "Linear Opacity Improved", "Full Pre-Integration"]
+# The methods as the plugin offers them: the IntegrationMethod enumeration (one entry per row of
+# psi::IntegrationMethodTable(), which bench_integration_cpu iterates too).
+methods = list(scene.rep.GetProperty("IntegrationMethod").Available)
+missing = [m for m in methods if m not in cpu]
+if missing:
+    raise SystemExit("bench_integration_cpu has no row for %s: rebuild it" % ", ".join(missing))
 rows = []
 for m in methods:
     spf, err, mx = scene.measure("Psi Volume|" + m, refs)
+    c = cpu[m]
     scene.rep.UpdatePropertyInformation()
     pre = scene.rep.GetProperty("LastPreIntegrationSeconds").GetElement(0) \
-        if m == "Full Pre-Integration" else 0.0
-    c = cpu[m]
+        if c.get("pre_integration_table") == "1" else 0.0
     rows.append((m, float(c["ns_per_segment"]), float(c["max_err_D1"]), float(c["mean_err"]),
                  spf, err, mx, pre))
 pt_spf, pt_err, _ = scene.measure("Projected tetra", refs)

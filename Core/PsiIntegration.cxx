@@ -68,7 +68,7 @@ Rgba IntegrateWithPsi(const Segment& s, double psi)
   Rgba out;
   for (int k = 0; k < 3; ++k)
   {
-    out[k] = s.Lb[k] * (psi - zeta) + s.Lf[k] * (1.0 - psi); // seed 000 Eq. 7 with I0 = 0
+    out[k] = s.Lb[k] * (psi - zeta) + s.Lf[k] * (1.0 - psi); // Moreland & Angel 2004 Eq. 7, I0 = 0
   }
   out[3] = -std::expm1(-0.5 * (taubD + taufD));
   return out;

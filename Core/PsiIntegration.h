@@ -1,13 +1,15 @@
 // PsiIntegration: the volume rendering integral over one ray segment, as plain functions.
 //
-// Optical model (Moreland & Angel 2004, seed 000 Eq. 1; Moreland's dissertation, seed 001 ch. 3):
+// Optical model (Moreland & Angel 2004 Eq. 1; Moreland 2004 dissertation ch. 3):
 // emission is luminance times attenuation, so over a segment of length D entered at the front
 //   I = I0 * zeta + integral_0^D L(t) tau(t) exp(-int_0^t tau) dt.
-// With L and tau linear between the front (f) and back (b) values, seed 000 Eq. 7 gives
+// With L and tau linear between the front (f) and back (b) values, Moreland & Angel 2004 Eq. 7
+// gives
 //   I = I0 * zeta + Lb (Psi - zeta) + Lf (1 - Psi),   alpha = 1 - zeta,
-//   zeta = exp(-(tau_b + tau_f) D / 2)                                           (seed 000 Eq. 8)
-//   Psi  = int_0^1 exp(-(tau_f D) u - (tau_b D - tau_f D) u^2 / 2) du          (seed 000 Eq. 10,
-//          u measured from the front, i.e. the distance the light still has to travel).
+//   zeta = exp(-(tau_b + tau_f) D / 2)                     (Moreland & Angel 2004 Eq. 8)
+//   Psi  = int_0^1 exp(-(tau_f D) u - (tau_b D - tau_f D) u^2 / 2) du
+//          (Moreland & Angel 2004 Eq. 10, u measured from the front, i.e. the distance the light
+//          still has to travel).
 // tau comes from ParaView's opacity transfer function as opacity / ScalarOpacityUnitDistance, the
 // convention of VTK's vtkUnstructuredGrid*RayIntegrator classes, so images are comparable.
 #ifndef PsiIntegration_h
@@ -39,19 +41,19 @@ struct Segment
 /// including +inf (Psi = 0). Returns NaN for NaN input.
 PSIVOLUMECORE_EXPORT double Psi(double taubD, double taufD);
 
-/// gamma = tau D / (tau D + 1), the table coordinate of seed 000 Eq. 11 (in [0, 1]; +inf -> 1).
+/// gamma = tau D / (tau D + 1), the table coordinate of Moreland & Angel 2004 Eq. 11 (in [0, 1]; +inf -> 1).
 PSIVOLUMECORE_EXPORT double GammaOf(double tauD);
 /// Inverse of GammaOf: tau D = gamma / (1 - gamma).
 PSIVOLUMECORE_EXPORT double TauDOf(double gamma);
 
-/// zeta = exp(-(tau_b + tau_f) D / 2), seed 000 Eq. 8.
+/// zeta = exp(-(tau_b + tau_f) D / 2), Moreland & Angel 2004 Eq. 8.
 PSIVOLUMECORE_EXPORT double Zeta(double taubD, double taufD);
 
-/// Shirley-Tuchman average luminance and attenuation (seed 001 §3.2): L and tau taken as the
+/// Shirley-Tuchman average luminance and attenuation (Moreland 2004 dissertation §3.2): L and tau taken as the
 /// mean of the two ends, alpha = 1 - exp(-tau D), color = L alpha.
 PSIVOLUMECORE_EXPORT Rgba IntegrateAverage(const Segment& s);
 
-/// Seed 000 Eq. 7 given a Psi value (exact Psi, or a table lookup): partial pre-integration.
+/// Moreland & Angel 2004 Eq. 7 given a Psi value (exact Psi, or a table lookup): partial pre-integration.
 PSIVOLUMECORE_EXPORT Rgba IntegrateWithPsi(const Segment& s, double psi);
 
 // Where the exponent E(u) = b u + c u^2 (b = tau_f D, c = (tau_b D - tau_f D)/2) reaches `cut`.

@@ -6,39 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 namespace psi
 {
-
-const char* MethodName(Method m)
-{
-  switch (m)
-  {
-    case Method::Average:
-      return "Average";
-    case Method::PartialPreIntegration:
-      return "Partial Pre-Integration";
-    case Method::LinearExact:
-      return "Linear Exact";
-    case Method::AverageOpacity:
-      return "Average Opacity";
-    case Method::LinearLuminanceAverageOpacity:
-      return "Linear Luminance Average Opacity";
-    case Method::LinearOpacityImproved:
-      return "Linear Opacity Improved";
-    case Method::FullPreIntegration:
-      return "Full Pre-Integration";
-    default:
-      return "Unknown";
-  }
-}
-
-bool UsesLinearOpacity(Method m)
-{
-  return m == Method::AverageOpacity || m == Method::LinearLuminanceAverageOpacity ||
-    m == Method::LinearOpacityImproved;
-}
 
 Segment AttenuationSegment(const TFSegment& s)
 {
@@ -55,8 +27,8 @@ double Erfcx(double x)
 {
   // e^{x^2} erfc(x) in double: Boost's erfc up to x = 26 (e^{676} and erfc(26) ~ 1e-296 are
   // both representable), then the asymptotic series (Abramowitz-Stegun 7.1.23), whose first
-  // omitted term is below 1e-14 there. (The GLSL version
-  // uses the float-grade fit of seed 001 Eqs. 3.23-3.24, as Williams, Max and Stein do.)
+  // omitted term is below 1e-14 there. (The GLSL version uses the float-grade fit of Moreland
+  // 2004 dissertation Eqs. 3.23-3.24, as Williams, Max & Stein 1998 do.)
   if (x < 26)
   {
     return std::exp(x * x) * boost::math::erfc(x);
@@ -67,9 +39,9 @@ double Erfcx(double x)
 
 double Dawson(double x)
 {
-  // Rybicki's method (Numerical Recipes §6.10; seed 001 Appendix B.3 uses h = 0.4 and 6 terms,
-  // ~2e-7). Here h = 0.2 and 17 terms: the sampling error e^{-(pi/2h)^2} and the truncation are
-  // both below 1e-16; small |x| by its Taylor series.
+  // Rybicki's method (Numerical Recipes §6.10; Moreland 2004 dissertation Appendix B.3 uses
+  // h = 0.4 and 6 terms, ~2e-7). Here h = 0.2 and 17 terms: the sampling error e^{-(pi/2h)^2}
+  // and the truncation are both below 1e-16; small |x| by its Taylor series.
   const double ax = std::abs(x);
   if (ax < 0.2)
   {
@@ -161,7 +133,8 @@ double PsiClosedForm(double taubD, double taufD)
 
 namespace
 {
-// Linear-luminance blend given Psi and zeta (seed 001 Eq. 5.8 form, as in Appendix B.5/B.6).
+// Linear-luminance blend given Psi and zeta (Moreland 2004 dissertation Eq. 5.8 form, as in
+// Appendix B.5/B.6).
 Rgba Blend(const TFSegment& s, double psi, double zeta)
 {
   Rgba out;
@@ -197,59 +170,171 @@ double Transmittance(double alpha)
 }
 } // namespace
 
+// The CPU integrators, one per method (the rows of the table below point at them).
+namespace
+{
+// 1. Shirley-Tuchman: average luminance and attenuation (Moreland 2004 dissertation §3.2.2).
+Rgba IntegrateAverageMethod(const TFSegment& s, const PsiTable*)
+{
+  return IntegrateAverage(AttenuationSegment(s));
+}
+
+// 2. Partial pre-integration (Moreland & Angel 2004; Moreland 2004 dissertation §5.2): the Psi
+// table when given, exact Psi otherwise.
+Rgba IntegratePartialPreIntegration(const TFSegment& s, const PsiTable* psiTable)
+{
+  const Segment g = AttenuationSegment(s);
+  const double psi = psiTable ? psiTable->Lookup(GammaOf(g.taub * g.D), GammaOf(g.tauf * g.D))
+                              : Psi(g.taub * g.D, g.tauf * g.D);
+  return IntegrateWithPsi(g, psi);
+}
+
+// 3. Williams, Max & Stein 1998: Psi in closed form (Moreland 2004 dissertation Eq. 3.28). Also
+// the exact value that 7. (Röttger et al. 2000 full pre-integration) tabulates.
+Rgba IntegrateLinearExact(const TFSegment& s, const PsiTable*)
+{
+  const Segment g = AttenuationSegment(s);
+  return IntegrateWithPsi(g, PsiClosedForm(g.taub * g.D, g.tauf * g.D));
+}
+
+// 4. Average luminance and opacity (Wilhelms & van Gelder 1991), combined as transmittances.
+Rgba IntegrateAverageOpacity(const TFSegment& s, const PsiTable*)
+{
+  const double tauD =
+    DepthOfTransmittance(0.5 * (Transmittance(s.ab) + Transmittance(s.af)), s.D, s.unit);
+  const double alpha = -std::expm1(-tauD);
+  Rgba out;
+  for (int k = 0; k < 3; ++k)
+  {
+    out[k] = 0.5 * (s.Lf[k] + s.Lb[k]) * alpha;
+  }
+  out[3] = alpha;
+  return out;
+}
+
+// 5. Moreland 2004 dissertation §5.3.1, Appendix B.5: tau from the averaged opacity; Psi of a
+// homogeneous segment.
+Rgba IntegrateLinearLuminanceAverageOpacity(const TFSegment& s, const PsiTable*)
+{
+  const double tauD =
+    DepthOfTransmittance(0.5 * (Transmittance(s.ab) + Transmittance(s.af)), s.D, s.unit);
+  const double zeta = std::exp(-tauD);
+  return Blend(s, std::isinf(tauD) ? 0.0 : PsiHomogeneous(tauD), zeta);
+}
+
+// 6. Moreland 2004 dissertation §5.3.2, Appendix B.6: zeta from the parabola-corrected mean
+// opacity (Eq. 5.13), Psi from the 0.27/0.73-weighted opacity (Eq. 5.14).
+Rgba IntegrateLinearOpacityImproved(const TFSegment& s, const PsiTable*)
+{
+  const double tb = Transmittance(s.ab), tf = Transmittance(s.af);
+  const double zeta =
+    std::exp(-DepthOfTransmittance(0.5 * (tb + tf) - 0.108165 * (tb - tf) * (tb - tf), s.D, s.unit));
+  const double tau2D = DepthOfTransmittance(0.27 * tb + 0.73 * tf, s.D, s.unit);
+  return Blend(s, std::isinf(tau2D) ? 0.0 : PsiHomogeneous(tau2D), zeta);
+}
+
+Rgba IntegrateNothing(const TFSegment&, const PsiTable*)
+{
+  return Rgba{ { 0, 0, 0, 0 } };
+}
+
+constexpr OpticalModel Attenuation = OpticalModel::LinearAttenuation;
+constexpr OpticalModel Opacity = OpticalModel::LinearOpacity;
+
+// THE table of integration methods, in psi::Method order. Name is the panel text (the XML
+// enumeration, checked by TestIntegrationMethods); GlslName is Shaders/<GlslName>.glsl (embedded
+// by Representations/CMakeLists.txt, which globs Shaders/PsiIntegrate*.glsl).
+constexpr IntegrationMethodInfo Rows[] = {
+  // Id, Name, GlslName, NeedsPsiTable, NeedsPreIntegrationTable, Model, Integrate, Reference
+  { Method::Average, "Average", "PsiIntegrateAverage", false, false, Attenuation,
+    IntegrateAverageMethod,
+    "Shirley & Tuchman 1990; Moreland 2004 dissertation §3.2.2, Eq. 3.16" },
+  { Method::PartialPreIntegration, "Partial Pre-Integration", "PsiIntegratePartialPreIntegration",
+    true, false, Attenuation, IntegratePartialPreIntegration,
+    "Moreland & Angel 2004; Moreland 2004 dissertation §5.2" },
+  { Method::LinearExact, "Linear Exact", "PsiIntegrateLinearExact", false, false, Attenuation,
+    IntegrateLinearExact,
+    "Williams, Max & Stein 1998; Moreland 2004 dissertation §3.2.3, Eq. 3.28" },
+  { Method::AverageOpacity, "Average Opacity", "PsiIntegrateAverageOpacity", false, false, Opacity,
+    IntegrateAverageOpacity, "Wilhelms & van Gelder 1991; Moreland 2004 dissertation §5.3" },
+  { Method::LinearLuminanceAverageOpacity, "Linear Luminance Average Opacity",
+    "PsiIntegrateLinearLuminanceAverageOpacity", false, false, Opacity,
+    IntegrateLinearLuminanceAverageOpacity,
+    "Moreland 2004 dissertation §5.3.1, Appendix B.5" },
+  { Method::LinearOpacityImproved, "Linear Opacity Improved", "PsiIntegrateLinearOpacityImproved",
+    false, false, Opacity, IntegrateLinearOpacityImproved,
+    "Moreland 2004 dissertation §5.3.2, Eqs. 5.13-5.14, Appendix B.6" },
+  { Method::FullPreIntegration, "Full Pre-Integration", "PsiIntegrateFullPreIntegration", false,
+    true, Attenuation, IntegrateLinearExact, "Röttger, Kraus & Ertl 2000" },
+};
+
+constexpr bool RowsInEnumOrder()
+{
+  for (size_t i = 0; i < std::size(Rows); ++i)
+  {
+    if (static_cast<size_t>(Rows[i].Id) != i)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+static_assert(std::size(Rows) == static_cast<size_t>(Method::Count),
+  "one row of the integration-method table per psi::Method value");
+static_assert(RowsInEnumOrder(), "the rows of the integration-method table follow psi::Method");
+
+constexpr IntegrationMethodInfo UnknownRow = { Method::Count, "Unknown", "", false, false,
+  Attenuation, IntegrateNothing, "" };
+} // namespace
+
+const std::vector<IntegrationMethodInfo>& IntegrationMethodTable()
+{
+  static const std::vector<IntegrationMethodInfo> table(std::begin(Rows), std::end(Rows));
+  return table;
+}
+
+int NumberOfIntegrationMethods()
+{
+  return static_cast<int>(std::size(Rows));
+}
+
+const IntegrationMethodInfo* FindIntegrationMethod(int value)
+{
+  return value >= 0 && value < NumberOfIntegrationMethods() ? &IntegrationMethodTable()[value]
+                                                            : nullptr;
+}
+
+const IntegrationMethodInfo* FindIntegrationMethod(const std::string& name)
+{
+  for (const IntegrationMethodInfo& info : IntegrationMethodTable())
+  {
+    if (name == info.Name)
+    {
+      return &info;
+    }
+  }
+  return nullptr;
+}
+
+const IntegrationMethodInfo& GetIntegrationMethodInfo(Method m)
+{
+  const IntegrationMethodInfo* info = FindIntegrationMethod(static_cast<int>(m));
+  return info ? *info : UnknownRow;
+}
+
+const char* MethodName(Method m)
+{
+  return GetIntegrationMethodInfo(m).Name;
+}
+
+bool UsesLinearOpacity(Method m)
+{
+  return GetIntegrationMethodInfo(m).Model == OpticalModel::LinearOpacity;
+}
+
 Rgba Integrate(Method m, const TFSegment& s, const PsiTable* psiTable)
 {
-  switch (m)
-  {
-    case Method::Average:
-      return IntegrateAverage(AttenuationSegment(s));
-    case Method::PartialPreIntegration:
-    {
-      const Segment g = AttenuationSegment(s);
-      const double psi = psiTable ? psiTable->Lookup(GammaOf(g.taub * g.D), GammaOf(g.tauf * g.D))
-                                  : Psi(g.taub * g.D, g.tauf * g.D);
-      return IntegrateWithPsi(g, psi);
-    }
-    case Method::LinearExact:
-    case Method::FullPreIntegration:
-    {
-      const Segment g = AttenuationSegment(s);
-      return IntegrateWithPsi(g, PsiClosedForm(g.taub * g.D, g.tauf * g.D));
-    }
-    case Method::AverageOpacity:
-    {
-      const double tauD =
-        DepthOfTransmittance(0.5 * (Transmittance(s.ab) + Transmittance(s.af)), s.D, s.unit);
-      const double alpha = -std::expm1(-tauD);
-      Rgba out;
-      for (int k = 0; k < 3; ++k)
-      {
-        out[k] = 0.5 * (s.Lf[k] + s.Lb[k]) * alpha;
-      }
-      out[3] = alpha;
-      return out;
-    }
-    case Method::LinearLuminanceAverageOpacity:
-    {
-      // Appendix B.5: tau from the averaged opacity; Psi of a homogeneous segment.
-      const double tauD =
-        DepthOfTransmittance(0.5 * (Transmittance(s.ab) + Transmittance(s.af)), s.D, s.unit);
-      const double zeta = std::exp(-tauD);
-      return Blend(s, std::isinf(tauD) ? 0.0 : PsiHomogeneous(tauD), zeta);
-    }
-    case Method::LinearOpacityImproved:
-    {
-      // Appendix B.6: zeta from the parabola-corrected mean opacity (Eq. 5.13), Psi from the
-      // 0.27/0.73-weighted opacity (Eq. 5.14).
-      const double tb = Transmittance(s.ab), tf = Transmittance(s.af);
-      const double zeta =
-        std::exp(-DepthOfTransmittance(0.5 * (tb + tf) - 0.108165 * (tb - tf) * (tb - tf), s.D, s.unit));
-      const double tau2D = DepthOfTransmittance(0.27 * tb + 0.73 * tf, s.D, s.unit);
-      return Blend(s, std::isinf(tau2D) ? 0.0 : PsiHomogeneous(tau2D), zeta);
-    }
-    default:
-      return Rgba{ { 0, 0, 0, 0 } };
-  }
+  return GetIntegrationMethodInfo(m).Integrate(s, psiTable);
 }
 
 } // namespace psi

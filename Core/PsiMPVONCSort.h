@@ -1,6 +1,6 @@
 // PsiMPVONCSort: visibility ordering of a tetrahedral mesh after Williams' MPVO/MPVONC
 // (P. L. Williams, "Visibility-Ordering Meshed Polyhedra", ACM TOG 11(2), 1992), the exact CPU
-// sort HAPT compares with its centroid sorts (seed 002 §3.1).
+// sort HAPT compares with its centroid sorts (Maximo, Marroquim & Farias 2010, HAPT §3.1).
 //
 // What is exact and what is not:
 //  * Exact (up to floating-point sign decisions on nearly edge-on faces): for every interior

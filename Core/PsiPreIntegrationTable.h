@@ -1,5 +1,4 @@
-// PsiPreIntegrationTable: Roettger-style full pre-integration (seed 004; Roettger, Kraus, Ertl
-// 2000): premultiplied color and opacity of a segment as a 3D table over (front scalar, back
+// PsiPreIntegrationTable: full pre-integration (Röttger, Kraus & Ertl 2000): premultiplied color and opacity of a segment as a 3D table over (front scalar, back
 // scalar, length), built for one transfer function.
 //
 // Each entry integrates the transfer function along the linear scalar path from s_f to s_b: the

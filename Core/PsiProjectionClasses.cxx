@@ -48,7 +48,7 @@ bool Inside(const double x[4], const double y[4], int a, int b, int c, int m)
 
 int TruthTableIndex(const double x[4], const double y[4])
 {
-  // seed 003, Fig. 3. (v1-v2) x (v1-v3) equals (v2-v1) x (v3-v1), i.e. Orient(1,2,3).
+  // Marroquim et al. 2006, Fig. 3. (v1-v2) x (v1-v3) equals (v2-v1) x (v3-v1), i.e. Orient(1,2,3).
   const int t1 = Sign(Orient(x, y, 0, 1, 2)) + 1;
   const int t2 = Sign(Orient(x, y, 0, 1, 3)) + 1;
   const int t3 = Sign(Orient(x, y, 0, 2, 3)) + 1;

@@ -1,7 +1,7 @@
-// PsiProjectionClasses: the PTINT ternary truth table (Marroquim et al., seed 003, Fig. 3 and §4.1).
+// PsiProjectionClasses: the PTINT ternary truth table (Marroquim et al. 2006, Fig. 3 and §4.1).
 //
 // A tetrahedron's four projected vertices v0..v3 are classified by the signs of four 2D cross
-// products (seed 003, Fig. 3):
+// products (Marroquim et al. 2006, Fig. 3):
 //   test1 = sign((v1-v0) x (v2-v0)) + 1      test2 = sign((v1-v0) x (v3-v0)) + 1
 //   test3 = sign((v2-v0) x (v3-v0)) + 1      test4 = sign((v1-v2) x (v1-v3)) + 1
 // and index = 27*test1 + 9*test2 + 3*test3 + test4 selects one of 81 table entries.
@@ -11,7 +11,7 @@
 // result is recorded under its sign index. A sign pattern that two configurations would classify
 // differently is an error (reported by BuildProjectionClassTable; tested in Testing/Cxx).
 //
-// Class numbering follows seed 003 (Fig. 1):
+// Class numbering follows Marroquim et al. 2006 (Fig. 1):
 //   class 1: one vertex projects inside the triangle of the other three -> 3 triangles
 //   class 2: two edges cross                                          -> 4 triangles
 //   class 3: one vertex projects onto an edge (degenerate class 1/2)  -> 2 triangles
@@ -42,7 +42,7 @@ struct ProjectionClass
 using ProjectionClassTable = std::array<ProjectionClass, 81>;
 
 /// Index of the truth table for projected points (x[i], y[i]), computed with the tests of
-/// seed 003 Fig. 3. Exposed so the table can be checked against the GLSL code path.
+/// Marroquim et al. 2006, Fig. 3. Exposed so the table can be checked against the GLSL code path.
 PSIVOLUMECORE_EXPORT int TruthTableIndex(const double x[4], const double y[4]);
 
 /// Classifies one configuration geometrically (no table); used to derive and to test the table.

@@ -1,4 +1,4 @@
-// PsiTable: the partial pre-integration table Psi(gamma_b, gamma_f) (seed 000 §4, Eq. 12).
+// PsiTable: the partial pre-integration table Psi(gamma_b, gamma_f) (Moreland & Angel 2004 §4, Eq. 12).
 //
 // gamma = tau D / (tau D + 1) maps tau D in [0, inf) onto [0, 1), so one finite table covers every
 // cell size. Sampling gamma uniformly, as Moreland does, leaves a square-root singularity at the

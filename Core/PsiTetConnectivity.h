@@ -1,8 +1,8 @@
 // PsiTetConnectivity: face neighbours of a tetrahedral mesh (GL-free).
 //
 // The adjacency ("the face shared with which tetrahedron") is the first auxiliary structure of
-// MPVONC (seed 002 §3.1: "the adjacency list and the precomputed face normals"; Williams 1992,
-// §3, the mesh's adjacency graph). Face i of a tetrahedron is the face opposite its vertex i;
+// MPVONC (Maximo, Marroquim & Farias 2010, HAPT §3.1: "the adjacency list and the precomputed
+// face normals"; Williams 1992, §3, the mesh's adjacency graph). Face i of a tetrahedron is the face opposite its vertex i;
 // its neighbour is -1 on the mesh boundary.
 //
 // Method: a counting sort of the 4 n faces by their smallest point id (one bucket per point),

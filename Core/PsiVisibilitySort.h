@@ -1,9 +1,10 @@
 // PsiVisibilitySort: back-to-front ordering of tetrahedra for projected-tetrahedra compositing.
 //
-// Centroid sort (HAPT, seed 002 §3.1): each tetrahedron is keyed by the distance from the eye to
-// its centroid (perspective) or by the centroid's depth along the view direction (parallel), and
-// the keys are sorted in parallel (vtkSMPTools::Sort). Approximate: adjacent cells of very
-// different size can be misordered; MPVONC (exact for convex meshes) is its own sort method.
+// Centroid sort (Maximo, Marroquim & Farias 2010, HAPT §3.1): each tetrahedron is keyed by the
+// distance from the eye to its centroid (perspective) or by the centroid's depth along the view
+// direction (parallel), and the keys are sorted in parallel (vtkSMPTools::Sort). Approximate:
+// adjacent cells of very different size can be misordered; MPVONC (exact for convex meshes) is
+// its own sort method.
 #ifndef PsiVisibilitySort_h
 #define PsiVisibilitySort_h
 

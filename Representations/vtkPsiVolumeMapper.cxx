@@ -1,13 +1,7 @@
 #include "vtkPsiVolumeMapper.h"
 
-#include "PsiIntegrateAverage.h"
-#include "PsiIntegrateAverageOpacity.h"
-#include "PsiIntegrateFullPreIntegration.h"
-#include "PsiIntegrateLinearExact.h"
-#include "PsiIntegrateLinearLuminanceAverageOpacity.h"
-#include "PsiIntegrateLinearOpacityImproved.h"
-#include "PsiIntegratePartialPreIntegration.h"
 #include "PsiIntegrationMethods.h"
+#include "PsiIntegratorSources.h"
 #include "PsiMeshBuffers.h"
 #include "PsiProjectionClasses.h"
 #include "PsiRenderTarget.h"
@@ -44,27 +38,10 @@ double SecondsSince(Clock::time_point t0)
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-const char* IntegratorSource(int method)
+const psi::IntegrationMethodInfo& MethodInfo(int method)
 {
-  switch (method)
-  {
-    case vtkPsiVolumeMapper::AVERAGE:
-      return PsiIntegrateAverage;
-    case vtkPsiVolumeMapper::LINEAR_EXACT:
-      return PsiIntegrateLinearExact;
-    case vtkPsiVolumeMapper::AVERAGE_OPACITY:
-      return PsiIntegrateAverageOpacity;
-    case vtkPsiVolumeMapper::LINEAR_LUMINANCE_AVERAGE_OPACITY:
-      return PsiIntegrateLinearLuminanceAverageOpacity;
-    case vtkPsiVolumeMapper::LINEAR_OPACITY_IMPROVED:
-      return PsiIntegrateLinearOpacityImproved;
-    case vtkPsiVolumeMapper::FULL_PRE_INTEGRATION:
-      return PsiIntegrateFullPreIntegration;
-    default:
-      return PsiIntegratePartialPreIntegration;
-  }
+  return psi::GetIntegrationMethodInfo(static_cast<psi::Method>(method));
 }
-
 } // namespace
 
 struct vtkPsiVolumeMapper::Internals
@@ -208,22 +185,20 @@ void vtkPsiVolumeMapper::SetIsosurfaceOpacities(const std::vector<double>& opaci
   this->SetIsosurfaceVector(this->IsosurfaceOpacities, opacities);
 }
 
+void vtkPsiVolumeMapper::SetIntegrationMethod(int method)
+{
+  method = std::min(std::max(method, 0), psi::NumberOfIntegrationMethods() - 1);
+  if (method != this->IntegrationMethod)
+  {
+    this->IntegrationMethod = method;
+    this->Modified();
+  }
+}
+
 const char* vtkPsiVolumeMapper::GetIntegrationMethodName(int method)
 {
-  switch (method)
-  {
-    case AVERAGE:
-      return "Average";
-    case PARTIAL_PRE_INTEGRATION:
-    case LINEAR_EXACT:
-    case AVERAGE_OPACITY:
-    case LINEAR_LUMINANCE_AVERAGE_OPACITY:
-    case LINEAR_OPACITY_IMPROVED:
-    case FULL_PRE_INTEGRATION:
-      return psi::MethodName(static_cast<psi::Method>(method));
-    default:
-      return "Unknown";
-  }
+  const psi::IntegrationMethodInfo* info = psi::FindIntegrationMethod(method);
+  return info ? info->Name : "Unknown";
 }
 
 void vtkPsiVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
@@ -345,11 +320,11 @@ void vtkPsiVolumeMapper::UpdateTables(vtkRenderer* ren, vtkVolume* vol)
   {
     I.OpacityPrefix.Update(renWin, I.Transfer);
   }
-  if (this->IntegrationMethod == PARTIAL_PRE_INTEGRATION && I.PsiTable.NeedsUpdate())
+  if (MethodInfo(this->IntegrationMethod).NeedsPsiTable && I.PsiTable.NeedsUpdate())
   {
     I.PsiTable.Update(renWin);
   }
-  if (this->IntegrationMethod == FULL_PRE_INTEGRATION &&
+  if (MethodInfo(this->IntegrationMethod).NeedsPreIntegrationTable &&
     I.PreIntegration.NeedsUpdate(I.Transfer.GetVersion(), mesh.MaxEdgeLength))
   {
     // Röttger's table belongs to one transfer function: rebuilt on every edit (timed).
@@ -425,8 +400,14 @@ vtkShaderProgram* vtkPsiVolumeMapper::ReadyProgram(
     return I.Program;
   }
   ++this->NumberOfProgramBuilds;
-  const psi::ShaderSources src =
-    psi::ComposeShaders(features, IntegratorSource(this->IntegrationMethod));
+  const psi::IntegrationMethodInfo& method = MethodInfo(features.Method);
+  const char* integrator = psi::IntegratorGlslSource(method.GlslName);
+  if (!integrator)
+  {
+    vtkErrorMacro("Psi Volume: no GLSL integrator " << method.GlslName << ".glsl embedded.");
+    return nullptr;
+  }
+  const psi::ShaderSources src = psi::ComposeShaders(features, integrator);
   I.Program = cache->ReadyShaderProgram(
     src.Vertex.c_str(), src.Fragment.c_str(), src.Geometry.c_str());
   I.ProgramKey = key;
@@ -451,11 +432,11 @@ void vtkPsiVolumeMapper::SetShaderParameters(vtkShaderProgram* program, vtkRende
   {
     I.OpacityPrefix.Activate(program, I.Transfer.GetTable());
   }
-  if (f.Method == PARTIAL_PRE_INTEGRATION)
+  if (MethodInfo(f.Method).NeedsPsiTable)
   {
     I.PsiTable.Activate(program);
   }
-  if (f.Method == FULL_PRE_INTEGRATION)
+  if (MethodInfo(f.Method).NeedsPreIntegrationTable)
   {
     I.PreIntegration.Activate(program);
   }
@@ -484,11 +465,11 @@ void vtkPsiVolumeMapper::DeactivateTables(const psi::ShaderFeatures& f)
   {
     I.OpacityPrefix.Deactivate();
   }
-  if (f.Method == PARTIAL_PRE_INTEGRATION)
+  if (MethodInfo(f.Method).NeedsPsiTable)
   {
     I.PsiTable.Deactivate();
   }
-  if (f.Method == FULL_PRE_INTEGRATION)
+  if (MethodInfo(f.Method).NeedsPreIntegrationTable)
   {
     I.PreIntegration.Deactivate();
   }

@@ -49,20 +49,10 @@ public:
   vtkTypeMacro(vtkPsiVolumeMapper, vtkUnstructuredGridVolumeMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// Ray integration within each cell. Each is one GLSL function (Shaders/PsiIntegrate*.glsl).
-  /// Numbered as psi::Method (PsiIntegrationMethods.h), which documents each.
-  enum IntegrationMethods
-  {
-    AVERAGE = 0,                 ///< Shirley-Tuchman average luminance and attenuation
-    PARTIAL_PRE_INTEGRATION = 1, ///< Moreland & Angel, Psi table (default)
-    LINEAR_EXACT = 2,            ///< Williams-Max-Stein closed form (slow reference)
-    AVERAGE_OPACITY = 3,         ///< average luminance and opacity
-    LINEAR_LUMINANCE_AVERAGE_OPACITY = 4, ///< Moreland §5.3.1
-    LINEAR_OPACITY_IMPROVED = 5, ///< Moreland §5.3.2
-    FULL_PRE_INTEGRATION = 6,    ///< Roettger et al., 3D table per transfer function
-    NUMBER_OF_INTEGRATION_METHODS
-  };
-  vtkSetClampMacro(IntegrationMethod, int, AVERAGE, NUMBER_OF_INTEGRATION_METHODS - 1);
+  /// Ray integration within each cell: a psi::Method value, i.e. a row of
+  /// psi::IntegrationMethodTable() (PsiIntegrationMethods.h), which documents each; clamped to
+  /// the table's rows. Default psi::Method::PartialPreIntegration.
+  virtual void SetIntegrationMethod(int method);
   vtkGetMacro(IntegrationMethod, int);
   static const char* GetIntegrationMethodName(int method);
 
@@ -217,7 +207,7 @@ protected:
   vtkPsiVolumeMapper();
   ~vtkPsiVolumeMapper() override;
 
-  int IntegrationMethod = PARTIAL_PRE_INTEGRATION;
+  int IntegrationMethod = 1; // psi::Method::PartialPreIntegration, the XML default
   int TransferFunctionSamples = 1024;
   int SortMethod = MPVONC;
   bool ExactPerspectiveSegments = true;

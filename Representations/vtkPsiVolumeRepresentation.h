@@ -30,7 +30,7 @@ public:
   void SetActiveVolumeMapper(const char*) override;
 
   ///@{
-  /// See vtkPsiVolumeMapper::IntegrationMethods.
+  /// A psi::Method value: a row of psi::IntegrationMethodTable() (PsiIntegrationMethods.h).
   void SetIntegrationMethod(int method);
   int GetIntegrationMethod();
   ///@}

@@ -1,4 +1,6 @@
-// The hard cases of issue 3 for the segment integrals, shared by the C++ and GLSL tests.
+// The hard cases for the segment integrals (zero length, zero and equal attenuations, tau D over
+// 15 decades, alpha = 1 and just below, luminance outside [0, 1]), shared by the C++ and GLSL
+// tests.
 #ifndef PsiHardCases_h
 #define PsiHardCases_h
 

@@ -1,19 +1,33 @@
 // Every integration method against the reference of the model it approximates, over Moreland's
-// sweeps (seed 001 Figs. 6.5-6.11: D = 0.001, 0.1, 1, 100 over the (front, back) parameter plane),
-// plus the hard cases of issue 3: D = 0, tau = 0, tau_b = tau_f exactly and within 1e-12, tau D
-// from 1e-9 to 1e6, alpha = 1 and just below, luminance outside [0, 1], non-finite input.
+// sweeps (Moreland 2004 dissertation Figs. 6.5-6.11: D = 0.001, 0.1, 1, 100 over the (front, back)
+// parameter plane), plus the hard cases of PsiHardCases.h: D = 0, tau = 0, tau_b = tau_f exactly
+// and within 1e-12, tau D from 1e-9 to 1e6, alpha = 1 and just below, luminance outside [0, 1],
+// non-finite input.
+// Also the table of methods itself (psi::IntegrationMethodTable): consistent, and equal to the
+// IntegrationMethod enumeration of XML/PsiVolumeRepresentation.xml (argv[1], default the source
+// tree's) in (value, text), which is what the properties panel and Python see.
 #include "PsiHardCases.h"
-#include "PsiReferenceIntegrals.h"
 #include "PsiIntegrationMethods.h"
+#include "PsiReferenceIntegrals.h"
 #include "PsiTable.h"
 #include "PsiTestCheck.h"
+#include "vtkPsiVolumeMapper.h"
+
+#include "vtkNew.h"
+#include "vtkPVXMLElement.h"
+#include "vtkPVXMLParser.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 #include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace
 {
@@ -65,10 +79,192 @@ SweepError Sweep(Method m, double D, const psi::PsiTable& table, int n = 24)
   e.Mean /= count;
   return e;
 }
+
+// Every <IntVectorProperty name="IntegrationMethod"> under `e`.
+void FindIntegrationMethodProperties(vtkPVXMLElement* e, std::vector<vtkPVXMLElement*>& found)
+{
+  if (std::string(e->GetName() ? e->GetName() : "") == "IntVectorProperty" &&
+    std::string(e->GetAttributeOrEmpty("name")) == "IntegrationMethod")
+  {
+    found.push_back(e);
+  }
+  for (unsigned int i = 0; i < e->GetNumberOfNestedElements(); ++i)
+  {
+    FindIntegrationMethodProperties(e->GetNestedElement(i), found);
+  }
+}
+
+// The differences between the IntegrationMethod enumeration(s) of the proxy XML `xml` and the
+// table, one message each (none: they agree). Entries are compared as (value, text) pairs both
+// ways, so a missing, extra, renumbered or misnamed row or entry is reported.
+std::vector<std::string> CompareXmlWithTable(const std::string& xml, int* defaultValue = nullptr)
+{
+  std::vector<std::string> problems;
+  vtkNew<vtkPVXMLParser> parser;
+  parser->SuppressErrorMessagesOn();
+  if (!parser->Parse(xml.c_str()) || !parser->GetRootElement())
+  {
+    return { "the XML does not parse" };
+  }
+  std::vector<vtkPVXMLElement*> props;
+  FindIntegrationMethodProperties(parser->GetRootElement(), props);
+  if (props.empty())
+  {
+    return { "no IntVectorProperty named IntegrationMethod" };
+  }
+  const auto& table = psi::IntegrationMethodTable();
+  std::set<std::pair<int, std::string>> rows;
+  for (const psi::IntegrationMethodInfo& info : table)
+  {
+    rows.insert({ static_cast<int>(info.Id), info.Name });
+  }
+  for (vtkPVXMLElement* prop : props)
+  {
+    if (defaultValue)
+    {
+      prop->GetScalarAttribute("default_values", defaultValue);
+    }
+    vtkPVXMLElement* domain = prop->FindNestedElementByName("EnumerationDomain");
+    if (!domain)
+    {
+      problems.push_back("IntegrationMethod has no EnumerationDomain");
+      continue;
+    }
+    std::set<std::pair<int, std::string>> entries;
+    for (unsigned int i = 0; i < domain->GetNumberOfNestedElements(); ++i)
+    {
+      vtkPVXMLElement* entry = domain->GetNestedElement(i);
+      if (std::string(entry->GetName() ? entry->GetName() : "") != "Entry")
+      {
+        continue;
+      }
+      int value = -1;
+      const char* text = entry->GetAttribute("text");
+      if (!entry->GetScalarAttribute("value", &value) || !text)
+      {
+        problems.push_back("an Entry without value or text");
+        continue;
+      }
+      if (!entries.insert({ value, text }).second)
+      {
+        problems.push_back("duplicate Entry " + std::to_string(value) + " '" + text + "'");
+      }
+    }
+    for (const auto& e : entries)
+    {
+      if (!rows.count(e))
+      {
+        problems.push_back("XML Entry " + std::to_string(e.first) + " '" + e.second +
+          "' is not a row of psi::IntegrationMethodTable()");
+      }
+    }
+    for (const auto& r : rows)
+    {
+      if (!entries.count(r))
+      {
+        problems.push_back("table row " + std::to_string(r.first) + " '" + r.second +
+          "' has no XML Entry with that value and text");
+      }
+    }
+  }
+  return problems;
+}
+
+std::string ReadFile(const char* path)
+{
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return in ? ss.str() : std::string();
+}
+
+// Replaces the first occurrence of `from` (which must be there) in `s`.
+std::string Edited(std::string s, const std::string& from, const std::string& to)
+{
+  const auto pos = s.find(from);
+  return pos == std::string::npos ? std::string() : s.replace(pos, from.size(), to);
+}
+
+void CheckTable(const char* xmlPath)
+{
+  const auto& table = psi::IntegrationMethodTable();
+  PSI_CHECK(static_cast<int>(table.size()) == psi::NumberOfIntegrationMethods() &&
+      psi::NumberOfIntegrationMethods() == static_cast<int>(Method::Count),
+    "table size %d, Method::Count %d", static_cast<int>(table.size()),
+    static_cast<int>(Method::Count));
+  std::set<std::string> names, glslNames;
+  for (size_t i = 0; i < table.size(); ++i)
+  {
+    const psi::IntegrationMethodInfo& info = table[i];
+    PSI_CHECK(static_cast<size_t>(info.Id) == i, "row %d has Id %d", static_cast<int>(i),
+      static_cast<int>(info.Id));
+    PSI_CHECK(info.Name && *info.Name && names.insert(info.Name).second, "row %d: name",
+      static_cast<int>(i));
+    PSI_CHECK(info.GlslName && std::string(info.GlslName).rfind("PsiIntegrate", 0) == 0 &&
+        glslNames.insert(info.GlslName).second,
+      "%s: GLSL name must be a unique Shaders/PsiIntegrate*.glsl", info.Name);
+    PSI_CHECK(info.Integrate != nullptr, "%s: no CPU integrator", info.Name);
+    PSI_CHECK(!(info.NeedsPsiTable && info.NeedsPreIntegrationTable), "%s: two tables", info.Name);
+    PSI_CHECK(psi::FindIntegrationMethod(std::string(info.Name)) == &info &&
+        psi::FindIntegrationMethod(static_cast<int>(i)) == &info &&
+        &psi::GetIntegrationMethodInfo(info.Id) == &info &&
+        std::string(psi::MethodName(info.Id)) == info.Name &&
+        psi::UsesLinearOpacity(info.Id) == (info.Model == psi::OpticalModel::LinearOpacity),
+      "%s: lookups disagree with the row", info.Name);
+  }
+  PSI_CHECK(psi::FindIntegrationMethod(std::string("No Such Method")) == nullptr &&
+      psi::FindIntegrationMethod(-1) == nullptr &&
+      psi::FindIntegrationMethod(psi::NumberOfIntegrationMethods()) == nullptr &&
+      std::string(psi::MethodName(Method::Count)) == "Unknown",
+    "lookups outside the table");
+
+  // The mapper takes the table's values, clamped, and names them from the table.
+  vtkNew<vtkPsiVolumeMapper> mapper;
+  const int last = psi::NumberOfIntegrationMethods() - 1;
+  mapper->SetIntegrationMethod(-3);
+  PSI_CHECK(mapper->GetIntegrationMethod() == 0, "clamped below");
+  mapper->SetIntegrationMethod(last + 5);
+  PSI_CHECK(mapper->GetIntegrationMethod() == last, "clamped above");
+  PSI_CHECK(std::string(vtkPsiVolumeMapper::GetIntegrationMethodName(last)) == table[last].Name &&
+      std::string(vtkPsiVolumeMapper::GetIntegrationMethodName(last + 1)) == "Unknown",
+    "mapper names");
+  const int mapperDefault = vtkNew<vtkPsiVolumeMapper>()->GetIntegrationMethod();
+
+  // The panel's enumeration against the table.
+  const std::string xml = ReadFile(xmlPath);
+  PSI_CHECK(!xml.empty(), "cannot read %s", xmlPath);
+  int xmlDefault = -1;
+  const std::vector<std::string> problems = CompareXmlWithTable(xml, &xmlDefault);
+  for (const std::string& p : problems)
+  {
+    std::printf("  %s\n", p.c_str());
+  }
+  PSI_CHECK(problems.empty(), "%s: IntegrationMethod enumeration differs from the table (above)",
+    xmlPath);
+  PSI_CHECK(xmlDefault == mapperDefault, "XML default_values %d, mapper default %d", xmlDefault,
+    mapperDefault);
+  // ... and the comparison does see a missing, extra or misnamed entry.
+  const std::string first = std::string("text=\"") + table[0].Name + "\"";
+  const std::string lastEntry = "<Entry value=\"" + std::to_string(last) + "\" text=\"" +
+    table[last].Name + "\" />";
+  for (const std::string& bad : { Edited(xml, lastEntry, ""), Edited(xml, first, "text=\"Avg\""),
+         Edited(xml, lastEntry, lastEntry + "<Entry value=\"" + std::to_string(last + 1) +
+             "\" text=\"New Method\" />") })
+  {
+    PSI_CHECK(!bad.empty() && !CompareXmlWithTable(bad).empty(),
+      "an edited enumeration must differ from the table");
+  }
+  if (problems.empty())
+  {
+    std::printf("IntegrationMethod enumeration of %s matches the %d rows of the table\n",
+      xmlPath, psi::NumberOfIntegrationMethods());
+  }
+}
 } // namespace
 
-int main()
+int main(int argc, char* argv[])
 {
+  CheckTable(argc > 1 ? argv[1] : PSI_REPRESENTATION_XML);
   const psi::PsiTable& table = psi::GetDefaultPsiTable();
 
   // Special functions against SciPy's dawsn / erfcx (values printed by scipy.special, 17 digits).
@@ -141,12 +337,12 @@ int main()
   std::printf("\n%-34s %10s %10s %10s %10s   (max error over the alpha plane)\n", "method",
     "D=0.001", "D=0.1", "D=1", "D=100");
   const double bounds[static_cast<int>(Method::Count)] = {
-    0.5,  // Average: bleeds back color through the front (seed 001 Fig. 3.12), large by design
+    0.5,  // Average: bleeds back color through the front (Moreland 2004 dissertation Fig. 3.12)
     2e-4, // Partial pre-integration: Psi table lookup
     1e-9, // Linear exact: closed form in double
     0.5,  // Average opacity
-    0.2,  // Linear luminance, average opacity (seed 001 Fig. 5.7)
-    0.1,  // Improved linear opacity (seed 001 Fig. 5.9)
+    0.2,  // Linear luminance, average opacity (Moreland 2004 dissertation Fig. 5.7)
+    0.1,  // Improved linear opacity (Moreland 2004 dissertation Fig. 5.9)
     1e-9, // Full pre-integration evaluated exactly here; its table error is tested with the table
   };
   double sweepMax[static_cast<int>(Method::Count)][4];
@@ -167,8 +363,9 @@ int main()
     PSI_CHECK(worst < bounds[mi], "%s: sweep error %g above its bound %g", psi::MethodName(m), worst,
       bounds[mi]);
   }
-  // Ordering the seeds report (seed 001 Table 6.4 and Figs. 6.9-6.11): the improved linear
-  // opacity approximation beats averaging opacity; partial pre-integration beats averaging.
+  // Ordering the papers report (Moreland 2004 dissertation Table 6.4 and Figs. 6.9-6.11): the
+  // improved linear opacity approximation beats averaging opacity; partial pre-integration beats
+  // averaging.
   const auto atD1 = [&](Method m) { return sweepMax[static_cast<int>(m)][2]; };
   PSI_CHECK(atD1(Method::LinearOpacityImproved) < atD1(Method::LinearLuminanceAverageOpacity),
     "improved linear-opacity approximation should beat the initial one at D = 1");

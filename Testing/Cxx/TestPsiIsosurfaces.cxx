@@ -8,6 +8,7 @@
 //  - an opaque isosurface hides the volume behind it, a translucent one does not;
 //  - several isovalues and an isovalue exactly at a vertex value give no NaN.
 // Needs an X server (run under xvfb-run). Usage: TestPsiIsosurfaces [output-dir]
+#include "PsiIntegrationMethods.h"
 #include "PsiReferenceRaycaster.h"
 #include "PsiTestCheck.h"
 #include "PsiTestScene.h"
@@ -166,7 +167,7 @@ int main(int argc, char* argv[])
       ren->AddActor(actor);
       ren->ResetCameraClippingRange();
     }
-    for (int method = 0; method < vtkPsiVolumeMapper::NUMBER_OF_INTEGRATION_METHODS; ++method)
+    for (int method = 0; method < psi::NumberOfIntegrationMethods(); ++method)
     {
       mapper->SetIntegrationMethod(method);
       mapper->SetIsosurfaceValues({});
@@ -214,7 +215,7 @@ int main(int argc, char* argv[])
   }
   std::printf("%d program variants rendered the plain image where they had nothing to add\n",
     variants);
-  mapper->SetIntegrationMethod(vtkPsiVolumeMapper::PARTIAL_PRE_INTEGRATION);
+  mapper->SetIntegrationMethod(static_cast<int>(psi::Method::PartialPreIntegration));
   outside();
 
   // ---- 2. Adaptive sampling: a narrow opacity spike between vertex values.

@@ -4,6 +4,7 @@
 // through the volume, and each integration method. Needs an X server (run under xvfb-run).
 //
 // Usage: TestPsiVolumeRender [output-dir]   (PNG images of GPU, reference and 8x difference)
+#include "PsiIntegrationMethods.h"
 #include "PsiReferenceRaycaster.h"
 #include "PsiTestCheck.h"
 #include "PsiTestScene.h"
@@ -268,8 +269,9 @@ int main(int argc, char* argv[])
     double MeanBound;
   };
   outside();
-  for (const Case& k : { Case{ "perspective_partial", vtkPsiVolumeMapper::PARTIAL_PRE_INTEGRATION, 0.006 },
-         Case{ "perspective_average", vtkPsiVolumeMapper::AVERAGE, 0.02 } })
+  for (const Case& k :
+    { Case{ "perspective_partial", static_cast<int>(psi::Method::PartialPreIntegration), 0.006 },
+      Case{ "perspective_average", static_cast<int>(psi::Method::Average), 0.02 } })
   {
     mapper->SetIntegrationMethod(k.Method);
     const Result r = Compare(k.Name, win, ren, vol, refScene, nullptr, outDir);
@@ -280,7 +282,7 @@ int main(int argc, char* argv[])
     static_cast<long long>(mapper->GetNumberOfTetrahedra()));
   PSI_CHECK(!mapper->GetLastUsedNearPlaneClipping(), "outside view must not compile the near path");
   PSI_CHECK(!mapper->GetLastUsedOpaqueClipping(), "no opaque geometry: no depth sampling");
-  mapper->SetIntegrationMethod(vtkPsiVolumeMapper::PARTIAL_PRE_INTEGRATION);
+  mapper->SetIntegrationMethod(static_cast<int>(psi::Method::PartialPreIntegration));
 
   // Visibility order on Kuhn cells seen head-on (the view that showed lines in the GUI test):
   // the centroid order composites some neighbours in the wrong order, MPVONC is exact.
@@ -355,9 +357,9 @@ int main(int argc, char* argv[])
     cam->SetFocalPoint(0, 0, 0);
     cam->SetPosition(25, 17, 35);
     ren->ResetCameraClippingRange();
-    mapper->SetIntegrationMethod(vtkPsiVolumeMapper::AVERAGE);
+    mapper->SetIntegrationMethod(static_cast<int>(psi::Method::Average));
     const Result avg = Compare("coarse_average", win, ren, vol, coarseRef, nullptr, outDir);
-    mapper->SetIntegrationMethod(vtkPsiVolumeMapper::PARTIAL_PRE_INTEGRATION);
+    mapper->SetIntegrationMethod(static_cast<int>(psi::Method::PartialPreIntegration));
     const Result ppi = Compare("coarse_partial", win, ren, vol, coarseRef, nullptr, outDir);
     // Means sit near the 8-bit quantization floor (~0.001) for both; the worst pixel tells them apart.
     PSI_CHECK(ppi.Max < 0.5 * avg.Max, "partial pre-integration max %g vs average %g", ppi.Max,
@@ -373,7 +375,7 @@ int main(int argc, char* argv[])
     mapper->SetInputData(s.Grid);
     vol->SetProperty(s.Property);
     outside();
-    mapper->SetIntegrationMethod(vtkPsiVolumeMapper::PARTIAL_PRE_INTEGRATION);
+    mapper->SetIntegrationMethod(static_cast<int>(psi::Method::PartialPreIntegration));
     win->Render();
     PSI_CHECK(!mapper->GetLastUsedEarlyDiscard(), "no zero-opacity region: no early discard");
     double r[2];

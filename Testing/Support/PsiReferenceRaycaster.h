@@ -5,7 +5,7 @@
 // intersected with every tetrahedron whose screen box covers the pixel (exact ray / face-plane
 // clipping in double precision). Within a tetrahedron the scalar is linear along the ray; the
 // segment is split at every transfer-function breakpoint, so color and attenuation are linear on
-// each piece and the piece is integrated exactly (seed 000 Eq. 7 with Psi by quadrature,
+// each piece and the piece is integrated exactly (Moreland & Angel 2004 Eq. 7 with Psi by quadrature,
 // psi::Psi). Pieces are composited front to back, then over the background.
 #ifndef PsiReferenceRaycaster_h
 #define PsiReferenceRaycaster_h
