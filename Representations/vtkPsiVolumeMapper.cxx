@@ -13,6 +13,7 @@
 #include "PsiPreIntegrationTable.h"
 #include "PsiTetConnectivity.h"
 #include "PsiProjectionClasses.h"
+#include "PsiShaderComposer.h"
 #include "PsiTable.h"
 #include "PsiTransferFunctionTable.h"
 #include "PsiVisibilitySort.h"
@@ -1020,53 +1021,32 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     I.DepthSampleTexture->Activate();
     I.DepthSampleTexture->CopyFromFrameBuffer(x0, y0, 0, 0, w, h);
   }
-  std::string defines;
-  if (opaqueClip)
-  {
-    defines += "#define PSI_OPAQUE_CLIP\n";
-  }
-  if (!parallel && this->ExactPerspectiveSegments)
-  {
-    defines += "#define PSI_EXACT_SEGMENTS\n";
-  }
-  if (nearClip)
-  {
-    defines += "#define PSI_NEAR_CLIP\n";
-  }
-  constexpr int maxLights = 8;
+  // The program is composed from the feature set by psi::ComposeShaders (PsiShaderComposer.h);
+  // the marching-tetrahedra output budget is counted from the same features.
+  psi::ShaderFeatures features;
+  features.Method = this->IntegrationMethod;
+  features.OpaqueClip = opaqueClip;
+  features.ExactSegments = !parallel && this->ExactPerspectiveSegments;
+  features.NearClip = nearClip;
+  features.MaxAdaptiveNodes = MaxAdaptiveNodes;
+  constexpr int maxLights = 8; // also bounds the lights uploaded below
+  features.MaxLights = maxLights;
   bool isoTriangles = false;
   if (iso)
   {
-    const int niso = static_cast<int>(isoValues.size());
-    defines += "#define PSI_ISO_COUNT " + std::to_string(niso) + "\n";
-    defines += "#define PSI_MAX_LIGHTS " + std::to_string(maxLights) + "\n";
-    if (smoothIso)
-    {
-      defines += "#define PSI_ISO_SMOOTH\n";
-    }
+    features.IsoCount = static_cast<int>(isoValues.size());
+    features.IsoSmooth = smoothIso;
     if (this->IsosurfaceMethod == ISO_MARCHING_TETRAHEDRA ||
       (this->IsosurfaceMethod == ISO_AUTO && this->EarlyDiscard && I.TransferHasZeroOpacity))
     {
-      // Geometry-shader output: the 8-vertex decomposition once per piece (up to niso + 1) and
-      // a 4-vertex strip per surface, each vertex with its outputs (PsiVolumeGS.glsl):
-      // gl_Position 4, frontPoint + backPlane + scalarGrad 12 or segment 3, piece 1, clipTet 4.
-      const int vertices = 8 * (niso + 1) + 4 * niso;
-      const int components = 4 + (!parallel && this->ExactPerspectiveSegments ? 12 : 3) + 1 +
-        (nearClip ? 4 : 0);
       GLint maxVertices = 0, maxComponents = 0;
       glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &maxVertices);
       glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &maxComponents);
-      isoTriangles = vertices <= maxVertices && components * vertices <= maxComponents;
-      if (isoTriangles)
-      {
-        defines += "#define PSI_ISO_TRIANGLES\n#define PSI_GS_MAX_VERTICES " +
-          std::to_string(vertices) + "\n";
-      }
+      psi::ShaderFeatures triangles = features;
+      triangles.IsoTriangles = true;
+      isoTriangles = psi::FitsGeometryOutputLimits(triangles, maxVertices, maxComponents);
     }
-    if (!isoTriangles)
-    {
-      defines += "#define PSI_ISO_PER_FRAGMENT\n";
-    }
+    features.IsoTriangles = isoTriangles;
   }
   this->LastUsedIsosurfaceMethod =
     !iso ? -1 : isoTriangles ? ISO_MARCHING_TETRAHEDRA : ISO_PER_FRAGMENT;
@@ -1076,27 +1056,26 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   const bool earlyDiscard =
     this->EarlyDiscard && I.TransferHasZeroOpacity && (!iso || isoTriangles);
   this->LastUsedEarlyDiscard = earlyDiscard;
-  if (earlyDiscard)
-  {
-    defines += "#define PSI_EARLY_DISCARD\n";
-  }
-  if (adaptive)
-  {
-    defines += "#define PSI_ADAPTIVE\n#define PSI_TF_NODES_MAX " +
-      std::to_string(MaxAdaptiveNodes) + "\n";
-  }
-  this->LastFeatureDefines = defines;
-  const std::string key = defines + std::to_string(this->IntegrationMethod);
+  features.EarlyDiscard = earlyDiscard;
+  features.Adaptive = adaptive;
+  this->LastFeatureDefines = features.Defines();
+  const std::string key = features.Key();
   if (!I.Program || I.ProgramKey != key)
   {
     ++this->NumberOfProgramBuilds;
-    std::string vs = PsiVolumeVS, gs = PsiVolumeGS, fs = PsiVolumeFS;
-    Substitute(vs, "//PSI::Features::Dec", defines);
-    Substitute(gs, "//PSI::Features::Dec", defines);
-    Substitute(fs, "//PSI::Features::Dec", defines);
-    Substitute(fs, "//PSI::Integrator::Impl", IntegratorSource(this->IntegrationMethod));
-    I.Program =
-      renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
+    psi::ShaderSources src;
+    try
+    {
+      src = psi::ComposeShaders(features, IntegratorSource(this->IntegrationMethod));
+    }
+    catch (const std::exception& e) // a shader template error (TestShaderComposition)
+    {
+      vtkErrorMacro("Psi Volume: " << e.what());
+      I.Program = nullptr;
+      return;
+    }
+    I.Program = renWin->GetShaderCache()->ReadyShaderProgram(
+      src.Vertex.c_str(), src.Fragment.c_str(), src.Geometry.c_str());
     I.ProgramKey = key;
     if (!I.Program)
     {
