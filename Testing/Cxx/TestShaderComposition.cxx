@@ -214,8 +214,8 @@ int main(int argc, char* argv[])
     byKey.size());
 
   // 2. A representative subset compiled and linked by the driver: every method plain and with
-  // every feature on, each isosurface mode with and without exact segments, near and opaque
-  // clipping, and each feature alone.
+  // every feature on, every method with each isosurface mode with and without exact segments,
+  // near and opaque clipping, and each feature alone.
   std::vector<psi::ShaderFeatures> compile;
   for (int method = 0; method < 7; ++method)
   {
@@ -226,6 +226,13 @@ int main(int argc, char* argv[])
   {
     for (int exact = 0; exact < 2; ++exact)
     {
+      for (int method = 0; method < 7; ++method)
+      {
+        if (method != 1)
+        {
+          compile.push_back(Make(method, exact, false, false, false, iso, false));
+        }
+      }
       compile.push_back(Make(1, exact, false, false, true, iso, false));
       compile.push_back(Make(1, exact, true, true, false, iso, iso % 2));
     }
