@@ -1,61 +1,468 @@
 #include "PsiShaderComposer.h"
+
+#include "PsiIntegrationMethods.h"
+#include "PsiIntegratorSources.h"
+
+#include "PsiAdaptiveFS.h"
+#include "PsiCellGradientGS.h"
+#include "PsiEarlyDiscardGS.h"
+#include "PsiExactSegmentsFS.h"
+#include "PsiExactSegmentsGS.h"
+#include "PsiHAPTSegmentsFS.h"
+#include "PsiHAPTSegmentsGS.h"
+#include "PsiIntegratorInputsFS.h"
+#include "PsiIsoFlatNormalsGS.h"
+#include "PsiIsoPerFragmentFS.h"
+#include "PsiIsoPerFragmentGS.h"
+#include "PsiIsoShadeFS.h"
+#include "PsiIsoSmoothNormalsGS.h"
+#include "PsiIsoTrianglesFS.h"
+#include "PsiIsoTrianglesGS.h"
+#include "PsiNearClipFS.h"
+#include "PsiNearClipGS.h"
+#include "PsiOpaqueClipFS.h"
+#include "PsiPointIdsGS.h"
+#include "PsiPointIdsVS.h"
+#include "PsiProjectionClassesGS.h"
+#include "PsiSceneDepthFS.h"
+#include "PsiSegmentSplitFS.h"
 #include "PsiVolumeFS.h"
 #include "PsiVolumeGS.h"
 #include "PsiVolumeVS.h"
+
+#include <cctype>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
 namespace psi
 {
 namespace
 {
-void Substitute(std::string& src, const std::string& tag, const std::string& with)
+bool IsSpace(char c)
 {
-  const auto pos = src.find(tag);
-  if (pos != std::string::npos)
+  return c == ' ' || c == '\t' || c == '\r';
+}
+
+std::string Trim(const std::string& s)
+{
+  size_t b = 0, e = s.size();
+  while (b < e && IsSpace(s[b]))
   {
-    src.replace(pos, tag.size(), with);
+    ++b;
+  }
+  while (e > b && IsSpace(s[e - 1]))
+  {
+    --e;
+  }
+  return s.substr(b, e - b);
+}
+
+// A tag: a line holding only //PSI::<Name>::<Name>.
+bool IsTag(const std::string& line)
+{
+  const std::string t = Trim(line);
+  if (t.compare(0, 7, "//PSI::") != 0)
+  {
+    return false;
+  }
+  const std::string rest = t.substr(7);
+  const size_t sep = rest.find("::");
+  if (sep == std::string::npos || sep == 0 || sep + 2 >= rest.size())
+  {
+    return false;
+  }
+  for (size_t i = 0; i < rest.size(); ++i)
+  {
+    if (i == sep || i == sep + 1)
+    {
+      continue;
+    }
+    if (!std::isalnum(static_cast<unsigned char>(rest[i])))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::vector<std::string> Lines(const std::string& text)
+{
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line))
+  {
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+// The feature of a tag: "//PSI::NearClip::Impl" -> "NearClip".
+std::string FeatureOf(const std::string& tag)
+{
+  return tag.substr(7, tag.find("::", 7) - 7);
+}
+
+// The sections of a feature file, in file order: (tag, text). The file's first line is a tag of
+// its feature; each tag of that feature starts a section. Tags of other features inside a
+// section are kept in its text, to be replaced when their feature is applied.
+std::vector<std::pair<std::string, std::string>> Sections(const char* file)
+{
+  std::vector<std::pair<std::string, std::string>> sections;
+  std::string feature;
+  for (const std::string& line : Lines(file))
+  {
+    if (IsTag(line) && (sections.empty() || FeatureOf(Trim(line)) == feature))
+    {
+      sections.emplace_back(Trim(line), std::string());
+      feature = FeatureOf(sections.back().first);
+    }
+    else if (!sections.empty())
+    {
+      sections.back().second += line + "\n";
+    }
+  }
+  for (auto& s : sections)
+  {
+    std::string& t = s.second;
+    while (t.size() >= 2 && t[t.size() - 1] == '\n' && t[t.size() - 2] == '\n')
+    {
+      t.pop_back(); // trailing blank lines separate sections in the file
+    }
+  }
+  return sections;
+}
+
+// Replaces the line holding only `tag` in `src` by `with` (which ends with a newline, or is
+// empty). False when `src` has no such line.
+bool ReplaceTag(std::string& src, const std::string& tag, const std::string& with)
+{
+  for (size_t pos = src.find(tag); pos != std::string::npos; pos = src.find(tag, pos + 1))
+  {
+    const size_t nl = pos == 0 ? std::string::npos : src.rfind('\n', pos - 1);
+    const size_t begin = nl == std::string::npos ? 0 : nl + 1;
+    const size_t eol = src.find('\n', pos);
+    const size_t end = eol == std::string::npos ? src.size() : eol + 1;
+    const size_t lineEnd = eol == std::string::npos ? src.size() : eol;
+    if (Trim(src.substr(begin, lineEnd - begin)) == tag)
+    {
+      src.replace(begin, end - begin, with);
+      return true;
+    }
+  }
+  return false;
+}
+
+// Substitutes the sections of feature file `file` into `src`, except those whose tag is listed
+// in `skip`.
+void Apply(std::string& src, const char* file, const std::set<std::string>& skip = {})
+{
+  for (const auto& section : Sections(file))
+  {
+    if (skip.count(section.first))
+    {
+      continue;
+    }
+    if (!ReplaceTag(src, section.first, section.second))
+    {
+      throw std::logic_error("PsiShaderComposer: no tag " + section.first + " to replace");
+    }
   }
 }
-int Vertices(const ShaderFeatures& f)
+
+// Replaces every tag left (features that are off) by nothing.
+void RemoveTags(std::string& src)
 {
-  return 8 * (f.IsoCount + 1) + 4 * f.IsoCount;
+  std::string out;
+  out.reserve(src.size());
+  for (const std::string& line : Lines(src))
+  {
+    if (!IsTag(line))
+    {
+      out += line + "\n";
+    }
+  }
+  src.swap(out);
 }
-std::string Defines(const ShaderFeatures& f)
+
+std::string Define(const char* name, int value)
+{
+  return std::string("#define ") + name + " " + std::to_string(value) + "\n";
+}
+
+// Components of a GLSL type (the types the geometry shader outputs).
+int Components(const std::string& type)
+{
+  static const std::map<std::string, int> sizes = { { "float", 1 }, { "int", 1 }, { "uint", 1 },
+    { "vec2", 2 }, { "ivec2", 2 }, { "uvec2", 2 }, { "vec3", 3 }, { "ivec3", 3 }, { "uvec3", 3 },
+    { "vec4", 4 }, { "ivec4", 4 }, { "uvec4", 4 }, { "mat2", 4 }, { "mat3", 9 }, { "mat4", 16 } };
+  const auto it = sizes.find(type);
+  if (it == sizes.end())
+  {
+    throw std::logic_error("PsiShaderComposer: geometry-shader output of unknown type " + type);
+  }
+  return it->second;
+}
+
+// Sum of the components of the `out` variables declared in `src` (one declaration a line:
+// [flat|smooth|noperspective|centroid]* out <type> <name>[<n>];).
+int OutputComponents(const std::string& src)
+{
+  int total = 0;
+  for (const std::string& raw : Lines(src))
+  {
+    std::string line = raw.substr(0, raw.find("//"));
+    std::istringstream words(line);
+    std::vector<std::string> w;
+    for (std::string word; words >> word;)
+    {
+      w.push_back(word);
+    }
+    size_t i = 0;
+    while (i < w.size() &&
+      (w[i] == "flat" || w[i] == "smooth" || w[i] == "noperspective" || w[i] == "centroid"))
+    {
+      ++i;
+    }
+    if (i + 2 >= w.size() || w[i] != "out")
+    {
+      continue; // not "out <type> <name>"
+    }
+    std::string name = w[i + 2];
+    int count = 1;
+    const size_t bracket = name.find('[');
+    if (bracket != std::string::npos)
+    {
+      count = std::stoi(name.substr(bracket + 1));
+    }
+    total += count * Components(w[i + 1]);
+  }
+  return total;
+}
+
+bool Uses(const char* source, const char* name)
+{
+  return std::string(source).find(name) != std::string::npos;
+}
+
+std::string ComposeGeometry(const ShaderFeatures& f)
+{
+  const bool iso = f.IsoCount > 0;
+  const bool isoTriangles = iso && f.IsoTriangles;
+  std::string gs = PsiVolumeGS;
+  std::string counts = Define("PSI_GS_MAX_VERTICES", GeometryOutputVertices(f));
+  if (iso)
+  {
+    counts += Define("PSI_ISO_COUNT", f.IsoCount);
+  }
+  ReplaceTag(gs, "//PSI::Counts::Dec", counts);
+  Apply(gs, PsiProjectionClassesGS);
+  if (iso || f.NearClip)
+  {
+    Apply(gs, PsiPointIdsGS);
+  }
+  if (f.ExactSegments || iso)
+  {
+    Apply(gs, PsiCellGradientGS);
+  }
+  Apply(gs, f.ExactSegments ? PsiExactSegmentsGS : PsiHAPTSegmentsGS);
+  if (f.NearClip)
+  {
+    Apply(gs, PsiNearClipGS);
+  }
+  if (iso)
+  {
+    Apply(gs, f.IsoSmooth ? PsiIsoSmoothNormalsGS : PsiIsoFlatNormalsGS);
+    Apply(gs, isoTriangles ? PsiIsoTrianglesGS : PsiIsoPerFragmentGS);
+  }
+  if (f.EarlyDiscard)
+  {
+    // Marching tetrahedra test each volume piece; otherwise the whole cell is tested.
+    Apply(gs, PsiEarlyDiscardGS,
+      { isoTriangles ? "//PSI::EarlyDiscard::Cell" : "//PSI::EarlyDiscard::Piece" });
+  }
+  RemoveTags(gs);
+  return gs;
+}
+} // namespace
+
+bool ShaderFeatures::operator==(const ShaderFeatures& o) const
+{
+  return Method == o.Method && ExactSegments == o.ExactSegments && NearClip == o.NearClip &&
+    OpaqueClip == o.OpaqueClip && EarlyDiscard == o.EarlyDiscard && IsoCount == o.IsoCount &&
+    IsoSmooth == o.IsoSmooth && IsoTriangles == o.IsoTriangles && Adaptive == o.Adaptive &&
+    MaxAdaptiveNodes == o.MaxAdaptiveNodes && MaxLights == o.MaxLights;
+}
+
+std::string ShaderFeatures::Defines() const
 {
   std::string d;
-  if (f.OpaqueClip) d += "#define PSI_OPAQUE_CLIP\n";
-  if (f.ExactSegments) d += "#define PSI_EXACT_SEGMENTS\n";
-  if (f.NearClip) d += "#define PSI_NEAR_CLIP\n";
-  if (f.IsoCount > 0)
+  if (OpaqueClip)
   {
-    d += "#define PSI_ISO_COUNT " + std::to_string(f.IsoCount) + "\n";
-    d += "#define PSI_MAX_LIGHTS " + std::to_string(f.MaxLights) + "\n";
-    if (f.IsoSmooth) d += "#define PSI_ISO_SMOOTH\n";
-    if (f.IsoTriangles)
-      d += "#define PSI_ISO_TRIANGLES\n#define PSI_GS_MAX_VERTICES " + std::to_string(Vertices(f)) + "\n";
-    else
-      d += "#define PSI_ISO_PER_FRAGMENT\n";
+    d += "#define PSI_OPAQUE_CLIP\n";
   }
-  if (f.EarlyDiscard) d += "#define PSI_EARLY_DISCARD\n";
-  if (f.Adaptive) d += "#define PSI_ADAPTIVE\n#define PSI_TF_NODES_MAX " + std::to_string(f.MaxAdaptiveNodes) + "\n";
+  if (ExactSegments)
+  {
+    d += "#define PSI_EXACT_SEGMENTS\n";
+  }
+  if (NearClip)
+  {
+    d += "#define PSI_NEAR_CLIP\n";
+  }
+  if (IsoCount > 0)
+  {
+    d += Define("PSI_ISO_COUNT", IsoCount) + Define("PSI_MAX_LIGHTS", MaxLights);
+    if (IsoSmooth)
+    {
+      d += "#define PSI_ISO_SMOOTH\n";
+    }
+    d += IsoTriangles
+      ? "#define PSI_ISO_TRIANGLES\n" + Define("PSI_GS_MAX_VERTICES", GeometryOutputVertices(*this))
+      : std::string("#define PSI_ISO_PER_FRAGMENT\n");
+  }
+  if (EarlyDiscard)
+  {
+    d += "#define PSI_EARLY_DISCARD\n";
+  }
+  if (Adaptive)
+  {
+    d += "#define PSI_ADAPTIVE\n" + Define("PSI_TF_NODES_MAX", MaxAdaptiveNodes);
+  }
   return d;
 }
-}
+
 std::string ShaderFeatures::Key() const
 {
-  return Defines(*this) + std::to_string(this->Method);
+  return this->Defines() + "method " + std::to_string(Method) + "\n";
 }
-bool FitsGeometryOutputLimits(const ShaderFeatures& f, int maxVertices, int maxComponents)
+
+int GeometryOutputVertices(const ShaderFeatures& f)
 {
-  const int comps = 4 + (f.ExactSegments ? 12 : 3) + 1 + (f.NearClip ? 4 : 0);
-  return Vertices(f) <= maxVertices && comps * Vertices(f) <= maxComponents;
+  const int projection = 8; // PsiProjectionClassesGS.glsl: class 2, strips of 5 and 3
+  const int surface = 4;    // PsiIsoTrianglesGS.glsl emitSurface: a strip of at most 4
+  if (f.IsoCount > 0 && f.IsoTriangles)
+  {
+    return projection * (f.IsoCount + 1) + surface * f.IsoCount;
+  }
+  return projection;
 }
-ShaderSources ComposeShaders(const ShaderFeatures& f, const char* integrator)
+
+int GeometryOutputComponentsPerVertex(const ShaderFeatures& f)
 {
-  ShaderSources s{ PsiVolumeVS, PsiVolumeGS, PsiVolumeFS };
-  const std::string d = Defines(f);
-  Substitute(s.Vertex, "//PSI::Features::Dec", d);
-  Substitute(s.Geometry, "//PSI::Features::Dec", d);
-  Substitute(s.Fragment, "//PSI::Features::Dec", d);
-  Substitute(s.Fragment, "//PSI::Integrator::Impl", integrator);
-  return s;
+  return 4 + OutputComponents(ComposeGeometry(f)); // gl_Position + the declared outputs
 }
+
+bool FitsGeometryOutputLimits(const ShaderFeatures& f, int maxVertices, int maxTotalComponents)
+{
+  const long long vertices = GeometryOutputVertices(f);
+  return vertices <= maxVertices &&
+    vertices * GeometryOutputComponentsPerVertex(f) <= maxTotalComponents;
 }
+
+const char* IntegratorSource(int method)
+{
+  const IntegrationMethodInfo* info = FindIntegrationMethod(method);
+  return IntegratorGlslSource(
+    (info ? *info : GetIntegrationMethodInfo(Method::PartialPreIntegration)).GlslName);
+}
+
+ShaderSources ComposeShaders(const ShaderFeatures& f, const char* integratorSource)
+{
+  const char* integrator = integratorSource ? integratorSource : IntegratorSource(f.Method);
+  const bool iso = f.IsoCount > 0;
+  const bool isoTriangles = iso && f.IsoTriangles;
+  const bool isoPerFragment = iso && !f.IsoTriangles;
+  const bool split = isoPerFragment || f.Adaptive;
+  ShaderSources out;
+
+  out.Vertex = PsiVolumeVS;
+  if (iso || f.NearClip)
+  {
+    Apply(out.Vertex, PsiPointIdsVS);
+  }
+  RemoveTags(out.Vertex);
+
+  out.Geometry = ComposeGeometry(f);
+
+  std::string& fs = out.Fragment;
+  fs = PsiVolumeFS;
+  std::string counts;
+  if (iso)
+  {
+    counts += Define("PSI_ISO_COUNT", f.IsoCount) + Define("PSI_MAX_LIGHTS", f.MaxLights);
+  }
+  if (f.Adaptive)
+  {
+    counts += Define("PSI_TF_NODES_MAX", f.MaxAdaptiveNodes);
+  }
+  if (split)
+  {
+    counts += Define("PSI_MAX_SPLITS",
+      (isoPerFragment ? f.IsoCount : 0) + (f.Adaptive ? f.MaxAdaptiveNodes : 0));
+  }
+  ReplaceTag(fs, "//PSI::Counts::Dec", counts);
+  std::set<std::string> unusedInputs;
+  if (!Uses(integrator, "psiCoord") && !Uses(integrator, "psiTable"))
+  {
+    unusedInputs.insert("//PSI::Integrator::PsiTable");
+  }
+  if (!Uses(integrator, "unitDistance"))
+  {
+    unusedInputs.insert("//PSI::Integrator::UnitDistance");
+  }
+  if (!Uses(integrator, "preIntegrated") && !Uses(integrator, "preScalarScaleShift"))
+  {
+    unusedInputs.insert("//PSI::Integrator::PreIntegrated");
+  }
+  Apply(fs, PsiIntegratorInputsFS, unusedInputs);
+  std::string integratorText = integrator;
+  if (!integratorText.empty() && integratorText.back() != '\n')
+  {
+    integratorText += '\n';
+  }
+  if (!ReplaceTag(fs, "//PSI::Integrator::Impl", integratorText))
+  {
+    throw std::logic_error("PsiShaderComposer: no tag //PSI::Integrator::Impl");
+  }
+  Apply(fs, f.ExactSegments ? PsiExactSegmentsFS : PsiHAPTSegmentsFS);
+  if (f.NearClip)
+  {
+    Apply(fs, PsiNearClipFS);
+  }
+  if (f.NearClip || f.OpaqueClip)
+  {
+    Apply(fs, PsiSceneDepthFS);
+  }
+  if (f.OpaqueClip)
+  {
+    Apply(fs, PsiOpaqueClipFS);
+  }
+  if (iso)
+  {
+    Apply(fs, PsiIsoShadeFS);
+  }
+  if (isoTriangles)
+  {
+    Apply(fs, PsiIsoTrianglesFS);
+  }
+  if (split)
+  {
+    Apply(fs, PsiSegmentSplitFS); // before its features, whose tags it holds
+  }
+  if (isoPerFragment)
+  {
+    Apply(fs, PsiIsoPerFragmentFS);
+  }
+  if (f.Adaptive)
+  {
+    Apply(fs, PsiAdaptiveFS);
+  }
+  RemoveTags(fs);
+  return out;
+}
+
+} // namespace psi

@@ -393,7 +393,7 @@ vtkShaderProgram* vtkPsiVolumeMapper::ReadyProgram(
   vtkOpenGLShaderCache* cache =
     vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow())->GetShaderCache();
   const std::string key = features.Key();
-  this->LastFeatureDefines = key;
+  this->LastFeatureDefines = features.Defines();
   if (I.Program && I.ProgramKey == key)
   {
     cache->ReadyShaderProgram(I.Program);

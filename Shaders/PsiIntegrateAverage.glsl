@@ -1,4 +1,5 @@
-// Shirley-Tuchman average luminance and attenuation (seed 001 §3.2; seed 000 §4):
+// Shirley-Tuchman average luminance and attenuation (Moreland 2004, dissertation, §3.2;
+// Moreland & Angel 2004 §4):
 // L = (Lf + Lb)/2, tau = (tau_f + tau_b)/2, alpha = 1 - exp(-tau D), color = L alpha.
 vec4 integrateSegment(float sf, float sb, float D)
 {

@@ -1,5 +1,6 @@
-// Average luminance and opacity (Wilhelms and van Gelder; seed 001 §6.1 Table 6.4): the opacity
-// alpha of one unit distance is averaged, tau = -ln(1 - alpha) (Eq. 5.12), color = mean L alpha.
+// Average luminance and opacity (Wilhelms and van Gelder; Moreland 2004, dissertation, §6.1,
+// Table 6.4): the opacity alpha of one unit distance is averaged, tau = -ln(1 - alpha)
+// (Eq. 5.12), color = mean L alpha.
 vec4 integrateSegment(float sf, float sb, float D)
 {
   vec4 f = transfer(sf);

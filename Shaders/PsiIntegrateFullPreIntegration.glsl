@@ -1,4 +1,4 @@
-// Full pre-integration (Roettger, Kraus and Ertl, seed 004): the segment's premultiplied color and
+// Full pre-integration (Röttger et al. 2000): the segment's premultiplied color and
 // opacity looked up in a 3D table over (front scalar, back scalar, length), built for the current
 // transfer function (PsiPreIntegrationTable.cxx). Captures transfer-function detail inside a cell
 // up to the table's resolution; its rebuild on every transfer-function edit is part of its cost.

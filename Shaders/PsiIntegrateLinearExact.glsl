@@ -1,7 +1,7 @@
-// Linear luminance and attenuation, exact (Williams, Max and Stein; seed 001 §3.2.3, Eq. 3.28,
-// Appendix B.3): Psi in closed form, with erfc's Numerical Recipes fit (Eqs. 3.23-3.24) made into
-// erfcx analytically, Rybicki's Dawson integral, and the series around tau_b = tau_f where the
-// closed form cancels. The slow reference method: no table, several exp per fragment.
+// Linear luminance and attenuation, exact (Williams, Max and Stein; Moreland 2004, dissertation,
+// §3.2.3, Eq. 3.28, Appendix B.3): Psi in closed form, with erfc's Numerical Recipes fit
+// (Eqs. 3.23-3.24) made into erfcx analytically, Rybicki's Dawson integral, and the series around
+// tau_b = tau_f where the closed form cancels. The slow reference method: no table, several exp per fragment.
 float erfcxFit(float x)
 {
   float u = 1.0 / (1.0 + 0.5 * x);

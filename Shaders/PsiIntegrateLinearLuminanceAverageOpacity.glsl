@@ -1,5 +1,5 @@
-// Linear luminance, average opacity (seed 001 §5.3.1, Appendix B.5): tau from the averaged
-// opacity of one unit distance; Psi of a homogeneous segment, (1 - zeta) / (tau D).
+// Linear luminance, average opacity (Moreland 2004, dissertation, §5.3.1, Appendix B.5): tau from
+// the averaged opacity of one unit distance; Psi of a homogeneous segment, (1 - zeta) / (tau D).
 vec4 integrateSegment(float sf, float sb, float D)
 {
   vec4 f = transfer(sf);

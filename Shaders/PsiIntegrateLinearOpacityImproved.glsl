@@ -1,6 +1,6 @@
-// Linear luminance and opacity, improved approximation (seed 001 §5.3.2, Appendix B.6): zeta from
-// the parabola-corrected mean opacity (Eq. 5.13), Psi from the 0.27/0.73-weighted opacity
-// (Eq. 5.14), both of one unit distance.
+// Linear luminance and opacity, improved approximation (Moreland 2004, dissertation, §5.3.2,
+// Appendix B.6): zeta from the parabola-corrected mean opacity (Eq. 5.13), Psi from the
+// 0.27/0.73-weighted opacity (Eq. 5.14), both of one unit distance.
 vec4 integrateSegment(float sf, float sb, float D)
 {
   vec4 f = transfer(sf);

@@ -1,4 +1,4 @@
-// Partial pre-integration (Moreland & Angel, seed 000 §4, Eqs. 7, 8, 11, 12):
+// Partial pre-integration (Moreland & Angel 2004 §4, Eqs. 7, 8, 11, 12):
 //   zeta = exp(-(tau_b + tau_f) D / 2),  Psi = table(gamma_b, gamma_f) (warped, PsiTable.h),
 //   color = Lb (Psi - zeta) + Lf (1 - Psi),  alpha = 1 - zeta.
 vec4 integrateSegment(float sf, float sb, float D)

@@ -1,8 +1,8 @@
 //VTK::System::Dec
-//PSI::Features::Dec
-// PsiVolumeVS: one vertex per tetrahedron (HAPT, seed 002 §3: tetrahedra streamed as points).
-// The tetrahedron's four point ids arrive as one attribute; the points (model xyz + scalar) are
-// fetched from a texture buffer and moved to view coordinates, where thickness is measured.
+// PsiVolumeVS: one vertex per tetrahedron (Maximo et al. 2010 §3: tetrahedra streamed as
+// points). The tetrahedron's four point ids arrive as one attribute; the points (model xyz +
+// scalar) are fetched from a texture buffer and moved to view coordinates, where thickness is
+// measured. The PointIds tags (PsiPointIdsVS.glsl) pass the ids on when a feature needs them.
 
 in uvec4 tetPointIds;
 uniform samplerBuffer points; // xyz: model coordinates (shifted), w: scalar
@@ -12,11 +12,7 @@ out vec4 vsP0; // view-space xyz, w = scalar
 out vec4 vsP1;
 out vec4 vsP2;
 out vec4 vsP3;
-#if defined(PSI_ISO_COUNT) || defined(PSI_NEAR_CLIP)
-// Isosurface and near-plane variants: the point ids go on to the geometry shader (smoothed point
-// gradients as isosurface normals; the fragment shader's exact clipping of a cut cell).
-flat out uvec4 vsIds;
-#endif
+//PSI::PointIds::Dec
 
 vec4 viewPoint(uint id)
 {
@@ -30,7 +26,5 @@ void main()
   vsP1 = viewPoint(tetPointIds.y);
   vsP2 = viewPoint(tetPointIds.z);
   vsP3 = viewPoint(tetPointIds.w);
-#if defined(PSI_ISO_COUNT) || defined(PSI_NEAR_CLIP)
-  vsIds = tetPointIds;
-#endif
+//PSI::PointIds::Impl
 }

@@ -1,0 +1,11 @@
+//PSI::IsoFlatNormals::Dec
+// Isosurface normals, flat shading: the cell's own gradient at all four vertices.
+vec3 pointNormal[4];
+
+void fetchNormals()
+{
+  for (int k = 0; k < 4; ++k)
+  {
+    pointNormal[k] = gradient; // flat shading: the cell's gradient
+  }
+}

@@ -1,0 +1,14 @@
+//PSI::IsoSmoothNormals::Dec
+// Isosurface normals, smooth shading: the gradient field interpolated linearly from the smoothed
+// point gradients (view coordinates).
+uniform samplerBuffer pointGradients; // model-space (shifted) gradient per point
+uniform mat3 normalMatrix;            // model -> view for gradients (inverse transpose)
+vec3 pointNormal[4];
+
+void fetchNormals()
+{
+  for (int k = 0; k < 4; ++k)
+  {
+    pointNormal[k] = normalMatrix * texelFetch(pointGradients, int(vsIds[0][k])).xyz;
+  }
+}

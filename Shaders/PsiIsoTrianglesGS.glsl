@@ -1,0 +1,145 @@
+//PSI::IsoTriangles::Dec
+// On-the-fly marching tetrahedra (Maximo et al. 2010 §3.4): the scalar is linear in the
+// tetrahedron, so each isosurface crossing the cell is the planar marching-tetrahedra polygon,
+// emitted as one or two triangles, in visibility order with the volume: the cell is drawn once
+// per scalar interval between its crossings ("piece"), the farthest first, each piece's
+// fragments integrating only the part of their ray segment inside that interval, with the
+// surface that bounds the piece on the eye's side drawn right after it (Röttger et al. 2000 §10:
+// behind, surface, in front). Primitives emitted by one invocation are blended in emission
+// order. Surface vertices carry their normal in the segment slot (setVertexNormal).
+uniform float isoValues[PSI_ISO_COUNT]; // ascending
+uniform int parallelProjection;
+// piece (one component, to fit more isovalues in the geometry shader's output): j >= 0, the
+// volume between isoValues[j - 1] and isoValues[j] (j = 0 .. PSI_ISO_COUNT, open-ended at the
+// ends), j = PSI_ISO_COUNT + 1 the whole cell; -(i + 1): the surface of isovalue i.
+flat out float piece;
+float currentPiece = float(PSI_ISO_COUNT + 1);
+
+//PSI::IsoTriangles::Flat
+  piece = currentPiece;
+
+//PSI::IsoTriangles::Degenerate
+    if (degenerate)
+    {
+      return; // a zero-volume tetrahedron has no interior to cut a surface from
+    }
+
+//PSI::IsoTriangles::Impl
+// One vertex of an isosurface polygon: where isovalue c crosses edge a-b.
+void emitIsoVertex(int a, int b, float c)
+{
+  float t = clamp((c - scalar[a]) / (scalar[b] - scalar[a]), 0.0, 1.0);
+  vec3 p = mix(viewP[a], viewP[b], t);
+  vec3 n = mix(pointNormal[a], pointNormal[b], t);
+  setFlat(0);
+  setVertexNormal(n);
+  gl_Position = VCDCMatrix * vec4(p, 1.0);
+  EmitVertex();
+}
+
+// Marching tetrahedra for isovalue i: a vertex is above when s >= c, so a surface exactly on a
+// face shared by two cells belongs to one of them only. One vertex apart: a triangle on its three
+// edges; two and two: a quad, as a strip of two triangles (at most 4 vertices).
+void emitSurface(int i)
+{
+  float c = isoValues[i];
+  currentPiece = -float(i + 1);
+  // GLSL 1.50: no bitCount / findLSB; vertices listed above first, then below.
+  int order[4];
+  int count = 0;
+  for (int k = 0; k < 4; ++k)
+  {
+    if (scalar[k] >= c)
+    {
+      order[count++] = k;
+    }
+  }
+  int n = count;
+  for (int k = 0; k < 4; ++k)
+  {
+    if (scalar[k] < c)
+    {
+      order[n++] = k;
+    }
+  }
+  if (count == 0 || count == 4)
+  {
+    return;
+  }
+  if (count == 2)
+  {
+    emitIsoVertex(order[0], order[2], c); emitIsoVertex(order[0], order[3], c);
+    emitIsoVertex(order[1], order[2], c); emitIsoVertex(order[1], order[3], c);
+  }
+  else
+  {
+    int lone = count == 1 ? order[0] : order[3];
+    for (int k = 0; k < 4; ++k)
+    {
+      if (k != lone)
+      {
+        emitIsoVertex(lone, k, c);
+      }
+    }
+  }
+  EndPrimitive();
+}
+
+// Draws piece j of the cell's volume (skipped when early discard finds it transparent).
+void emitPiece(int j, float smin, float smax, bool nearClipped)
+{
+//PSI::EarlyDiscard::Piece
+  currentPiece = float(j);
+  emitVolume(nearClipped);
+}
+
+// Along a ray from the eye the (linear) scalar is monotone, starting from its extrapolated value
+// at the eye, sEye: the level sets crossed are the ones on one side of sEye, nearest first. So,
+// back to front: the pieces above sEye from the highest down, each followed by the surface at
+// its lower end; the pieces below sEye from the lowest up, each followed by the surface at its
+// upper end (no ray sees both sides); last the piece containing sEye. In parallel projection
+// sEye is -inf or +inf, by the sign of the scalar's change along the view direction (0, 0, -1).
+// At most PSI_ISO_COUNT + 1 pieces of 8 vertices and PSI_ISO_COUNT surfaces of 4.
+void emitPiecesAndSurfaces(float smin, float smax, bool nearClipped)
+{
+  const float big = 3.0e38;
+  int first = 0;
+  while (first < PSI_ISO_COUNT && isoValues[first] <= smin)
+  {
+    ++first;
+  }
+  int last = first - 1;
+  while (last + 1 < PSI_ISO_COUNT && isoValues[last + 1] <= smax)
+  {
+    ++last;
+  }
+  if (last < first)
+  {
+    emitPiece(PSI_ISO_COUNT + 1, smin, smax, nearClipped); // no crossing: the whole cell
+    return;
+  }
+  fetchNormals(); // only cells with a surface pay for the normals
+  float sEye = parallelProjection == 1 ? (gradient.z < 0.0 ? -big : big)
+                                       : scalar[0] - dot(gradient, viewP[0]);
+  // piece j lies between isoValues[j - 1] and isoValues[j]; this cell has pieces first..last+1
+  int e = first;
+  while (e <= last && isoValues[e] <= sEye)
+  {
+    ++e;
+  }
+  for (int j = last + 1; j > e; --j)
+  {
+    emitPiece(j, smin, smax, nearClipped);
+    emitSurface(j - 1);
+  }
+  for (int j = first; j < e; ++j)
+  {
+    emitPiece(j, smin, smax, nearClipped);
+    emitSurface(j);
+  }
+  emitPiece(e, smin, smax, nearClipped);
+}
+
+//PSI::IsoTriangles::Emit
+  emitPiecesAndSurfaces(smin, smax, nearClipped);
+  return;

@@ -1,0 +1,280 @@
+// The composed Psi Volume shader programs (PsiShaderComposer.h): over a covering set of feature
+// combinations (every integration method; exact / screen-linear segments; near clip; opaque
+// clip; early discard; isosurfaces none / per fragment / marching tetrahedra, flat and smooth;
+// adaptive sampling) each feature's code is present exactly when the feature is on, no tag is
+// left, the geometry-shader budget matches max_vertices and the outputs of the composed source,
+// and a representative subset compiles and links with the real driver. Needs an X server.
+// Usage: TestShaderComposition [output-dir]   (writes the compiled subset's composed sources)
+#include "PsiShaderComposer.h"
+#include "PsiTestCheck.h"
+
+#include "vtkNew.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkRenderWindow.h"
+#include "vtkShaderProgram.h"
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+bool Has(const std::string& src, const char* what)
+{
+  return src.find(what) != std::string::npos;
+}
+
+// Lines that still look like a //PSI:: tag, or preprocessor conditionals (features are
+// composed, not #ifdef'd).
+int Leftovers(const std::string& src)
+{
+  int n = 0;
+  std::istringstream in(src);
+  for (std::string line; std::getline(in, line);)
+  {
+    const size_t b = line.find_first_not_of(" \t");
+    if (b != std::string::npos &&
+      (line.compare(b, 7, "//PSI::") == 0 || line.compare(b, 3, "#if") == 0))
+    {
+      ++n;
+    }
+  }
+  return n;
+}
+
+// Iso modes: 0 none, 1 per fragment flat, 2 per fragment smooth, 3 triangles flat, 4 smooth.
+psi::ShaderFeatures Make(int method, bool exact, bool nearClip, bool opaque, bool early, int iso,
+  bool adaptive, int isoCount = 3)
+{
+  psi::ShaderFeatures f;
+  f.Method = method;
+  f.ExactSegments = exact;
+  f.NearClip = nearClip;
+  f.OpaqueClip = opaque;
+  f.Adaptive = adaptive;
+  f.IsoCount = iso ? isoCount : 0;
+  f.IsoSmooth = iso == 2 || iso == 4;
+  f.IsoTriangles = iso >= 3;
+  // The mapper's rule: no early discard with per-fragment isosurfaces.
+  f.EarlyDiscard = early && (iso == 0 || iso >= 3);
+  return f;
+}
+
+std::string Describe(const psi::ShaderFeatures& f)
+{
+  return "method " + std::to_string(f.Method) + "\n" + f.Defines();
+}
+
+void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
+{
+  const std::string what = Describe(f);
+  const bool iso = f.IsoCount > 0;
+  const bool tri = iso && f.IsoTriangles;
+  const bool perFragment = iso && !f.IsoTriangles;
+  const std::string& vs = s.Vertex;
+  const std::string& gs = s.Geometry;
+  const std::string& fs = s.Fragment;
+  PSI_CHECK(Leftovers(vs) + Leftovers(gs) + Leftovers(fs) == 0, "tags or #if left:\n%s",
+    what.c_str());
+  // One declaration of each feature file, present exactly when the feature is on.
+  struct Expect
+  {
+    const std::string* Src;
+    const char* Text;
+    bool On;
+  };
+  const Expect expects[] = {
+    { &vs, "flat out uvec4 vsIds;", iso || f.NearClip },
+    { &gs, "flat in uvec4 vsIds[];", iso || f.NearClip },
+    { &gs, "uniform int classTable[81];", true },
+    { &gs, "vec3 gradient;", f.ExactSegments || iso },
+    { &gs, "noperspective out vec3 segment;", !f.ExactSegments },
+    { &fs, "noperspective in vec3 segment;", !f.ExactSegments },
+    { &gs, "flat out vec4 backPlane;", f.ExactSegments },
+    { &fs, "flat in vec4 backPlane;", f.ExactSegments },
+    { &gs, "uniform float nearZ;", f.NearClip },
+    { &gs, "flat out ivec4 clipTet;", f.NearClip },
+    { &fs, "flat in ivec4 clipTet;", f.NearClip },
+    { &fs, "uniform sampler2D sceneDepth;", f.NearClip || f.OpaqueClip },
+    { &fs, "float toOpaque", f.OpaqueClip },
+    { &gs, "uniform sampler2D opacityPrefix;", f.EarlyDiscard },
+    { &gs, "if (transparentRange(smin, smax))", f.EarlyDiscard && !tri },
+    { &gs, "if (transparentRange(lo, hi))", f.EarlyDiscard && tri },
+    { &gs, "vec3 pointNormal[4];", iso },
+    { &gs, "uniform samplerBuffer pointGradients;", iso && f.IsoSmooth },
+    { &fs, "uniform vec3 isoColors[PSI_ISO_COUNT];", iso },
+    { &gs, "flat out float piece;", tri },
+    { &fs, "flat in float piece;", tri },
+    { &gs, "flat out mat3 isoJ;", perFragment },
+    { &fs, "flat in mat3 isoJ;", perFragment },
+    { &fs, "uniform float tfNodes[PSI_TF_NODES_MAX];", f.Adaptive },
+    { &fs, "vec4 integrateSplit(", f.Adaptive || perFragment },
+    { &fs, "uniform sampler2D psiTable;", f.Method == 1 },
+    { &fs, "uniform float unitDistance;", f.Method >= 3 && f.Method <= 5 },
+    { &fs, "uniform sampler3D preIntegrated;", f.Method == 6 },
+  };
+  for (const Expect& e : expects)
+  {
+    PSI_CHECK(Has(*e.Src, e.Text) == e.On, "'%s' should be %s:\n%s", e.Text,
+      e.On ? "present" : "absent", what.c_str());
+  }
+  // Counts: the only #defines left.
+  PSI_CHECK(Has(gs, "#define PSI_ISO_COUNT ") == iso && Has(fs, "#define PSI_ISO_COUNT ") == iso,
+    "PSI_ISO_COUNT:\n%s", what.c_str());
+  PSI_CHECK(Has(fs, "#define PSI_TF_NODES_MAX ") == f.Adaptive, "PSI_TF_NODES_MAX:\n%s",
+    what.c_str());
+  // The geometry-shader budget is the one declared in the source.
+  std::smatch m;
+  const bool found = std::regex_search(gs, m, std::regex("#define PSI_GS_MAX_VERTICES (\\d+)\n"));
+  PSI_CHECK(found && Has(gs, "max_vertices = PSI_GS_MAX_VERTICES)"), "max_vertices:\n%s",
+    what.c_str());
+  const int vertices = psi::GeometryOutputVertices(f);
+  PSI_CHECK(found && std::stoi(m[1]) == vertices, "max_vertices %s != %d:\n%s",
+    found ? m[1].str().c_str() : "?", vertices, what.c_str());
+  const int niso = f.IsoCount;
+  PSI_CHECK(vertices == (tri ? 8 * (niso + 1) + 4 * niso : 8), "vertices %d:\n%s", vertices,
+    what.c_str());
+  // Per-vertex components: gl_Position, the segment (frontPoint + backPlane + scalarGrad, or
+  // segment), the flat data of the features (piece, clipTet, isoG0 + isoJ + isoV0).
+  const int components = psi::GeometryOutputComponentsPerVertex(f);
+  const int expected = 4 + (f.ExactSegments ? 12 : 3) + (tri ? 1 : 0) + (f.NearClip ? 4 : 0) +
+    (perFragment ? 15 : 0);
+  PSI_CHECK(components == expected, "components %d, expected %d:\n%s", components, expected,
+    what.c_str());
+  PSI_CHECK(psi::FitsGeometryOutputLimits(f, vertices, vertices * components) &&
+      !psi::FitsGeometryOutputLimits(f, vertices - 1, 1 << 30) &&
+      !psi::FitsGeometryOutputLimits(f, vertices, vertices * components - 1),
+    "FitsGeometryOutputLimits:\n%s", what.c_str());
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const std::string outDir = argc > 1 ? argv[1] : "";
+  const auto t0 = std::chrono::steady_clock::now();
+  // 1. Composition of every combination (strings only).
+  std::vector<psi::ShaderFeatures> all;
+  for (int method = 0; method < 7; ++method)
+  {
+    for (int bits = 0; bits < 32; ++bits)
+    {
+      for (int iso = 0; iso < 5; ++iso)
+      {
+        all.push_back(Make(method, bits & 1, bits & 2, bits & 4, bits & 8, iso, bits & 16));
+      }
+    }
+  }
+  all.push_back(Make(1, false, false, false, false, 3, false, 1));
+  all.push_back(Make(1, true, true, false, true, 4, true, 32));
+  std::map<std::string, psi::ShaderSources> byKey;
+  std::map<std::string, std::string> keyBySources;
+  for (const psi::ShaderFeatures& f : all)
+  {
+    psi::ShaderSources s;
+    try
+    {
+      s = psi::ComposeShaders(f);
+    }
+    catch (const std::exception& e)
+    {
+      PSI_CHECK(false, "composition throws %s:\n%s", e.what(), Describe(f).c_str());
+      continue;
+    }
+    CheckComposition(f, s);
+    PSI_CHECK(f == f && !(f != f), "operator==");
+    const std::string key = f.Key();
+    const std::string sources = s.Vertex + "\n--\n" + s.Geometry + "\n--\n" + s.Fragment;
+    auto k = byKey.find(key);
+    if (k != byKey.end())
+    {
+      PSI_CHECK(k->second.Vertex == s.Vertex && k->second.Geometry == s.Geometry &&
+          k->second.Fragment == s.Fragment,
+        "one key, two programs:\n%s", key.c_str());
+    }
+    byKey[key] = s;
+    auto p = keyBySources.find(sources);
+    PSI_CHECK(p == keyBySources.end() || p->second == key, "one program, two keys:\n%s\n%s",
+      key.c_str(), p == keyBySources.end() ? "" : p->second.c_str());
+    keyBySources[sources] = key;
+    // A caller's integrator source is used as given.
+  }
+  {
+    psi::ShaderFeatures f = Make(2, false, false, false, false, 0, false);
+    const psi::ShaderSources a = psi::ComposeShaders(f, psi::IntegratorSource(0));
+    const psi::ShaderSources b = psi::ComposeShaders(Make(0, false, false, false, false, 0, false));
+    PSI_CHECK(a.Fragment == b.Fragment, "the integrator source argument decides the integrator");
+  }
+  std::printf("%zu feature combinations composed, %zu distinct programs\n", all.size(),
+    byKey.size());
+
+  // 2. A representative subset compiled and linked by the driver: every method plain and with
+  // every feature on, every method with each isosurface mode with and without exact segments,
+  // near and opaque clipping, and each feature alone.
+  std::vector<psi::ShaderFeatures> compile;
+  for (int method = 0; method < 7; ++method)
+  {
+    compile.push_back(Make(method, false, false, false, false, 0, false));
+    compile.push_back(Make(method, true, true, true, true, method % 2 ? 4 : 2, true));
+  }
+  for (int iso = 1; iso < 5; ++iso)
+  {
+    for (int exact = 0; exact < 2; ++exact)
+    {
+      for (int method = 0; method < 7; ++method)
+      {
+        if (method != 1)
+        {
+          compile.push_back(Make(method, exact, false, false, false, iso, false));
+        }
+      }
+      compile.push_back(Make(1, exact, false, false, true, iso, false));
+      compile.push_back(Make(1, exact, true, true, false, iso, iso % 2));
+    }
+  }
+  compile.push_back(Make(1, true, false, false, false, 0, false));
+  compile.push_back(Make(1, false, true, false, false, 0, false));
+  compile.push_back(Make(1, false, false, true, false, 0, false));
+  compile.push_back(Make(1, false, false, false, true, 0, false));
+  compile.push_back(Make(1, false, false, false, false, 0, true));
+  compile.push_back(Make(1, true, true, true, true, 3, true, 1));
+
+  vtkNew<vtkRenderWindow> rw;
+  rw->SetSize(8, 8);
+  rw->SetOffScreenRendering(1);
+  rw->Render();
+  vtkOpenGLRenderWindow* win = vtkOpenGLRenderWindow::SafeDownCast(rw);
+  PSI_CHECK(win != nullptr, "an OpenGL render window");
+  int compiled = 0;
+  for (const psi::ShaderFeatures& f : compile)
+  {
+    if (!win)
+    {
+      break;
+    }
+    const psi::ShaderSources s = psi::ComposeShaders(f);
+    if (!outDir.empty())
+    {
+      std::ofstream(outDir + "/program" + std::to_string(compiled) + ".glsl")
+        << "// " << Describe(f) << "\n// ---- vertex\n" << s.Vertex << "// ---- geometry\n"
+        << s.Geometry << "// ---- fragment\n" << s.Fragment;
+    }
+    vtkShaderProgram* prog = win->GetShaderCache()->ReadyShaderProgram(
+      s.Vertex.c_str(), s.Fragment.c_str(), s.Geometry.c_str());
+    PSI_CHECK(prog != nullptr && prog->GetCompiled(), "does not compile or link:\n%s",
+      Describe(f).c_str());
+    compiled += prog != nullptr ? 1 : 0;
+  }
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("%d of %zu programs compiled and linked (%.1f s)\n", compiled, compile.size(),
+    seconds);
+  std::printf("%s\n",
+    psitest::Failures() ? "TestShaderComposition FAILED" : "TestShaderComposition passed");
+  return psitest::Failures() ? 1 : 0;
+}
