@@ -34,57 +34,78 @@ struct Counts
 {
   size_t Constraints = 0, Degenerate = 0, Inconsistent = 0;
 };
-} // namespace
-
-MPVONCResult SortMPVONC(const float* points4, const uint32_t* tets, size_t numTets,
-  const int32_t* neighbors, const double eye[3], bool parallel, std::vector<uint32_t>& order)
+// The fallback's sort key of tetrahedron t: distance from the eye to its centroid, or depth
+// along the view direction (as in SortBackToFront).
+uint64_t CentroidKey(const float* points4, const uint32_t* v, uint32_t t, const double eye[3],
+  bool parallel)
 {
-  MPVONCResult result;
-  order.clear();
-  if (numTets == 0)
+  float ctr[3] = { 0, 0, 0 };
+  for (int k = 0; k < 4; ++k)
   {
-    return result;
+    for (int a = 0; a < 3; ++a)
+    {
+      ctr[a] += 0.25f * points4[4 * static_cast<size_t>(v[k]) + a];
+    }
   }
-  order.reserve(numTets);
-  const int64_t n = static_cast<int64_t>(numTets);
-  auto P = [&](uint32_t id) { return points4 + 4 * static_cast<size_t>(id); };
+  if (parallel)
+  {
+    return DepthKey(static_cast<float>(ctr[0] * eye[0] + ctr[1] * eye[1] + ctr[2] * eye[2]), t);
+  }
+  const float dx = ctr[0] - static_cast<float>(eye[0]);
+  const float dy = ctr[1] - static_cast<float>(eye[1]);
+  const float dz = ctr[2] - static_cast<float>(eye[2]);
+  return DepthKey(dx * dx + dy * dy + dz * dz, t);
+}
 
-  // Phase I (Williams §4, "the behind relation"): for each interior face, decided once by the
-  // tetrahedron with the smaller id and written on both sides, so the two sides always agree
-  // (that consistency is what makes the sort terminate with a permutation whatever the
-  // floating-point signs). The eye is compared with the face plane: when the eye and the
-  // tetrahedron's opposite vertex are on the same side, the neighbour is behind the face.
-  std::vector<int8_t> rel(4 * numTets, NoOrder);
-  // The sort key of the fallback (centroid distance or depth, as in SortBackToFront).
-  std::vector<uint64_t> keys(numTets);
+// Williams §4: the relation across face f of the tetrahedron with points v. The eye is compared
+// with the face plane: when the eye and the opposite vertex are on the same side, the neighbour
+// is behind the face. NoOrder for an edge-on face (the eye in its plane) or a flat tetrahedron.
+int8_t FaceRelation(const float* points4, const uint32_t* v, int f, const double eye[3],
+  bool parallel)
+{
+  auto P = [&](uint32_t id) { return points4 + 4 * static_cast<size_t>(id); };
+  const float* a = P(v[FaceVerts[f][0]]);
+  const float* b = P(v[FaceVerts[f][1]]);
+  const float* cc = P(v[FaceVerts[f][2]]);
+  const float* o = P(v[f]);
+  const double u[3] = { double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2] };
+  const double w[3] = { double(cc[0]) - a[0], double(cc[1]) - a[1], double(cc[2]) - a[2] };
+  const double N[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+    u[0] * w[1] - u[1] * w[0] };
+  const double so = N[0] * (double(o[0]) - a[0]) + N[1] * (double(o[1]) - a[1]) +
+    N[2] * (double(o[2]) - a[2]);
+  double e[3]; // toward the eye; in parallel projection the eye is at infinity
+  for (int k = 0; k < 3; ++k)
+  {
+    e[k] = parallel ? -eye[k] : eye[k] - a[k];
+  }
+  const double se = N[0] * e[0] + N[1] * e[1] + N[2] * e[2];
+  const double scale = std::sqrt(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]) *
+    std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+  if (so == 0 || !(std::abs(se) > 1e-10 * scale))
+  {
+    return NoOrder;
+  }
+  return (so > 0) == (se > 0) ? NeighborBehind : NeighborInFront;
+}
+
+// Phase I (Williams §4, "the behind relation") and the fallback keys. Each interior face is
+// decided once, by the tetrahedron with the smaller id, and written on both sides, so the two
+// sides always agree: that consistency makes the sort end in a permutation whatever the
+// floating-point signs.
+void BehindRelation(const float* points4, const uint32_t* tets, int64_t n,
+  const int32_t* neighbors, const double eye[3], bool parallel, std::vector<int8_t>& rel,
+  std::vector<uint64_t>& keys, MPVONCResult& result)
+{
+  rel.assign(4 * static_cast<size_t>(n), NoOrder);
+  keys.resize(static_cast<size_t>(n));
   vtkSMPThreadLocal<Counts> localCounts;
   vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
     Counts& c = localCounts.Local();
     for (vtkIdType t = begin; t < end; ++t)
     {
       const uint32_t* v = tets + 4 * t;
-      float ctr[3] = { 0, 0, 0 };
-      for (int k = 0; k < 4; ++k)
-      {
-        for (int a = 0; a < 3; ++a)
-        {
-          ctr[a] += 0.25f * P(v[k])[a];
-        }
-      }
-      float d;
-      if (parallel)
-      {
-        d = static_cast<float>(ctr[0] * eye[0] + ctr[1] * eye[1] + ctr[2] * eye[2]);
-      }
-      else
-      {
-        const float dx = ctr[0] - static_cast<float>(eye[0]);
-        const float dy = ctr[1] - static_cast<float>(eye[1]);
-        const float dz = ctr[2] - static_cast<float>(eye[2]);
-        d = dx * dx + dy * dy + dz * dz;
-      }
-      keys[t] = DepthKey(d, static_cast<uint32_t>(t));
-
+      keys[t] = CentroidKey(points4, v, static_cast<uint32_t>(t), eye, parallel);
       for (int f = 0; f < 4; ++f)
       {
         const int64_t nb = neighbors[4 * t + f];
@@ -106,43 +127,15 @@ MPVONCResult SortMPVONC(const float* points4, const uint32_t* tets, size_t numTe
         {
           continue; // decided by the neighbour
         }
-        const float* a = P(v[FaceVerts[f][0]]);
-        const float* b = P(v[FaceVerts[f][1]]);
-        const float* cc = P(v[FaceVerts[f][2]]);
-        const float* o = P(v[f]);
-        const double u[3] = { double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2] };
-        const double w[3] = { double(cc[0]) - a[0], double(cc[1]) - a[1], double(cc[2]) - a[2] };
-        const double N[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
-          u[0] * w[1] - u[1] * w[0] };
-        const double so = N[0] * (double(o[0]) - a[0]) + N[1] * (double(o[1]) - a[1]) +
-          N[2] * (double(o[2]) - a[2]);
-        double e[3];
-        if (parallel)
-        {
-          // The eye at infinity, opposite the view direction.
-          e[0] = -eye[0];
-          e[1] = -eye[1];
-          e[2] = -eye[2];
-        }
-        else
-        {
-          e[0] = eye[0] - a[0];
-          e[1] = eye[1] - a[1];
-          e[2] = eye[2] - a[2];
-        }
-        const double se = N[0] * e[0] + N[1] * e[1] + N[2] * e[2];
-        const double scale = std::sqrt(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]) *
-          std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-        // Edge-on face (the eye in its plane) or a flat tetrahedron: no order is imposed.
-        if (so == 0 || !(std::abs(se) > 1e-10 * scale))
+        const int8_t r = FaceRelation(points4, v, f, eye, parallel);
+        if (r == NoOrder)
         {
           ++c.Degenerate;
           continue;
         }
         ++c.Constraints;
-        const bool neighborBehind = (so > 0) == (se > 0);
-        rel[4 * t + f] = neighborBehind ? NeighborBehind : NeighborInFront;
-        rel[4 * nb + j] = neighborBehind ? NeighborInFront : NeighborBehind;
+        rel[4 * t + f] = r;
+        rel[4 * nb + j] = static_cast<int8_t>(-r);
       }
     }
   });
@@ -152,11 +145,14 @@ MPVONCResult SortMPVONC(const float* points4, const uint32_t* tets, size_t numTe
     result.DegenerateFaces += c.Degenerate;
     result.InconsistentFaces += c.Inconsistent;
   }
+}
 
-  // Phase II (Williams §5): in-degree = number of neighbours behind the tetrahedron. The
-  // sources (in-degree 0) are the cells whose faces pointing away from the viewer are all
-  // boundary faces (or edge-on) - in a convex mesh, the cells on the far side of the boundary.
-  std::vector<uint8_t> indeg(numTets, 0);
+// Phase II (Williams §5): in-degree = number of neighbours behind the tetrahedron. The sources
+// (in-degree 0) are the cells whose faces pointing away from the viewer are all boundary faces
+// (or edge-on): in a convex mesh, the cells on the far side of the boundary.
+std::vector<uint8_t> InDegrees(const std::vector<int8_t>& rel, int64_t n)
+{
+  std::vector<uint8_t> indeg(static_cast<size_t>(n), 0);
   vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType t = begin; t < end; ++t)
     {
@@ -166,12 +162,20 @@ MPVONCResult SortMPVONC(const float* points4, const uint32_t* tets, size_t numTe
       indeg[t] = static_cast<uint8_t>(std::count(r, r + 4, NeighborBehind));
     }
   });
+  return indeg;
+}
 
-  // Phase III (Williams §5, with MPVONC's depth heuristic of §6): Kahn's topological sort in
-  // which the ready tetrahedron taken next is always the farthest one (min-heap on the key).
+// Phase III (Williams §5, with MPVONC's depth heuristic of §6): Kahn's topological sort in which
+// the ready tetrahedron taken next is always the farthest one (min-heap on the key); when none
+// is ready (a cycle, Williams §7) the farthest remaining one is taken.
+void TopologicalOrder(const int32_t* neighbors, const std::vector<int8_t>& rel,
+  const std::vector<uint64_t>& keys, std::vector<uint8_t>& indeg, std::vector<uint32_t>& order,
+  MPVONCResult& result)
+{
+  const size_t numTets = keys.size();
   std::vector<uint64_t> heap;
   heap.reserve(1024);
-  for (int64_t t = 0; t < n; ++t)
+  for (size_t t = 0; t < numTets; ++t)
   {
     if (indeg[t] == 0)
     {
@@ -184,7 +188,6 @@ MPVONCResult SortMPVONC(const float* points4, const uint32_t* tets, size_t numTe
   std::vector<uint8_t> emitted(numTets, 0);
   std::vector<uint64_t> allByDepth; // built on the first cycle only
   size_t fallback = 0;
-
   while (order.size() < numTets)
   {
     uint32_t t;
@@ -199,7 +202,6 @@ MPVONCResult SortMPVONC(const float* points4, const uint32_t* tets, size_t numTe
     }
     else
     {
-      // A cycle (Williams §7): nothing is ready, so take the farthest remaining tetrahedron.
       if (allByDepth.empty())
       {
         allByDepth = keys;
@@ -227,6 +229,25 @@ MPVONCResult SortMPVONC(const float* points4, const uint32_t* tets, size_t numTe
       }
     }
   }
+}
+} // namespace
+
+MPVONCResult SortMPVONC(const float* points4, const uint32_t* tets, size_t numTets,
+  const int32_t* neighbors, const double eye[3], bool parallel, std::vector<uint32_t>& order)
+{
+  MPVONCResult result;
+  order.clear();
+  if (numTets == 0)
+  {
+    return result;
+  }
+  order.reserve(numTets);
+  const int64_t n = static_cast<int64_t>(numTets);
+  std::vector<int8_t> rel;
+  std::vector<uint64_t> keys;
+  BehindRelation(points4, tets, n, neighbors, eye, parallel, rel, keys, result);
+  std::vector<uint8_t> indeg = InDegrees(rel, n);
+  TopologicalOrder(neighbors, rel, keys, indeg, order, result);
   return result;
 }
 

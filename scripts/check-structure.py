@@ -1,0 +1,94 @@
+#!/usr/bin/env python3
+"""Checks the size limits of the code layout (docs/architecture.md):
+  - no C++ function in Core/, Representations/, Filters/ or Readers/ longer than 150 lines;
+  - no C++ file there longer than 600 lines, and vtkPsiVolumeMapper.cxx at most 500;
+  - no shader file (Shaders/*.glsl) longer than 300 lines;
+  - Filters/vtk.module does not depend on the Representations module.
+Function bodies are found by brace matching on the source with comments and strings removed:
+a body is the braces that follow a line ending a signature `)` (or `) const`, `override`).
+Prints every violation and exits 1 when there is one."""
+import pathlib
+import re
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+FOLDERS = ["Core", "Representations", "Filters", "Readers"]
+MAX_FUNCTION, MAX_FILE, MAX_MAPPER, MAX_SHADER = 150, 600, 500, 300
+
+
+def strip(src):
+    """Removes comments, string and character literals, keeping line breaks."""
+    out, i, n = [], 0, len(src)
+    while i < n:
+        c = src[i]
+        if src.startswith("//", i):
+            j = src.find("\n", i)
+            i = n if j < 0 else j
+        elif src.startswith("/*", i):
+            j = src.find("*/", i + 2)
+            j = n if j < 0 else j + 2
+            out.append("\n" * src.count("\n", i, j))
+            i = j
+        elif c in "\"'":
+            j = i + 1
+            while j < n and src[j] != c:
+                j += 2 if src[j] == "\\" else 1
+            out.append(c + c)
+            i = j + 1
+        else:
+            out.append(c)
+            i += 1
+    return "".join(out)
+
+
+SIGNATURE_END = re.compile(r"\)\s*(const)?\s*(override)?\s*(noexcept)?\s*$")
+
+
+def functions(path):
+    """(name line, length) of each function body that starts after a signature line."""
+    lines = strip(path.read_text()).split("\n")
+    found, depth, start = [], 0, None
+    for k, line in enumerate(lines):
+        for ch in line:
+            if ch == "{":
+                if depth == 0 or start is None and depth >= 0:
+                    prev = lines[k - 1].strip() if line.strip() == "{" and k > 0 else line
+                    if start is None and (SIGNATURE_END.search(prev.split("{")[0].strip())
+                                          or SIGNATURE_END.search(line.split("{")[0].strip())):
+                        start = (k, depth)
+                depth += 1
+            elif ch == "}":
+                depth -= 1
+                if start is not None and depth == start[1]:
+                    found.append((start[0] + 1, k - start[0] + 1))
+                    start = None
+    return found
+
+
+def main():
+    errors = []
+    for folder in FOLDERS:
+        for path in sorted((ROOT / folder).glob("*.[ch]xx")) + sorted((ROOT / folder).glob("*.h")):
+            rel = path.relative_to(ROOT)
+            n = path.read_text().count("\n")
+            limit = MAX_MAPPER if path.name == "vtkPsiVolumeMapper.cxx" else MAX_FILE
+            if n > limit:
+                errors.append("%s: %d lines (limit %d)" % (rel, n, limit))
+            for line, length in functions(path):
+                if length > MAX_FUNCTION:
+                    errors.append("%s:%d: function of %d lines (limit %d)"
+                                  % (rel, line, length, MAX_FUNCTION))
+    for path in sorted((ROOT / "Shaders").glob("*.glsl")):
+        n = path.read_text().count("\n")
+        if n > MAX_SHADER:
+            errors.append("%s: %d lines (limit %d)" % (path.relative_to(ROOT), n, MAX_SHADER))
+    if "Representations" in (ROOT / "Filters" / "vtk.module").read_text():
+        errors.append("Filters/vtk.module depends on the Representations module")
+    for e in errors:
+        print(e)
+    print("structure: %d violation(s)" % len(errors))
+    return 1 if errors else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
