@@ -1,6 +1,9 @@
 #include "vtkPsiConformingTetrahedralize.h"
 
-#include "PsiTetConnectivity.h"
+#include "PsiCellFaces.h"
+#include "PsiConformingDiagonals.h"
+#include "PsiFaceNeighborArrays.h"
+#include "PsiOrientedTetrahedra.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -8,28 +11,21 @@
 #include "vtkCellTypes.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkFieldData.h"
-#include "vtkHexagonalPrism.h"
-#include "vtkHexahedron.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIntArray.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkPentagonalPrism.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
-#include "vtkPyramid.h"
 #include "vtkRectilinearGrid.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStructuredGrid.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkWedge.h"
-
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -40,153 +36,125 @@ vtkStandardNewMacro(vtkPsiConformingTetrahedralize);
 
 namespace
 {
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point3 = Kernel::Point_3;
-
-// The literature's 5-tetrahedra split of a hexahedron (VTK corner order), in its two mirror
-// images; alternating them with the parity of i + j + k makes the face diagonals of structured
-// neighbours coincide (even: diagonals 0-2, 0-5, 0-7, 2-5, 2-7, 5-7; odd: the other ones).
-constexpr int FiveEven[5][4] = { { 1, 0, 2, 5 }, { 3, 0, 2, 7 }, { 4, 0, 5, 7 }, { 6, 2, 5, 7 },
-  { 0, 2, 5, 7 } };
-constexpr int FiveOdd[5][4] = { { 0, 1, 3, 4 }, { 2, 1, 3, 6 }, { 5, 1, 4, 6 }, { 7, 3, 4, 6 },
-  { 1, 3, 4, 6 } };
-
-// A cell given by its faces (polygons of global point ids, cyclic order).
-struct FaceSet
+// The point dimensions of image, rectilinear and structured grids; zeros for other data sets.
+void StructuredDimensions(vtkDataSet* input, int dims[3])
 {
-  std::vector<vtkIdType> Ids;     // all face ids, concatenated
-  std::vector<vtkIdType> Offsets; // start of each face in Ids, plus the end
-  void Clear()
+  dims[0] = dims[1] = dims[2] = 0;
+  if (auto* image = vtkImageData::SafeDownCast(input))
   {
-    this->Ids.clear();
-    this->Offsets.assign(1, 0);
+    image->GetDimensions(dims);
   }
-  void Close() { this->Offsets.push_back(static_cast<vtkIdType>(this->Ids.size())); }
-};
-
-// Adds the faces of a standard linear cell from VTK's static face tables (local ids, -1 ends a
-// face shorter than MaximumFaceSize).
-template <class CellT>
-void AddStandardFaces(const vtkIdType* pts, FaceSet& faces)
-{
-  faces.Clear();
-  for (vtkIdType f = 0; f < CellT::NumberOfFaces; ++f)
+  else if (auto* rgrid = vtkRectilinearGrid::SafeDownCast(input))
   {
-    const vtkIdType* local = CellT::GetFaceArray(f);
-    for (vtkIdType k = 0; k < CellT::MaximumFaceSize && local[k] >= 0; ++k)
-    {
-      faces.Ids.push_back(pts[local[k]]);
-    }
-    faces.Close();
+    rgrid->GetDimensions(dims);
+  }
+  else if (auto* sgrid = vtkStructuredGrid::SafeDownCast(input))
+  {
+    sgrid->GetDimensions(dims);
   }
 }
 
-// The point ids of the linear cell under a higher-order one (its corners come first in VTK's
-// ordering), or VTK_EMPTY_CELL when the type is not handled.
-int LinearType(int type)
+// The input's points: shared with a point set, generated for implicit grids.
+vtkSmartPointer<vtkPoints> InputPoints(vtkDataSet* input)
 {
-  switch (type)
+  vtkSmartPointer<vtkPoints> points;
+  if (auto* ps = vtkPointSet::SafeDownCast(input))
   {
-    case VTK_TETRA:
-    case VTK_QUADRATIC_TETRA:
-    case VTK_LAGRANGE_TETRAHEDRON:
-    case VTK_BEZIER_TETRAHEDRON:
-    case VTK_HIGHER_ORDER_TETRAHEDRON:
-      return VTK_TETRA;
-    case VTK_HEXAHEDRON:
-    case VTK_QUADRATIC_HEXAHEDRON:
-    case VTK_TRIQUADRATIC_HEXAHEDRON:
-    case VTK_BIQUADRATIC_QUADRATIC_HEXAHEDRON:
-    case VTK_LAGRANGE_HEXAHEDRON:
-    case VTK_BEZIER_HEXAHEDRON:
-    case VTK_HIGHER_ORDER_HEXAHEDRON:
-      return VTK_HEXAHEDRON;
-    case VTK_WEDGE:
-    case VTK_QUADRATIC_WEDGE:
-    case VTK_QUADRATIC_LINEAR_WEDGE:
-    case VTK_BIQUADRATIC_QUADRATIC_WEDGE:
-    case VTK_LAGRANGE_WEDGE:
-    case VTK_BEZIER_WEDGE:
-    case VTK_HIGHER_ORDER_WEDGE:
-      return VTK_WEDGE;
-    case VTK_PYRAMID:
-    case VTK_QUADRATIC_PYRAMID:
-    case VTK_TRIQUADRATIC_PYRAMID:
-    case VTK_LAGRANGE_PYRAMID:
-    case VTK_BEZIER_PYRAMID:
-    case VTK_HIGHER_ORDER_PYRAMID:
-      return VTK_PYRAMID;
-    case VTK_VOXEL:
-    case VTK_PENTAGONAL_PRISM:
-    case VTK_HEXAGONAL_PRISM:
-    case VTK_POLYHEDRON:
-      return type;
-    default:
-      return VTK_EMPTY_CELL;
+    points = ps->GetPoints();
   }
+  if (!points)
+  {
+    const vtkIdType numPoints = input->GetNumberOfPoints();
+    points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(numPoints);
+    for (vtkIdType i = 0; i < numPoints; ++i)
+    {
+      double x[3];
+      input->GetPoint(i, x);
+      points->SetPoint(i, x);
+    }
+  }
+  return points;
 }
 
-// Collects tetrahedra: orients them positively with CGAL's exact orientation predicate and drops
-// the flat ones (CGAL::COPLANAR).
-struct TetSink
+// The coordinates of `points` as doubles, 3 per point, for the exact orientation predicate.
+std::vector<double> DoubleCoordinates(vtkPoints* points, vtkIdType numPoints)
 {
-  const std::vector<Point3>& Points;
-  std::vector<vtkIdType> Connectivity;
-  std::vector<vtkIdType> Parent;
-  vtkIdType Generated = 0;
-  vtkIdType Removed = 0;
+  std::vector<double> xyz(3 * static_cast<size_t>(numPoints));
+  vtkSMPTools::For(0, numPoints, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      points->GetPoint(i, xyz.data() + 3 * i);
+    }
+  });
+  return xyz;
+}
 
-  explicit TetSink(const std::vector<Point3>& points)
-    : Points(points)
+// Hidden (blanked) cells, which are skipped: IBLANK of PLOT3D grids, for instance.
+class HiddenCells
+{
+public:
+  explicit HiddenCells(vtkDataSet* input)
+    : SGrid(vtkStructuredGrid::SafeDownCast(input))
+    , Ghosts(input->GetCellData()->GetGhostArray())
   {
+    this->SGridBlanking =
+      this->SGrid && (this->SGrid->HasAnyBlankCells() || this->SGrid->HasAnyBlankPoints());
   }
 
-  void Add(vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d, vtkIdType cellId)
+  bool operator()(vtkIdType cellId) const
   {
-    ++this->Generated;
-    switch (CGAL::orientation(this->Points[a], this->Points[b], this->Points[c], this->Points[d]))
+    if (this->SGridBlanking)
     {
-      case CGAL::COPLANAR:
-        ++this->Removed;
-        return;
-      case CGAL::NEGATIVE:
-        std::swap(c, d); // VTK's positive tetrahedron: (0,1,2) counterclockwise seen from 3
-        break;
-      default:
-        break;
+      return !this->SGrid->IsCellVisible(cellId);
     }
-    this->Connectivity.insert(this->Connectivity.end(), { a, b, c, d });
-    this->Parent.push_back(cellId);
+    return this->Ghosts && (this->Ghosts->GetValue(cellId) & vtkDataSetAttributes::HIDDENCELL);
   }
 
-  // The conforming split: every face is triangulated by the fan from its smallest id (a quad by
-  // its min-id diagonal) and the cell is the cone from its smallest id over the faces that do
-  // not contain it. The faces that do contain it are fans from it, i.e. the same rule, so both
-  // cells sharing a face triangulate it identically whatever the cell types.
-  void ConeSplit(const FaceSet& faces, vtkIdType cellId)
-  {
-    if (faces.Ids.empty())
-    {
-      return;
-    }
-    const vtkIdType apex = *std::min_element(faces.Ids.begin(), faces.Ids.end());
-    for (size_t f = 0; f + 1 < faces.Offsets.size(); ++f)
-    {
-      const vtkIdType* p = faces.Ids.data() + faces.Offsets[f];
-      const vtkIdType n = faces.Offsets[f + 1] - faces.Offsets[f];
-      if (n < 3 || std::find(p, p + n, apex) != p + n)
-      {
-        continue;
-      }
-      const vtkIdType k = std::min_element(p, p + n) - p;
-      for (vtkIdType j = 1; j + 1 < n; ++j)
-      {
-        this->Add(apex, p[k], p[(k + j) % n], p[(k + j + 1) % n], cellId);
-      }
-    }
-  }
+private:
+  vtkStructuredGrid* SGrid;
+  vtkUnsignedCharArray* Ghosts;
+  bool SGridBlanking = false;
 };
+
+// Adds a one-value vtkIdType array to the field data of `output`.
+void AddCount(vtkUnstructuredGrid* output, const char* name, vtkIdType value)
+{
+  vtkNew<vtkIdTypeArray> a;
+  a->SetName(name);
+  a->SetNumberOfTuples(1);
+  a->SetValue(0, value);
+  output->GetFieldData()->AddArray(a);
+}
 } // namespace
+
+// What the steps of RequestData share during one execution.
+struct vtkPsiConformingTetrahedralize::Execution
+{
+  explicit Execution(vtkDataSet* input)
+    : Input(input)
+    , UGrid(vtkUnstructuredGrid::SafeDownCast(input))
+    , Points(InputPoints(input))
+    , Coordinates(DoubleCoordinates(this->Points, input->GetNumberOfPoints()))
+    , Tets(this->Coordinates.data())
+  {
+    StructuredDimensions(input, this->Dims);
+    this->Structured3D = this->Dims[0] > 1 && this->Dims[1] > 1 && this->Dims[2] > 1;
+  }
+
+  vtkDataSet* Input;
+  vtkUnstructuredGrid* UGrid; // the fast path to cell points and polyhedron faces
+  int Dims[3];                // point dimensions of a structured grid, zeros otherwise
+  bool Structured3D = false;  // cell (i, j, k) is the hexahedron computed from the indices
+  bool FivePerHex = false;
+  vtkSmartPointer<vtkPoints> Points;
+  std::vector<double> Coordinates;
+  psi::OrientedTetrahedra Tets;
+  psi::FaceSet Faces;           // scratch: the faces of the current cell
+  vtkNew<vtkIdList> CellPoints; // scratch: the points of the current cell
+  bool WarnedUnsupported = false;
+};
 
 vtkPsiConformingTetrahedralize::vtkPsiConformingTetrahedralize() = default;
 vtkPsiConformingTetrahedralize::~vtkPsiConformingTetrahedralize() = default;
@@ -213,261 +181,219 @@ int vtkPsiConformingTetrahedralize::RequestData(
     vtkErrorMacro("Missing input or output data set.");
     return 0;
   }
+  int result = 1;
+  if (!this->CheckInput(input, result))
+  {
+    return result;
+  }
+
+  Execution exec(input);
+  exec.FivePerHex = this->ChooseFivePerHex(exec);
+  exec.Tets.Reserve(6 * static_cast<size_t>(input->GetNumberOfCells()));
+  if (!this->SplitCells(exec))
+  {
+    output->Initialize();
+    return 1;
+  }
+  this->NumberOfGeneratedTets = exec.Tets.Generated;
+  this->NumberOfRemovedDegenerateTets = exec.Tets.Removed;
+  if (!this->CheckTetrahedra(exec, result))
+  {
+    return result;
+  }
+
+  this->SetTetrahedra(exec, output);
+  if (!this->CopyAttributes(exec, output))
+  {
+    output->Initialize();
+    return 1;
+  }
+  this->AddFaceNeighbors(exec, output);
+  this->AddCounts(input, output);
+  if (this->NumberOfSkippedCells > 0)
+  {
+    vtkWarningMacro(<< this->NumberOfSkippedCells << " non-3D or unsupported cells were skipped.");
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+bool vtkPsiConformingTetrahedralize::CheckInput(vtkDataSet* input, int& result)
+{
   const vtkIdType numCells = input->GetNumberOfCells();
   const vtkIdType numPoints = input->GetNumberOfPoints();
   if (numCells == 0 || numPoints == 0)
   {
     vtkWarningMacro("The input is empty (" << numPoints << " points, " << numCells
                                            << " cells): the output is empty.");
-    return 1;
+    result = 1;
+    return false;
   }
   if (numPoints >= static_cast<vtkIdType>(std::numeric_limits<uint32_t>::max()))
   {
     vtkErrorMacro("Too many points (" << numPoints << ") for 32-bit tetrahedron indices.");
-    return 0;
+    result = 0;
+    return false;
   }
+  return true;
+}
 
-  // Structured input: cell (i, j, k) has the hexahedron corners computed from the indices.
-  int dims[3] = { 0, 0, 0 };
-  vtkStructuredGrid* sgrid = vtkStructuredGrid::SafeDownCast(input);
-  if (auto* image = vtkImageData::SafeDownCast(input))
+bool vtkPsiConformingTetrahedralize::ChooseFivePerHex(const Execution& exec)
+{
+  if (this->SplitMode != FIVE_PER_HEX)
   {
-    image->GetDimensions(dims);
+    return false;
   }
-  else if (auto* rgrid = vtkRectilinearGrid::SafeDownCast(input))
-  {
-    rgrid->GetDimensions(dims);
-  }
-  else if (sgrid)
-  {
-    sgrid->GetDimensions(dims);
-  }
-  const bool structured3D = dims[0] > 1 && dims[1] > 1 && dims[2] > 1;
-  const bool fiveSplit = this->SplitMode == FIVE_PER_HEX && structured3D;
-  if (this->SplitMode == FIVE_PER_HEX && !structured3D)
+  if (!exec.Structured3D)
   {
     this->FellBackToConforming = true;
     vtkWarningMacro("'Five per hex' conforms on structured 3D grids only (image, rectilinear, "
                     "structured); this "
-      << input->GetClassName() << " is split by the conforming min-id rule instead.");
+      << exec.Input->GetClassName() << " is split by the conforming min-id rule instead.");
   }
+  return exec.Structured3D;
+}
 
-  // Points: shared with a point set, generated for implicit grids.
-  vtkSmartPointer<vtkPoints> points;
-  if (auto* ps = vtkPointSet::SafeDownCast(input))
-  {
-    points = ps->GetPoints();
-  }
-  if (!points)
-  {
-    points = vtkSmartPointer<vtkPoints>::New();
-    points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(numPoints);
-    for (vtkIdType i = 0; i < numPoints; ++i)
-    {
-      double x[3];
-      input->GetPoint(i, x);
-      points->SetPoint(i, x);
-    }
-  }
-  std::vector<Point3> cgalPoints(numPoints);
-  vtkSMPTools::For(0, numPoints, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      double x[3];
-      points->GetPoint(i, x);
-      cgalPoints[i] = Point3(x[0], x[1], x[2]);
-    }
-  });
-
-  // Hidden (blanked) cells are skipped: IBLANK of PLOT3D grids, for instance.
-  const bool sgridBlanking = sgrid && (sgrid->HasAnyBlankCells() || sgrid->HasAnyBlankPoints());
-  vtkUnsignedCharArray* cellGhosts = input->GetCellData()->GetGhostArray();
-  auto hidden = [&](vtkIdType cellId) {
-    if (sgridBlanking)
-    {
-      return !sgrid->IsCellVisible(cellId);
-    }
-    return cellGhosts && (cellGhosts->GetValue(cellId) & vtkDataSetAttributes::HIDDENCELL);
-  };
-
-  TetSink sink(cgalPoints);
-  sink.Connectivity.reserve(4 * 6 * static_cast<size_t>(numCells));
-  sink.Parent.reserve(6 * static_cast<size_t>(numCells));
-  FaceSet faces;
-  vtkNew<vtkIdList> cellPoints;
+bool vtkPsiConformingTetrahedralize::SplitCells(Execution& exec)
+{
+  const vtkIdType numCells = exec.Input->GetNumberOfCells();
   const vtkIdType progressStep = std::max<vtkIdType>(1, numCells / 100);
-  bool aborted = false;
-  vtkUnstructuredGrid* ugrid = vtkUnstructuredGrid::SafeDownCast(input);
-  bool warnedUnsupported = false;
-
-  for (vtkIdType cellId = 0; cellId < numCells && !aborted; ++cellId)
+  const HiddenCells hidden(exec.Input);
+  for (vtkIdType cellId = 0; cellId < numCells; ++cellId)
   {
     if (cellId % progressStep == 0)
     {
       this->UpdateProgress(0.8 * static_cast<double>(cellId) / numCells);
       if (this->CheckAbort())
       {
-        aborted = true;
-        break;
+        return false;
       }
     }
     if (hidden(cellId))
     {
       continue;
     }
-    vtkIdType hex[8];
-    const vtkIdType* pts = nullptr;
-    vtkIdType npts = 0;
-    int type;
-    if (structured3D)
+    if (exec.Structured3D)
     {
-      const vtkIdType cx = dims[0] - 1, cy = dims[1] - 1;
-      const vtkIdType i = cellId % cx, j = (cellId / cx) % cy, k = cellId / (cx * cy);
-      const vtkIdType nx = dims[0], nxy = static_cast<vtkIdType>(dims[0]) * dims[1];
-      const vtkIdType base = i + j * nx + k * nxy;
-      hex[0] = base;
-      hex[1] = base + 1;
-      hex[2] = base + 1 + nx;
-      hex[3] = base + nx;
-      for (int c = 0; c < 4; ++c)
-      {
-        hex[c + 4] = hex[c] + nxy;
-      }
-      if (fiveSplit)
-      {
-        const auto& split = ((i + j + k) % 2 == 0) ? FiveEven : FiveOdd;
-        for (const auto& t : split)
-        {
-          sink.Add(hex[t[0]], hex[t[1]], hex[t[2]], hex[t[3]], cellId);
-        }
-        continue;
-      }
-      pts = hex;
-      npts = 8;
-      type = VTK_HEXAHEDRON;
+      this->SplitStructuredCell(exec, cellId);
     }
     else
     {
-      type = input->GetCellType(cellId);
-      if (vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) != 3)
-      {
-        ++this->NumberOfSkippedCells;
-        continue;
-      }
-      if (ugrid)
-      {
-        ugrid->GetCellPoints(cellId, npts, pts, cellPoints);
-      }
-      else
-      {
-        input->GetCellPoints(cellId, cellPoints);
-        npts = cellPoints->GetNumberOfIds();
-        pts = cellPoints->GetPointer(0);
-      }
-    }
-
-    switch (LinearType(type))
-    {
-      case VTK_TETRA:
-        if (npts >= 4)
-        {
-          sink.Add(pts[0], pts[1], pts[2], pts[3], cellId);
-        }
-        break;
-      case VTK_HEXAHEDRON:
-        AddStandardFaces<vtkHexahedron>(pts, faces);
-        sink.ConeSplit(faces, cellId);
-        break;
-      case VTK_VOXEL:
-      {
-        // Voxel corners in hexahedron order (VTK's voxel face table is not cyclic).
-        const vtkIdType h[8] = { pts[0], pts[1], pts[3], pts[2], pts[4], pts[5], pts[7], pts[6] };
-        AddStandardFaces<vtkHexahedron>(h, faces);
-        sink.ConeSplit(faces, cellId);
-        break;
-      }
-      case VTK_WEDGE:
-        AddStandardFaces<vtkWedge>(pts, faces);
-        sink.ConeSplit(faces, cellId);
-        break;
-      case VTK_PYRAMID:
-        AddStandardFaces<vtkPyramid>(pts, faces);
-        sink.ConeSplit(faces, cellId);
-        break;
-      case VTK_PENTAGONAL_PRISM:
-        AddStandardFaces<vtkPentagonalPrism>(pts, faces);
-        sink.ConeSplit(faces, cellId);
-        break;
-      case VTK_HEXAGONAL_PRISM:
-        AddStandardFaces<vtkHexagonalPrism>(pts, faces);
-        sink.ConeSplit(faces, cellId);
-        break;
-      case VTK_POLYHEDRON:
-      {
-        // Face stream: nfaces x (npts, ids...). Exact for convex polyhedra (see the header).
-        vtkIdType nfaces = 0;
-        const vtkIdType* stream = nullptr;
-        if (!ugrid)
-        {
-          ++this->NumberOfSkippedCells;
-          break;
-        }
-        ugrid->GetFaceStream(cellId, nfaces, stream);
-        faces.Clear();
-        for (vtkIdType f = 0; f < nfaces && stream; ++f)
-        {
-          const vtkIdType n = *stream++;
-          faces.Ids.insert(faces.Ids.end(), stream, stream + n);
-          stream += n;
-          faces.Close();
-        }
-        sink.ConeSplit(faces, cellId);
-        break;
-      }
-      default:
-        ++this->NumberOfSkippedCells;
-        if (!warnedUnsupported)
-        {
-          warnedUnsupported = true;
-          vtkWarningMacro("Cells of type " << vtkCellTypes::GetClassNameFromTypeId(type)
-                                           << " are not tetrahedralized (skipped).");
-        }
-        break;
+      this->SplitUnstructuredCell(exec, cellId);
     }
   }
-  if (aborted)
+  return true;
+}
+
+void vtkPsiConformingTetrahedralize::SplitStructuredCell(Execution& exec, vtkIdType cellId)
+{
+  vtkIdType hex[8];
+  const vtkIdType ijkSum = psi::StructuredHexCorners(exec.Dims, cellId, hex);
+  if (exec.FivePerHex)
   {
-    output->Initialize();
-    return 1;
+    psi::FivePerHexSplit(hex, ijkSum, cellId, exec.Tets);
+    return;
   }
+  this->SplitCell(exec, cellId, VTK_HEXAHEDRON, hex, 8);
+}
 
-  this->NumberOfGeneratedTets = sink.Generated;
-  this->NumberOfRemovedDegenerateTets = sink.Removed;
-  const vtkIdType numTets = static_cast<vtkIdType>(sink.Parent.size());
+void vtkPsiConformingTetrahedralize::SplitUnstructuredCell(Execution& exec, vtkIdType cellId)
+{
+  const int type = exec.Input->GetCellType(cellId);
+  if (vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) != 3)
+  {
+    ++this->NumberOfSkippedCells;
+    return;
+  }
+  const vtkIdType* pts = nullptr;
+  vtkIdType npts = 0;
+  if (exec.UGrid)
+  {
+    exec.UGrid->GetCellPoints(cellId, npts, pts, exec.CellPoints);
+  }
+  else
+  {
+    exec.Input->GetCellPoints(cellId, exec.CellPoints);
+    npts = exec.CellPoints->GetNumberOfIds();
+    pts = exec.CellPoints->GetPointer(0);
+  }
+  this->SplitCell(exec, cellId, type, pts, npts);
+}
+
+void vtkPsiConformingTetrahedralize::SplitCell(
+  Execution& exec, vtkIdType cellId, int type, const vtkIdType* pts, vtkIdType npts)
+{
+  const int linearType = psi::LinearCellType(type);
+  if (linearType == VTK_TETRA)
+  {
+    if (npts >= 4)
+    {
+      exec.Tets.Add(pts[0], pts[1], pts[2], pts[3], cellId);
+    }
+  }
+  else if (psi::StandardCellFaces(linearType, pts, exec.Faces))
+  {
+    psi::ConeSplit(exec.Faces, cellId, exec.Tets);
+  }
+  else if (linearType == VTK_POLYHEDRON)
+  {
+    // Exact for convex polyhedra (see the header).
+    if (!exec.UGrid)
+    {
+      ++this->NumberOfSkippedCells;
+      return;
+    }
+    vtkIdType nfaces = 0;
+    const vtkIdType* stream = nullptr;
+    exec.UGrid->GetFaceStream(cellId, nfaces, stream);
+    psi::PolyhedronFaces(nfaces, stream, exec.Faces);
+    psi::ConeSplit(exec.Faces, cellId, exec.Tets);
+  }
+  else
+  {
+    ++this->NumberOfSkippedCells;
+    if (!exec.WarnedUnsupported)
+    {
+      exec.WarnedUnsupported = true;
+      vtkWarningMacro("Cells of type " << vtkCellTypes::GetClassNameFromTypeId(type)
+                                       << " are not tetrahedralized (skipped).");
+    }
+  }
+}
+
+bool vtkPsiConformingTetrahedralize::CheckTetrahedra(const Execution& exec, int& result)
+{
+  const vtkIdType numTets = static_cast<vtkIdType>(exec.Tets.Parent.size());
   if (numTets == 0)
   {
-    if (sink.Generated == 0)
+    if (exec.Tets.Generated == 0)
     {
-      vtkWarningMacro("The input " << input->GetClassName() << " has no 3D cells ("
+      vtkWarningMacro("The input " << exec.Input->GetClassName() << " has no 3D cells ("
                                    << this->NumberOfSkippedCells
                                    << " cells skipped; a surface is not a volume): the output "
                                       "is empty.");
     }
     else
     {
-      vtkWarningMacro("All " << sink.Generated
+      vtkWarningMacro("All " << exec.Tets.Generated
                              << " tetrahedra have zero volume (flat input): the output is empty.");
     }
-    return 1;
+    result = 1;
+    return false;
   }
   if (numTets >= static_cast<vtkIdType>(std::numeric_limits<int32_t>::max()))
   {
     vtkErrorMacro("Too many tetrahedra (" << numTets << ") for 32-bit neighbour indices.");
-    return 0;
+    result = 0;
+    return false;
   }
+  return true;
+}
 
-  // Cells.
+void vtkPsiConformingTetrahedralize::SetTetrahedra(
+  const Execution& exec, vtkUnstructuredGrid* output)
+{
+  const vtkIdType numTets = static_cast<vtkIdType>(exec.Tets.Parent.size());
   vtkNew<vtkIdTypeArray> offsets;
   offsets->SetNumberOfValues(numTets + 1);
   for (vtkIdType t = 0; t <= numTets; ++t)
@@ -476,67 +402,46 @@ int vtkPsiConformingTetrahedralize::RequestData(
   }
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfValues(4 * numTets);
-  std::copy(sink.Connectivity.begin(), sink.Connectivity.end(), connectivity->GetPointer(0));
+  std::copy(
+    exec.Tets.Connectivity.begin(), exec.Tets.Connectivity.end(), connectivity->GetPointer(0));
   vtkNew<vtkCellArray> cells;
   cells->SetData(offsets, connectivity);
-  output->SetPoints(points);
+  output->SetPoints(exec.Points);
   output->SetCells(VTK_TETRA, cells);
   this->UpdateProgress(0.85);
+}
 
-  // Attributes: point data unchanged, cell data to every child tetrahedron.
-  output->GetPointData()->PassData(input->GetPointData());
+bool vtkPsiConformingTetrahedralize::CopyAttributes(
+  const Execution& exec, vtkUnstructuredGrid* output)
+{
+  // Point data unchanged, cell data to every child tetrahedron.
+  const vtkIdType numTets = static_cast<vtkIdType>(exec.Tets.Parent.size());
+  output->GetPointData()->PassData(exec.Input->GetPointData());
   vtkCellData* outCD = output->GetCellData();
-  outCD->CopyAllocate(input->GetCellData(), numTets);
-  {
-    vtkNew<vtkIdList> parents;
-    parents->SetNumberOfIds(numTets);
-    std::copy(sink.Parent.begin(), sink.Parent.end(), parents->GetPointer(0));
-    outCD->CopyData(input->GetCellData(), parents.GetPointer(), static_cast<vtkIdType>(0));
-  }
+  outCD->CopyAllocate(exec.Input->GetCellData(), numTets);
+  vtkNew<vtkIdList> parents;
+  parents->SetNumberOfIds(numTets);
+  std::copy(exec.Tets.Parent.begin(), exec.Tets.Parent.end(), parents->GetPointer(0));
+  outCD->CopyData(exec.Input->GetCellData(), parents.GetPointer(), static_cast<vtkIdType>(0));
   this->UpdateProgress(0.9);
-  if (this->CheckAbort())
-  {
-    output->Initialize();
-    return 1;
-  }
+  return !this->CheckAbort();
+}
 
-  // Face adjacency (psi::ComputeTetNeighbors), the input of MPVONC (seed 002 §3.1).
-  std::vector<uint32_t> tets32(sink.Connectivity.begin(), sink.Connectivity.end());
-  std::vector<int32_t> neighbors;
-  const psi::TetConnectivityResult conn = psi::ComputeTetNeighbors(
-    tets32.data(), static_cast<size_t>(numTets), static_cast<size_t>(numPoints), neighbors);
-  this->NumberOfNonManifoldFaces = static_cast<vtkIdType>(conn.NonManifoldFaces);
-  vtkNew<vtkIntArray> faceNeighbors;
-  faceNeighbors->SetName("FaceNeighbors");
-  faceNeighbors->SetNumberOfComponents(4);
-  faceNeighbors->SetNumberOfTuples(numTets);
-  std::copy(neighbors.begin(), neighbors.end(), faceNeighbors->GetPointer(0));
-  outCD->AddArray(faceNeighbors);
-  const std::vector<uint8_t> flags = psi::BoundaryFaceFlags(neighbors);
-  vtkNew<vtkUnsignedCharArray> boundary;
-  boundary->SetName("BoundaryFaces");
-  boundary->SetNumberOfTuples(numTets);
-  std::copy(flags.begin(), flags.end(), boundary->GetPointer(0));
-  outCD->AddArray(boundary);
+void vtkPsiConformingTetrahedralize::AddFaceNeighbors(
+  const Execution& exec, vtkUnstructuredGrid* output)
+{
+  // Face adjacency, the input of MPVONC (Williams 1992; Maximo et al. 2010 §3.1).
+  this->NumberOfNonManifoldFaces = static_cast<vtkIdType>(psi::AddFaceNeighborArrays(
+    exec.Tets.Connectivity, exec.Input->GetNumberOfPoints(), output->GetCellData()));
+}
 
+void vtkPsiConformingTetrahedralize::AddCounts(vtkDataSet* input, vtkUnstructuredGrid* output)
+{
   // Counts in field data, for the info property and for scripts.
   output->GetFieldData()->PassData(input->GetFieldData());
-  auto addCount = [&](const char* name, vtkIdType value) {
-    vtkNew<vtkIdTypeArray> a;
-    a->SetName(name);
-    a->SetNumberOfTuples(1);
-    a->SetValue(0, value);
-    output->GetFieldData()->AddArray(a);
-  };
-  addCount("RemovedDegenerateTets", this->NumberOfRemovedDegenerateTets);
-  addCount("GeneratedTets", this->NumberOfGeneratedTets);
-  addCount("NonManifoldFaces", this->NumberOfNonManifoldFaces);
-  if (this->NumberOfSkippedCells > 0)
-  {
-    vtkWarningMacro(<< this->NumberOfSkippedCells << " non-3D or unsupported cells were skipped.");
-  }
-  this->UpdateProgress(1.0);
-  return 1;
+  AddCount(output, "RemovedDegenerateTets", this->NumberOfRemovedDegenerateTets);
+  AddCount(output, "GeneratedTets", this->NumberOfGeneratedTets);
+  AddCount(output, "NonManifoldFaces", this->NumberOfNonManifoldFaces);
 }
 
 void vtkPsiConformingTetrahedralize::PrintSelf(ostream& os, vtkIndent indent)

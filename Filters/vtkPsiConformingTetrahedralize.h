@@ -2,9 +2,10 @@
  * @class vtkPsiConformingTetrahedralize
  * @brief Splits every 3D cell of any vtkDataSet into tetrahedra, conformingly, for 'Psi Volume'.
  *
- * Projected-tetrahedra renderers and MPVONC (Williams 1992; seed 002 §3.1) need a tetrahedral
- * mesh in which neighbouring cells share whole faces: a quad face split by one diagonal on one
- * side and by the other diagonal on the other side leaves a crack and breaks the face adjacency.
+ * Projected-tetrahedra renderers and MPVONC (Williams 1992; Maximo et al. 2010 §3.1) need a
+ * tetrahedral mesh in which neighbouring cells share whole faces: a quad face split by one
+ * diagonal on one side and by the other diagonal on the other side leaves a crack and breaks the
+ * face adjacency.
  *
  * SplitMode:
  * - CONFORMING (default): every polygonal face is triangulated by the fan from its smallest global
@@ -84,6 +85,22 @@ protected:
 private:
   vtkPsiConformingTetrahedralize(const vtkPsiConformingTetrahedralize&) = delete;
   void operator=(const vtkPsiConformingTetrahedralize&) = delete;
+
+  // The steps of RequestData. Execution holds what they share (defined in the .cxx). A Check
+  // step returns false, with the value RequestData must return in `result`, when it ends the
+  // execution.
+  struct Execution;
+  bool CheckInput(vtkDataSet* input, int& result);
+  bool ChooseFivePerHex(const Execution& exec);
+  bool SplitCells(Execution& exec); // false when aborted
+  void SplitStructuredCell(Execution& exec, vtkIdType cellId);
+  void SplitUnstructuredCell(Execution& exec, vtkIdType cellId);
+  void SplitCell(Execution& exec, vtkIdType cellId, int type, const vtkIdType* pts, vtkIdType npts);
+  bool CheckTetrahedra(const Execution& exec, int& result);
+  void SetTetrahedra(const Execution& exec, vtkUnstructuredGrid* output);
+  bool CopyAttributes(const Execution& exec, vtkUnstructuredGrid* output); // false when aborted
+  void AddFaceNeighbors(const Execution& exec, vtkUnstructuredGrid* output);
+  void AddCounts(vtkDataSet* input, vtkUnstructuredGrid* output);
 };
 
 #endif

@@ -30,6 +30,9 @@
  * Input is a file (SetFileName) or, with ReadFromInputString on, bytes in memory
  * (SetInputString), which may contain NUL bytes. In parallel, piece 0 reads the whole mesh and
  * the other pieces are empty (redistribute with RedistributeDataSet).
+ *
+ * The parsing itself is psi::OFFParser (PsiOFFParser.h, plain C++ without VTK); this class is the
+ * pipeline glue: file or string input, arrays, errors, warnings and progress.
  */
 #ifndef vtkPsiOFFTetReader_h
 #define vtkPsiOFFTetReader_h
@@ -37,7 +40,13 @@
 #include "PsiVolumeReadersModule.h"
 #include "vtkUnstructuredGridAlgorithm.h"
 
+#include <cstdint>
 #include <string>
+
+namespace psi
+{
+class OFFParser;
+}
 
 class PSIVOLUMEREADERS_EXPORT vtkPsiOFFTetReader : public vtkUnstructuredGridAlgorithm
 {
@@ -101,7 +110,19 @@ private:
   vtkPsiOFFTetReader(const vtkPsiOFFTetReader&) = delete;
   void operator=(const vtkPsiOFFTetReader&) = delete;
 
+  // The steps of RequestData: the bytes of the file, then the mesh parsed from them by
+  // psi::OFFParser into the arrays of a Mesh (defined in the .cxx). Each returns false, after
+  // Fail, when reading cannot go on.
+  struct Mesh;
+  bool LoadFile(std::string& buffer);
   bool Parse(const char* data, size_t size, vtkUnstructuredGrid* output);
+  bool AllocateMesh(const psi::OFFParser& parser, Mesh& mesh);
+  bool ReadVertices(psi::OFFParser& parser, Mesh& mesh);
+  bool ReadTetrahedra(psi::OFFParser& parser, Mesh& mesh);
+  bool Progress(uint64_t done, uint64_t total); // false when aborted
+  void StoreMesh(Mesh& mesh, vtkUnstructuredGrid* output);
+  void ReportMesh(const psi::OFFParser& parser, const Mesh& mesh);
+  bool FailParse(const psi::OFFParser& parser);
   void Fail(unsigned long code, const std::string& message);
 };
 
