@@ -1,4 +1,4 @@
-"""Frame time of each 'Psi Volume' feature alone and combined (issue 5), on the Blunt Fin.
+"""Frame time of each 'Psi Volume' feature alone and combined, on the Blunt Fin.
 
 pvpython Benchmarks/bench_features.py [--size 512] [--frames 4] [--rounds 3]
 

@@ -1,5 +1,5 @@
 """Benchmark (not a test): image difference between centroid and MPVONC visibility order from many
-viewpoints, as in HAPT's Table 1 (seed 002): max error, mean error, % of differing pixels.
+viewpoints, as in Maximo et al. 2010, Table 1: max error, mean error, % of differing pixels.
 
 pvpython Benchmarks/bench_sort_images.py [--data bluntfin] [--size 512] [--views 12]"""
 import argparse

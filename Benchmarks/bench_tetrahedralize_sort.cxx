@@ -1,5 +1,5 @@
-// Benchmark (issue 4): vtkPsiConformingTetrahedralize, psi::ComputeTetNeighbors and the two
-// visibility sorts of seed 002 §3.1 - the centroid sort (psi::SortBackToFront) and MPVONC
+// Benchmark: vtkPsiConformingTetrahedralize, psi::ComputeTetNeighbors and the two
+// visibility sorts of Maximo et al. 2010 §3.1 - the centroid sort (psi::SortBackToFront) and MPVONC
 // (psi::SortMPVONC, Williams 1992) - on the NASA Blunt Fin (5 tetrahedra per hexahedron, as in
 // the literature) and on a ~1M-tetrahedra mesh (a 56^3 image, 6 per hexahedron).
 // Usage: bench_tetrahedralize_sort [DATA_DIR]

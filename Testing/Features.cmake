@@ -1,4 +1,4 @@
-# Isosurfaces and adaptive transfer-function sampling (issue 5), included from
+# Isosurfaces and adaptive transfer-function sampling, included from
 # Testing/CMakeLists.txt. GL tests need an X server (run ctest under xvfb-run).
 add_executable(TestPsiIsosurfaces Cxx/TestPsiIsosurfaces.cxx)
 target_link_libraries(TestPsiIsosurfaces PRIVATE PsiVolume::Representations PsiTestSupport

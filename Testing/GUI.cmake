@@ -1,4 +1,4 @@
-# XML-driven GUI regression tests (issue 6): pqevents scripts (the format of Tools > Record Test)
+# XML-driven GUI regression tests: pqevents scripts (the format of Tools > Record Test)
 # replayed in the real `paraview` client, with image baselines under Testing/Data/Baseline/.
 # Needs an X server: run ctest under xvfb-run, as for the other GL tests.
 #

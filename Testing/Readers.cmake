@@ -1,5 +1,5 @@
-# Tests of the tetrahedral OFF reader, the bad-input and MPI pvpython tests, and the fuzzer
-# (issue 6). Included from Testing/CMakeLists.txt.
+# Tests of the tetrahedral OFF reader, the bad-input and MPI pvpython tests, and the fuzzer.
+# Included from Testing/CMakeLists.txt.
 
 # --- C++ reader test (always).
 add_executable(TestOFFReader Cxx/TestOFFReader.cxx)

@@ -1,4 +1,4 @@
-// Tests of vtkPsiConformingTetrahedralize (issue 4): tetrahedron counts on known grids, conformity
+// Tests of vtkPsiConformingTetrahedralize: tetrahedron counts on known grids, conformity
 // (every interior triangle shared by exactly two tetrahedra; the unshared triangles tile exactly
 // the domain's surface), exact positive orientation (CGAL), cell data to child tetrahedra, removal
 // and count of degenerate tetrahedra, FaceNeighbors against a brute-force map, bad input.

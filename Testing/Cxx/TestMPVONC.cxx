@@ -1,4 +1,4 @@
-// Tests of psi::SortMPVONC (Williams 1992) and psi::ComputeTetNeighbors (issue 4): on convex
+// Tests of psi::SortMPVONC (Williams 1992) and psi::ComputeTetNeighbors: on convex
 // tetrahedralized boxes, from many random perspective and parallel views, no adjacency
 // constraint is violated (across every interior face the tetrahedron behind comes first, decided
 // here independently with CGAL's exact orientation); disconnected components are ordered by

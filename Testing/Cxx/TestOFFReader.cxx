@@ -1,4 +1,4 @@
-// Tests of vtkPsiOFFTetReader (issue 6): round trips of valid files (from memory and from disk,
+// Tests of vtkPsiOFFTetReader: round trips of valid files (from memory and from disk,
 // with the lenient header forms), and every malformed case giving an error event, a message, an
 // error code and an empty output, quickly (absurd counts must not allocate or hang).
 // Usage: TestOFFReader [TEMP_DIR]

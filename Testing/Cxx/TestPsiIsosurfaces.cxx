@@ -1,4 +1,4 @@
-// Isosurfaces and adaptive transfer-function sampling of vtkPsiVolumeMapper (issue 5):
+// Isosurfaces and adaptive transfer-function sampling of vtkPsiVolumeMapper:
 //  - every program variant (integration method x isosurfaces x adaptive sampling x projection,
 //    near-plane and opaque clipping) compiles and renders; with no isovalue inside the data and a
 //    linear transfer function each variant draws exactly the plain volume's image;

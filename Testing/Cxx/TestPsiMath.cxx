@@ -110,7 +110,7 @@ void TestTruthTable()
   {
     ++count[e.cls];
   }
-  // seed 003 §4.1: Wylie's 14 general cases, plus 24 class-3 and 12 class-4 cases.
+  // Marroquim et al. 2006 §4.1: Wylie's 14 general cases, plus 24 class-3 and 12 class-4 cases.
   PSI_CHECK(count[1] + count[2] == 14, "general cases %d", count[1] + count[2]);
   PSI_CHECK(count[3] == 24, "class 3 cases %d", count[3]);
   PSI_CHECK(count[4] == 12, "class 4 cases %d", count[4]);
@@ -147,7 +147,7 @@ void TestTruthTable()
 
 void TestPsi()
 {
-  // Homogeneous attenuation: Psi = (1 - e^-x) / x (seed 000, constant-tau limit), over 15 decades.
+  // Homogeneous attenuation: Psi = (1 - e^-x) / x (Moreland & Angel 2004, constant-tau limit), over 15 decades.
   double worst = 0;
   for (double x = 1e-9; x <= 1e6; x *= 3.7)
   {

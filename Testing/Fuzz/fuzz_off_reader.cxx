@@ -1,4 +1,4 @@
-// libFuzzer target for vtkPsiOFFTetReader (issue 6): feeds arbitrary bytes to the reader through
+// libFuzzer target for vtkPsiOFFTetReader: feeds arbitrary bytes to the reader through
 // its in-memory path (ReadFromInputString) and checks, beyond the sanitizers, that the output is
 // either empty with an error, or a consistent mesh of tetrahedra with in-range indices.
 // Built with -DPSI_BUILD_FUZZERS=ON and clang (Testing/Readers.cmake); seeds in corpus/.

@@ -1,4 +1,4 @@
-"""Bad input to 'Psi Volume' (issue 6): every case must end in a clear message in ParaView's output
+"""Bad input to 'Psi Volume': every case must end in a clear message in ParaView's output
 or a correct image, never a crash, a hang, or a black frame without explanation.
 
 Usage: pvpython --force-offscreen-rendering test_bad_input.py [CASE ...]

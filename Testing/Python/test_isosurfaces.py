@@ -1,4 +1,4 @@
-"""Isosurfaces of 'Psi Volume' (issue 5) against ParaView's Contour filter rendered as a surface.
+"""Isosurfaces of 'Psi Volume' against ParaView's Contour filter rendered as a surface.
 
 With the volume's opacity at zero, 'Psi Volume' with IsosurfaceValues draws plain contours. The
 same view is rendered with the Contour filter (Surface, same color map, same lights), and the two

@@ -1,4 +1,4 @@
-"""'Psi Volume' in parallel (issue 6): a tetrahedralized Wavelet rendered on 2 ranks with ParaView's
+"""'Psi Volume' in parallel: a tetrahedralized Wavelet rendered on 2 ranks with ParaView's
 ordered compositing must match the serial render of the same view.
 
 Run: mpiexec --allow-run-as-root -n 2 pvbatch --force-offscreen-rendering test_mpi.py

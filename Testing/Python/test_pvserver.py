@@ -1,4 +1,4 @@
-"""'Psi Volume' through a 2-rank pvserver (issue 6, client-server half): a pvpython client connected
+"""'Psi Volume' through a 2-rank pvserver (client-server half): a pvpython client connected
 to `mpiexec -n 2 pvserver` renders the scene of test_mpi.py with remote rendering (ParaView's
 ordered compositing, IceT on the server) and the image it receives must match a serial render.
 
