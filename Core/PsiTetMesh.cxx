@@ -123,8 +123,8 @@ void GatherTets(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cell
   }
 }
 
-// Scalar range of the drawn tetrahedra, never empty, and the longest edge.
-void MeasureTets(TetMesh& m)
+// Scalar range of the drawn tetrahedra (never empty) and, when `edges`, the longest edge.
+void MeasureTets(TetMesh& m, bool edges = true)
 {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo, maxEdge2 = 0;
   for (size_t t = 0; t < m.Tets.size(); t += 4)
@@ -134,7 +134,7 @@ void MeasureTets(TetMesh& m)
       const float* p = &m.Points4[4 * static_cast<size_t>(m.Tets[t + a])];
       lo = std::min<double>(lo, p[3]);
       hi = std::max<double>(hi, p[3]);
-      for (int c = a + 1; c < 4; ++c)
+      for (int c = a + 1; c < 4 && edges; ++c)
       {
         const float* q = &m.Points4[4 * static_cast<size_t>(m.Tets[t + c])];
         const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
@@ -143,7 +143,10 @@ void MeasureTets(TetMesh& m)
       }
     }
   }
-  m.MaxEdgeLength = std::sqrt(maxEdge2);
+  if (edges)
+  {
+    m.MaxEdgeLength = std::sqrt(maxEdge2);
+  }
   if (!(lo <= hi))
   {
     lo = 0;
@@ -161,6 +164,7 @@ void MeasureTets(TetMesh& m)
 TetMesh GatherTetMesh(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cellScalars)
 {
   TetMesh m;
+  m.CellScalars = cellScalars;
   double b[6];
   input->GetBounds(b);
   for (int k = 0; k < 3; ++k)
@@ -177,6 +181,32 @@ TetMesh GatherTetMesh(vtkUnstructuredGridBase* input, vtkDataArray* scalars, boo
   GatherTets(input, scalars, cellScalars, pointFinite, m);
   MeasureTets(m);
   return m;
+}
+
+bool UpdateTetMeshScalars(TetMesh& m, vtkDataArray* scalars)
+{
+  const size_t np = m.NumberOfPoints();
+  if (m.CellScalars || m.NonFiniteTets || !scalars ||
+    static_cast<size_t>(scalars->GetNumberOfTuples()) != np)
+  {
+    return false;
+  }
+  std::vector<float> values(np);
+  for (size_t i = 0; i < np; ++i)
+  {
+    const double s = scalars->GetComponent(static_cast<vtkIdType>(i), 0);
+    if (!FiniteScalar(s))
+    {
+      return false;
+    }
+    values[i] = static_cast<float>(s);
+  }
+  for (size_t i = 0; i < np; ++i)
+  {
+    m.Points4[4 * i + 3] = values[i];
+  }
+  MeasureTets(m, false);
+  return true;
 }
 
 bool FaceNeighborsFromArray(const TetMesh& mesh, vtkDataArray* cellNeighbors,

@@ -33,6 +33,7 @@ struct PSIVOLUMECORE_EXPORT TetMesh
   int64_t NonTetCells = 0;   ///< input cells skipped for not being tetrahedra
   int64_t NonFiniteTets = 0; ///< tetrahedra skipped for a NaN or infinite scalar
   double MaxEdgeLength = 0;  ///< bounds every ray segment's length
+  bool CellScalars = false;  ///< gathered with cell scalars (private points per tetrahedron)
 
   size_t NumberOfTets() const { return this->Tets.size() / 4; }
   size_t NumberOfPoints() const { return this->Points4.size() / 4; }
@@ -41,6 +42,13 @@ struct PSIVOLUMECORE_EXPORT TetMesh
 /// Gathers the tetrahedra of `input` with component 0 of `scalars` (point or cell data).
 PSIVOLUMECORE_EXPORT TetMesh GatherTetMesh(
   vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cellScalars);
+
+/// A new time step on the same mesh: replaces the point scalars of a mesh gathered with point
+/// data by component 0 of `scalars` (one value per input point) and recomputes the scalar range,
+/// without gathering points and cells again. Returns false, leaving the mesh unchanged, when
+/// that would change which tetrahedra are drawn (a non-finite scalar now or before, or a
+/// mesh gathered with cell scalars): gather the mesh again then.
+PSIVOLUMECORE_EXPORT bool UpdateTetMeshScalars(TetMesh& mesh, vtkDataArray* scalars);
 
 /// Face neighbours of the gathered tetrahedra (4 per tetrahedron, face i opposite vertex i, -1 on
 /// the boundary) taken from a per-cell 4-component array of input cell ids, such as the

@@ -5,7 +5,10 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtkUnstructuredGridBase.h"
+#include "vtkCellArray.h"
+#include "vtkPoints.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
@@ -14,19 +17,65 @@
 PsiMeshBuffers::PsiMeshBuffers() = default;
 PsiMeshBuffers::~PsiMeshBuffers() = default;
 
-bool PsiMeshBuffers::NeedsUpdate(
+namespace
+{
+// The modification time of the points and cells: for an unstructured grid those of its points,
+// cells and cell types, which a new time step that shares them (ShallowCopy) leaves alone; for
+// other grids the dataset's own.
+vtkMTimeType GeometryTimeOf(vtkUnstructuredGridBase* input)
+{
+  vtkUnstructuredGrid* ug = vtkUnstructuredGrid::SafeDownCast(input);
+  if (!ug || !ug->GetPoints() || !ug->GetCells() || !ug->GetCellTypesArray())
+  {
+    return input->GetMTime();
+  }
+  return std::max({ ug->GetPoints()->GetMTime(), ug->GetCells()->GetMTime(),
+    ug->GetCellTypesArray()->GetMTime() });
+}
+} // namespace
+
+PsiMeshBuffers::Change PsiMeshBuffers::NeedsUpdate(
   vtkUnstructuredGridBase* input, vtkDataArray* scalars, const std::string& arrayKey) const
 {
-  const vtkMTimeType time = std::max(input->GetMTime(), scalars->GetMTime());
-  return !this->OnGPU || time != this->Time || input != this->Input ||
-    arrayKey != this->ArrayKey;
+  if (!this->OnGPU || input != this->Input || arrayKey != this->ArrayKey ||
+    GeometryTimeOf(input) != this->GeometryTime)
+  {
+    return Change::Mesh;
+  }
+  return scalars->GetMTime() != this->ScalarsTime ? Change::Scalars : Change::None;
+}
+
+bool PsiMeshBuffers::UpdateScalars(
+  vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBase* input, vtkDataArray* scalars)
+{
+  if (input->GetNumberOfPoints() != static_cast<vtkIdType>(this->Mesh.NumberOfPoints()) ||
+    !psi::UpdateTetMeshScalars(this->Mesh, scalars))
+  {
+    return false;
+  }
+  this->ScalarsTime = scalars->GetMTime();
+  this->UploadPoints(renWin);
+  this->GradientsOnGPU = false;
+  return true;
+}
+
+void PsiMeshBuffers::UploadPoints(vtkOpenGLRenderWindow* renWin)
+{
+  const std::vector<float>& points4 = this->Mesh.Points4;
+  this->PointsBuffer->Upload(points4.empty() ? std::vector<float>(4, 0.f) : points4,
+    vtkOpenGLBufferObject::TextureBuffer);
+  this->PointsTexture->SetContext(renWin);
+  this->PointsTexture->CreateTextureBuffer(
+    static_cast<unsigned int>(std::max<size_t>(this->Mesh.NumberOfPoints(), 1)), 4, VTK_FLOAT,
+    this->PointsBuffer);
 }
 
 bool PsiMeshBuffers::Update(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBase* input,
   vtkDataArray* scalars, bool cellScalars, const std::string& arrayKey, std::string& error)
 {
   this->Mesh = psi::GatherTetMesh(input, scalars, cellScalars);
-  this->Time = std::max(input->GetMTime(), scalars->GetMTime());
+  this->GeometryTime = GeometryTimeOf(input);
+  this->ScalarsTime = scalars->GetMTime();
   this->Input = input;
   this->ArrayKey = arrayKey;
   ++this->Version;
@@ -48,13 +97,7 @@ bool PsiMeshBuffers::Update(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBa
     glGenBuffers(1, &this->TetBuffer);
     glGenVertexArrays(1, &this->VAO);
   }
-  const std::vector<float>& points4 = this->Mesh.Points4;
-  this->PointsBuffer->Upload(points4.empty() ? std::vector<float>(4, 0.f) : points4,
-    vtkOpenGLBufferObject::TextureBuffer);
-  this->PointsTexture->SetContext(renWin);
-  this->PointsTexture->CreateTextureBuffer(
-    static_cast<unsigned int>(std::max<size_t>(this->Mesh.NumberOfPoints(), 1)), 4, VTK_FLOAT,
-    this->PointsBuffer);
+  this->UploadPoints(renWin);
   glBindBuffer(GL_ARRAY_BUFFER, this->TetBuffer);
   glBufferData(GL_ARRAY_BUFFER, this->Mesh.Tets.size() * sizeof(uint32_t),
     this->Mesh.Tets.data(), GL_STATIC_DRAW);
@@ -122,5 +165,5 @@ void PsiMeshBuffers::ReleaseGraphicsResources(vtkWindow* win)
   this->GradientTexture->ReleaseGraphicsResources(win);
   this->GradientsOnGPU = false;
   this->OnGPU = false;
-  this->Time = 0;
+  this->GeometryTime = this->ScalarsTime = 0;
 }

@@ -27,10 +27,22 @@ public:
   PsiMeshBuffers();
   ~PsiMeshBuffers();
 
-  /// Whether `input` colored by `scalars` (with `arrayKey` naming array, association and mode)
-  /// differs from what is uploaded. Switching to an older dataset counts too (its MTime is smaller).
-  bool NeedsUpdate(vtkUnstructuredGridBase* input, vtkDataArray* scalars,
+  /// What differs between `input` colored by `scalars` (`arrayKey` naming array, association and
+  /// mode) and what is uploaded: nothing, only the scalars (a new time step on the same points
+  /// and cells: Maximo et al. 2010 §4 render time-varying data "without extra burden"), or the
+  /// mesh. Switching to another dataset counts as a new mesh, also when its MTime is older.
+  enum class Change
+  {
+    None,
+    Scalars,
+    Mesh
+  };
+  Change NeedsUpdate(vtkUnstructuredGridBase* input, vtkDataArray* scalars,
     const std::string& arrayKey) const;
+  /// Replaces the point scalars only and re-uploads the points (not the tetrahedra); false when
+  /// the mesh must be gathered again instead (see psi::UpdateTetMeshScalars).
+  bool UpdateScalars(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBase* input,
+    vtkDataArray* scalars);
   /// Gathers the mesh (psi::GatherTetMesh) and uploads it. Returns false, with `error` set, when
   /// the mesh does not fit the GPU's texture-buffer limit; the mesh is then empty.
   bool Update(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBase* input,
@@ -44,16 +56,18 @@ public:
   void ReleaseGraphicsResources(vtkWindow* win);
 
   const psi::TetMesh& GetMesh() const { return this->Mesh; }
-  /// Bumped at every Update: parts derived from the mesh compare it.
+  /// Bumped when points or cells change (not for new scalars): the visibility order compares it.
   int GetVersion() const { return this->Version; }
 
 private:
   PsiMeshBuffers(const PsiMeshBuffers&) = delete;
   void operator=(const PsiMeshBuffers&) = delete;
+  void UploadPoints(vtkOpenGLRenderWindow* renWin);
 
   psi::TetMesh Mesh;
   int Version = 0;
-  vtkMTimeType Time = 0;
+  vtkMTimeType GeometryTime = 0;
+  vtkMTimeType ScalarsTime = 0;
   const void* Input = nullptr;
   std::string ArrayKey;
   vtkNew<vtkOpenGLBufferObject> PointsBuffer;

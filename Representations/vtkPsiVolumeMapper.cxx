@@ -283,7 +283,11 @@ bool vtkPsiVolumeMapper::UpdateMesh(vtkRenderer* ren, vtkUnstructuredGridBase* i
   }
   const std::string arrayKey = std::string(scalars->GetName() ? scalars->GetName() : "") + "|" +
     std::to_string(cellFlag) + "|" + std::to_string(this->ScalarMode);
-  if (!I.Mesh.NeedsUpdate(input, scalars, arrayKey))
+  const PsiMeshBuffers::Change change = I.Mesh.NeedsUpdate(input, scalars, arrayKey);
+  if (change == PsiMeshBuffers::Change::None ||
+    (change == PsiMeshBuffers::Change::Scalars &&
+      I.Mesh.UpdateScalars(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()), input,
+        scalars)))
   {
     return true;
   }

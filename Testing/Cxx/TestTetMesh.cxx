@@ -6,7 +6,8 @@
 //  - with cell scalars (private points per tetrahedron) the filter's neighbours still match by
 //    position, where connectivity by point id finds none;
 //  - a stale array (cells reordered downstream) is rejected;
-//  - the sort interface gives a permutation either way.
+//  - the sort interface gives a permutation either way;
+//  - a new time step replaces the scalars only, as gathering the mesh again would.
 #include "PsiTestCheck.h"
 #include "PsiTetConnectivity.h"
 #include "PsiTetMesh.h"
@@ -155,6 +156,34 @@ void TestStaleArray()
   PSI_CHECK(!psi::FaceNeighborsFromArray(m, wrong, ug->GetNumberOfCells(), nb) && nb.empty(),
     "an array of the wrong shape is not taken");
 }
+// A new time step on the same mesh: only the scalars change, and the result equals gathering
+// the mesh again; cases that change which tetrahedra are drawn refuse.
+void TestTimeStep()
+{
+  auto ug = Tetrahedralized(4);
+  vtkDataArray* s = ug->GetPointData()->GetArray("s");
+  psi::TetMesh m = psi::GatherTetMesh(ug, s, false);
+  vtkNew<vtkDoubleArray> next;
+  next->SetNumberOfTuples(s->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < s->GetNumberOfTuples(); ++i)
+  {
+    next->SetValue(i, 3.0 * s->GetComponent(i, 0) + 1.0);
+  }
+  const std::vector<uint32_t> tets = m.Tets;
+  PSI_CHECK(psi::UpdateTetMeshScalars(m, next), "scalars replaced");
+  const psi::TetMesh fresh = psi::GatherTetMesh(ug, next, false);
+  PSI_CHECK(m.Points4 == fresh.Points4 && m.Tets == tets &&
+      m.ScalarRange[0] == fresh.ScalarRange[0] && m.ScalarRange[1] == fresh.ScalarRange[1] &&
+      m.MaxEdgeLength == fresh.MaxEdgeLength,
+    "a time step equals the mesh gathered again");
+  next->SetValue(5, std::numeric_limits<double>::infinity());
+  const std::vector<float> before = m.Points4;
+  PSI_CHECK(!psi::UpdateTetMeshScalars(m, next) && m.Points4 == before,
+    "a non-finite scalar needs the mesh gathered again (and leaves it unchanged)");
+  psi::TetMesh cells = psi::GatherTetMesh(ug, ug->GetCellData()->GetArray("c"), true);
+  PSI_CHECK(!psi::UpdateTetMeshScalars(cells, ug->GetCellData()->GetArray("c")),
+    "a mesh of cell scalars is gathered again");
+}
 } // namespace
 
 int main()
@@ -163,6 +192,7 @@ int main()
   TestSkippedCells();
   TestCellScalars();
   TestStaleArray();
+  TestTimeStep();
   std::printf("%s\n", psitest::Failures() ? "TestTetMesh FAILED" : "TestTetMesh passed");
   return psitest::Failures() ? 1 : 0;
 }
