@@ -231,4 +231,17 @@ int PackProjectionClass(const ProjectionClass& c)
   return c.cls | (c.p[0] << 4) | (c.p[1] << 6) | (c.p[2] << 8) | (c.p[3] << 10);
 }
 
+const std::array<int, 81>& GetPackedProjectionClassTable()
+{
+  static const std::array<int, 81> packed = [] {
+    std::array<int, 81> p{};
+    for (int i = 0; i < 81; ++i)
+    {
+      p[i] = PackProjectionClass(GetProjectionClassTable()[i]);
+    }
+    return p;
+  }();
+  return packed;
+}
+
 } // namespace psi

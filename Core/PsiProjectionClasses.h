@@ -58,6 +58,9 @@ PSIVOLUMECORE_EXPORT const ProjectionClassTable& GetProjectionClassTable();
 /// Packs an entry into one int for a GLSL uniform array: cls | p0<<4 | p1<<6 | p2<<8 | p3<<10.
 PSIVOLUMECORE_EXPORT int PackProjectionClass(const ProjectionClass& c);
 
+/// The whole table packed so, as the geometry shader's `classTable` uniform takes it.
+PSIVOLUMECORE_EXPORT const std::array<int, 81>& GetPackedProjectionClassTable();
+
 } // namespace psi
 
 #endif

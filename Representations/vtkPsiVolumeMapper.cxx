@@ -61,7 +61,6 @@ struct vtkPsiVolumeMapper::Internals
 
   vtkShaderProgram* Program = nullptr;
   std::string ProgramKey;
-  std::array<int, 81> ClassTable{};
   vtkWindow* Context = nullptr;
 
   void Release(vtkWindow* win)
@@ -87,11 +86,6 @@ vtkStandardNewMacro(vtkPsiVolumeMapper);
 vtkPsiVolumeMapper::vtkPsiVolumeMapper()
   : Impl(new Internals)
 {
-  const auto& table = psi::GetProjectionClassTable();
-  for (int i = 0; i < 81; ++i)
-  {
-    this->Impl->ClassTable[i] = psi::PackProjectionClass(table[i]);
-  }
 }
 
 vtkPsiVolumeMapper::~vtkPsiVolumeMapper() = default;
@@ -428,7 +422,7 @@ void vtkPsiVolumeMapper::SetShaderParameters(vtkShaderProgram* program, vtkRende
   Internals& I = *this->Impl;
   vtkVolumeProperty* property = vol->GetProperty();
   SetCameraShaderParameters(program, cam);
-  program->SetUniform1iv("classTable", 81, I.ClassTable.data());
+  program->SetUniform1iv("classTable", 81, psi::GetPackedProjectionClassTable().data());
   program->SetUniformf("unitDistance",
     static_cast<float>(std::max(property->GetScalarOpacityUnitDistance(0), 1e-30)));
   I.Transfer.Activate(program);
