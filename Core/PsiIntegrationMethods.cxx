@@ -245,27 +245,31 @@ constexpr OpticalModel Opacity = OpticalModel::LinearOpacity;
 // enumeration, checked by TestIntegrationMethods); GlslName is Shaders/<GlslName>.glsl (embedded
 // by Representations/CMakeLists.txt, which globs Shaders/PsiIntegrate*.glsl).
 constexpr IntegrationMethodInfo Rows[] = {
-  // Id, Name, GlslName, NeedsPsiTable, NeedsPreIntegrationTable, Model, Integrate, Reference
+  // Id, Name, GlslName, NeedsPsiTable, NeedsPreIntegrationTable, Model, Integrate,
+  // SweepErrorBound, Reference
   { Method::Average, "Average", "PsiIntegrateAverage", false, false, Attenuation,
-    IntegrateAverageMethod,
+    IntegrateAverageMethod, 0.5, // bleeds back color through the front (dissertation Fig. 3.12)
     "Shirley & Tuchman 1990; Moreland 2004 dissertation §3.2.2, Eq. 3.16" },
   { Method::PartialPreIntegration, "Partial Pre-Integration", "PsiIntegratePartialPreIntegration",
-    true, false, Attenuation, IntegratePartialPreIntegration,
+    true, false, Attenuation, IntegratePartialPreIntegration, 2e-4, // Psi table lookup
     "Moreland & Angel 2004; Moreland 2004 dissertation §5.2" },
   { Method::LinearExact, "Linear Exact", "PsiIntegrateLinearExact", false, false, Attenuation,
-    IntegrateLinearExact,
+    IntegrateLinearExact, 1e-9, // closed form in double
     "Williams, Max & Stein 1998; Moreland 2004 dissertation §3.2.3, Eq. 3.28" },
   { Method::AverageOpacity, "Average Opacity", "PsiIntegrateAverageOpacity", false, false, Opacity,
-    IntegrateAverageOpacity, "Wilhelms & van Gelder 1991; Moreland 2004 dissertation §5.3" },
+    IntegrateAverageOpacity, 0.5,
+    "Wilhelms & van Gelder 1991; Moreland 2004 dissertation §5.3" },
   { Method::LinearLuminanceAverageOpacity, "Linear Luminance Average Opacity",
     "PsiIntegrateLinearLuminanceAverageOpacity", false, false, Opacity,
-    IntegrateLinearLuminanceAverageOpacity,
+    IntegrateLinearLuminanceAverageOpacity, 0.2, // dissertation Fig. 5.7
     "Moreland 2004 dissertation §5.3.1, Appendix B.5" },
   { Method::LinearOpacityImproved, "Linear Opacity Improved", "PsiIntegrateLinearOpacityImproved",
-    false, false, Opacity, IntegrateLinearOpacityImproved,
+    false, false, Opacity, IntegrateLinearOpacityImproved, 0.1, // dissertation Fig. 5.9
     "Moreland 2004 dissertation §5.3.2, Eqs. 5.13-5.14, Appendix B.6" },
   { Method::FullPreIntegration, "Full Pre-Integration", "PsiIntegrateFullPreIntegration", false,
-    true, Attenuation, IntegrateLinearExact, "Röttger, Kraus & Ertl 2000" },
+    true, Attenuation, IntegrateLinearExact,
+    1e-9, // evaluated exactly here; the table's own error is tested with the table
+    "Röttger, Kraus & Ertl 2000" },
 };
 
 constexpr bool RowsInEnumOrder()
@@ -284,7 +288,7 @@ static_assert(std::size(Rows) == static_cast<size_t>(Method::Count),
 static_assert(RowsInEnumOrder(), "the rows of the integration-method table follow psi::Method");
 
 constexpr IntegrationMethodInfo UnknownRow = { Method::Count, "Unknown", "", false, false,
-  Attenuation, IntegrateNothing, "" };
+  Attenuation, IntegrateNothing, 0.0, "" };
 } // namespace
 
 const std::vector<IntegrationMethodInfo>& IntegrationMethodTable()

@@ -12,10 +12,10 @@
 //    (Eq. 5.12), the model of psi::IntegrateReferenceLinearOpacity.
 // Each method is measured against the reference of the model it approximates.
 //
-// Adding a method: a psi::Method value, its CPU integrator and one row of the table in
-// PsiIntegrationMethods.cxx, a Shaders/PsiIntegrate<Name>.glsl file defining integrateSegment(),
-// and the matching <Entry> of the IntegrationMethod enumeration in
-// XML/PsiVolumeRepresentation.xml (TestIntegrationMethods checks it against the table).
+// Adding a method: one row of the table in PsiIntegrationMethods.cxx (with its psi::Method value,
+// its CPU integrator and its error bound) and one Shaders/PsiIntegrate<Name>.glsl file defining
+// integrateSegment(); the panel lists it once the <Entry> of the IntegrationMethod enumeration in
+// XML/PsiVolumeRepresentation.xml names it (TestIntegrationMethods checks the two agree).
 #ifndef PsiIntegrationMethods_h
 #define PsiIntegrationMethods_h
 
@@ -80,6 +80,10 @@ struct IntegrationMethodInfo
   OpticalModel Model;
   /// The CPU version (for FullPreIntegration: the exact value the table approximates).
   SegmentIntegrator Integrate;
+  /// What the method promises: its largest error against its model's exact reference over
+  /// Moreland's sweeps (dissertation Figs. 6.5-6.11) and the hard cases, which
+  /// TestIntegrationMethods checks.
+  double SweepErrorBound;
   /// The paper and section the method comes from.
   const char* Reference;
 };

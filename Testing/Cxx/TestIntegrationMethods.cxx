@@ -336,15 +336,12 @@ int main(int argc, char* argv[])
   // Moreland's sweeps: error of each method against its own model's reference.
   std::printf("\n%-34s %10s %10s %10s %10s   (max error over the alpha plane)\n", "method",
     "D=0.001", "D=0.1", "D=1", "D=100");
-  const double bounds[static_cast<int>(Method::Count)] = {
-    0.5,  // Average: bleeds back color through the front (Moreland 2004 dissertation Fig. 3.12)
-    2e-4, // Partial pre-integration: Psi table lookup
-    1e-9, // Linear exact: closed form in double
-    0.5,  // Average opacity
-    0.2,  // Linear luminance, average opacity (Moreland 2004 dissertation Fig. 5.7)
-    0.1,  // Improved linear opacity (Moreland 2004 dissertation Fig. 5.9)
-    1e-9, // Full pre-integration evaluated exactly here; its table error is tested with the table
-  };
+  // each method's bound is its table row's SweepErrorBound
+  std::vector<double> bounds;
+  for (const psi::IntegrationMethodInfo& row : psi::IntegrationMethodTable())
+  {
+    bounds.push_back(row.SweepErrorBound);
+  }
   double sweepMax[static_cast<int>(Method::Count)][4];
   for (int mi = 0; mi < static_cast<int>(Method::Count); ++mi)
   {
