@@ -45,15 +45,15 @@ void AppendPoint(TetMesh& m, const double p[3], float s)
 }
 
 // Point data: every input point once, with its scalar (0 where it is not finite).
-void GatherPoints(vtkUnstructuredGridBase* input, vtkDataArray* scalars, TetMesh& m,
-  std::vector<char>& finite)
+void GatherPoints(vtkUnstructuredGridBase* input, vtkDataArray* scalars,
+  ScalarComponent component, TetMesh& m, std::vector<char>& finite)
 {
   const vtkIdType np = input->GetNumberOfPoints();
   finite.resize(np);
   m.Points4.reserve(4 * static_cast<size_t>(np));
   for (vtkIdType i = 0; i < np; ++i)
   {
-    const double s = scalars->GetComponent(i, 0);
+    const double s = ScalarValue(scalars, i, component);
     finite[i] = FiniteScalar(s);
     double p[3];
     input->GetPoint(i, p);
@@ -76,7 +76,7 @@ void AppendCellScalarTet(vtkUnstructuredGridBase* input, const vtkIdType pts[4],
 }
 
 void GatherTets(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cellScalars,
-  const std::vector<char>& pointFinite, TetMesh& m)
+  ScalarComponent component, const std::vector<char>& pointFinite, TetMesh& m)
 {
   const vtkIdType nc = input->GetNumberOfCells();
   m.Tets.reserve(4 * static_cast<size_t>(nc));
@@ -90,7 +90,7 @@ void GatherTets(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cell
     }
     vtkIdType pts[4];
     CellPoints(input, c, ids, pts);
-    const double cellScalar = cellScalars ? scalars->GetComponent(c, 0) : 0.0;
+    const double cellScalar = cellScalars ? ScalarValue(scalars, c, component) : 0.0;
     const bool finite = cellScalars ? FiniteScalar(cellScalar)
                                     : pointFinite[pts[0]] && pointFinite[pts[1]] &&
         pointFinite[pts[2]] && pointFinite[pts[3]];
@@ -161,7 +161,24 @@ void MeasureTets(TetMesh& m, bool edges = true)
 }
 } // namespace
 
-TetMesh GatherTetMesh(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cellScalars)
+double ScalarValue(vtkDataArray* array, int64_t i, ScalarComponent c)
+{
+  const int n = array->GetNumberOfComponents();
+  if (c.Index != ScalarComponent::Magnitude || n == 1)
+  {
+    return array->GetComponent(i, std::min(std::max(c.Index, 0), n - 1));
+  }
+  double sum = 0;
+  for (int k = 0; k < n; ++k)
+  {
+    const double v = array->GetComponent(i, k);
+    sum += v * v;
+  }
+  return std::sqrt(sum);
+}
+
+TetMesh GatherTetMesh(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cellScalars,
+  ScalarComponent component)
 {
   TetMesh m;
   m.CellScalars = cellScalars;
@@ -176,14 +193,14 @@ TetMesh GatherTetMesh(vtkUnstructuredGridBase* input, vtkDataArray* scalars, boo
   std::vector<char> pointFinite;
   if (!cellScalars)
   {
-    GatherPoints(input, scalars, m, pointFinite);
+    GatherPoints(input, scalars, component, m, pointFinite);
   }
-  GatherTets(input, scalars, cellScalars, pointFinite, m);
+  GatherTets(input, scalars, cellScalars, component, pointFinite, m);
   MeasureTets(m);
   return m;
 }
 
-bool UpdateTetMeshScalars(TetMesh& m, vtkDataArray* scalars)
+bool UpdateTetMeshScalars(TetMesh& m, vtkDataArray* scalars, ScalarComponent component)
 {
   const size_t np = m.NumberOfPoints();
   if (m.CellScalars || m.NonFiniteTets || !scalars ||
@@ -194,7 +211,7 @@ bool UpdateTetMeshScalars(TetMesh& m, vtkDataArray* scalars)
   std::vector<float> values(np);
   for (size_t i = 0; i < np; ++i)
   {
-    const double s = scalars->GetComponent(static_cast<vtkIdType>(i), 0);
+    const double s = ScalarValue(scalars, static_cast<int64_t>(i), component);
     if (!FiniteScalar(s))
     {
       return false;

@@ -39,16 +39,28 @@ struct PSIVOLUMECORE_EXPORT TetMesh
   size_t NumberOfPoints() const { return this->Points4.size() / 4; }
 };
 
-/// Gathers the tetrahedra of `input` with component 0 of `scalars` (point or cell data).
-PSIVOLUMECORE_EXPORT TetMesh GatherTetMesh(
-  vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cellScalars);
+/// Which value of a tuple is the scalar: a component (clamped to the array's), or the magnitude
+/// of the whole tuple (Magnitude), as a color map's vector mode says (vtkScalarsToColors).
+struct ScalarComponent
+{
+  static constexpr int Magnitude = -1;
+  int Index = 0;
+};
+
+/// The scalar of tuple i of `array` (component or magnitude, see ScalarComponent).
+PSIVOLUMECORE_EXPORT double ScalarValue(vtkDataArray* array, int64_t i, ScalarComponent c);
+
+/// Gathers the tetrahedra of `input` with the scalars of `scalars` (point or cell data).
+PSIVOLUMECORE_EXPORT TetMesh GatherTetMesh(vtkUnstructuredGridBase* input, vtkDataArray* scalars,
+  bool cellScalars, ScalarComponent component = ScalarComponent());
 
 /// A new time step on the same mesh: replaces the point scalars of a mesh gathered with point
 /// data by component 0 of `scalars` (one value per input point) and recomputes the scalar range,
 /// without gathering points and cells again. Returns false, leaving the mesh unchanged, when
 /// that would change which tetrahedra are drawn (a non-finite scalar now or before, or a
 /// mesh gathered with cell scalars): gather the mesh again then.
-PSIVOLUMECORE_EXPORT bool UpdateTetMeshScalars(TetMesh& mesh, vtkDataArray* scalars);
+PSIVOLUMECORE_EXPORT bool UpdateTetMeshScalars(
+  TetMesh& mesh, vtkDataArray* scalars, ScalarComponent component = ScalarComponent());
 
 /// Face neighbours of the gathered tetrahedra (4 per tetrahedron, face i opposite vertex i, -1 on
 /// the boundary) taken from a per-cell 4-component array of input cell ids, such as the

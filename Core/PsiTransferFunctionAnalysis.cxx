@@ -116,6 +116,18 @@ std::vector<float> TransferFunctionKinks(
   return kinks;
 }
 
+ScalarComponent ColorMapComponent(vtkVolumeProperty* property, int numberOfComponents)
+{
+  ScalarComponent c;
+  vtkColorTransferFunction* ctf = property->GetRGBTransferFunction(0);
+  if (numberOfComponents > 1 && ctf)
+  {
+    c.Index = ctf->GetVectorMode() == vtkScalarsToColors::COMPONENT ? ctf->GetVectorComponent()
+                                                                   : ScalarComponent::Magnitude;
+  }
+  return c;
+}
+
 std::vector<float> OpacityPrefixCounts(const TransferFunctionTable& table, bool& hasZeroOpacity)
 {
   std::vector<float> prefix(table.Size);

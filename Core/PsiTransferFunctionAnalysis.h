@@ -5,6 +5,7 @@
 #ifndef PsiTransferFunctionAnalysis_h
 #define PsiTransferFunctionAnalysis_h
 
+#include "PsiTetMesh.h"
 #include "PsiVolumeCoreModule.h"
 
 #include <vector>
@@ -26,6 +27,12 @@ PSIVOLUMECORE_EXPORT void EvaluateTransferFunction(
 /// thinned to at most `maxNodes`.
 PSIVOLUMECORE_EXPORT std::vector<float> TransferFunctionKinks(
   vtkVolumeProperty* property, const double range[2], int maxNodes);
+
+/// The scalar of a tuple of `numberOfComponents` that the color map's vector mode selects, as
+/// ParaView's 'Volume' maps it (vtkScalarsToColors: VectorMode Component selects
+/// VectorComponent, any other mode the magnitude); component 0 of a one-component array.
+PSIVOLUMECORE_EXPORT ScalarComponent ColorMapComponent(
+  vtkVolumeProperty* property, int numberOfComponents);
 
 /// Prefix counts of the table's samples with non-zero opacity: entry i counts samples 0..i. A
 /// scalar interval meets only zero-opacity samples when the counts at its ends are equal

@@ -45,11 +45,11 @@ PsiMeshBuffers::Change PsiMeshBuffers::NeedsUpdate(
   return scalars->GetMTime() != this->ScalarsTime ? Change::Scalars : Change::None;
 }
 
-bool PsiMeshBuffers::UpdateScalars(
-  vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBase* input, vtkDataArray* scalars)
+bool PsiMeshBuffers::UpdateScalars(vtkOpenGLRenderWindow* renWin,
+  vtkUnstructuredGridBase* input, vtkDataArray* scalars, psi::ScalarComponent component)
 {
   if (input->GetNumberOfPoints() != static_cast<vtkIdType>(this->Mesh.NumberOfPoints()) ||
-    !psi::UpdateTetMeshScalars(this->Mesh, scalars))
+    !psi::UpdateTetMeshScalars(this->Mesh, scalars, component))
   {
     return false;
   }
@@ -71,9 +71,10 @@ void PsiMeshBuffers::UploadPoints(vtkOpenGLRenderWindow* renWin)
 }
 
 bool PsiMeshBuffers::Update(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBase* input,
-  vtkDataArray* scalars, bool cellScalars, const std::string& arrayKey, std::string& error)
+  vtkDataArray* scalars, bool cellScalars, psi::ScalarComponent component,
+  const std::string& arrayKey, std::string& error)
 {
-  this->Mesh = psi::GatherTetMesh(input, scalars, cellScalars);
+  this->Mesh = psi::GatherTetMesh(input, scalars, cellScalars, component);
   this->GeometryTime = GeometryTimeOf(input);
   this->ScalarsTime = scalars->GetMTime();
   this->Input = input;

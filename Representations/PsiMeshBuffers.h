@@ -42,11 +42,12 @@ public:
   /// Replaces the point scalars only and re-uploads the points (not the tetrahedra); false when
   /// the mesh must be gathered again instead (see psi::UpdateTetMeshScalars).
   bool UpdateScalars(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBase* input,
-    vtkDataArray* scalars);
+    vtkDataArray* scalars, psi::ScalarComponent component);
   /// Gathers the mesh (psi::GatherTetMesh) and uploads it. Returns false, with `error` set, when
   /// the mesh does not fit the GPU's texture-buffer limit; the mesh is then empty.
   bool Update(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBase* input,
-    vtkDataArray* scalars, bool cellScalars, const std::string& arrayKey, std::string& error);
+    vtkDataArray* scalars, bool cellScalars, psi::ScalarComponent component,
+    const std::string& arrayKey, std::string& error);
   /// Uploads the smoothed point gradients once per mesh.
   void UpdateGradients(vtkOpenGLRenderWindow* renWin);
 

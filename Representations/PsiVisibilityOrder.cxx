@@ -63,7 +63,7 @@ void PsiVisibilityOrder::Draw() const
 {
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
   // Streamed in chunks so that no single draw call is unbounded (huge meshes).
-  const size_t n = this->Order.size(), chunk = size_t(1) << 22;
+  const size_t n = this->Order.size(), chunk = size_t(1) << 16;
   for (size_t first = 0; first < n; first += chunk)
   {
     const size_t count = std::min(chunk, n - first);

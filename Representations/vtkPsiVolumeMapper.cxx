@@ -217,7 +217,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     I.Release(I.Context);
   }
   I.Context = renWin;
-  if (!this->UpdateMesh(ren, input) || I.Mesh.GetMesh().NumberOfTets() == 0)
+  if (!this->UpdateMesh(ren, vol, input) || I.Mesh.GetMesh().NumberOfTets() == 0)
   {
     return;
   }
@@ -258,7 +258,8 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 }
 
 // Gathers and uploads the mesh when the data or the array changed. False: nothing to draw.
-bool vtkPsiVolumeMapper::UpdateMesh(vtkRenderer* ren, vtkUnstructuredGridBase* input)
+bool vtkPsiVolumeMapper::UpdateMesh(
+  vtkRenderer* ren, vtkVolume* vol, vtkUnstructuredGridBase* input)
 {
   Internals& I = *this->Impl;
   int cellFlag = 0;
@@ -275,19 +276,22 @@ bool vtkPsiVolumeMapper::UpdateMesh(vtkRenderer* ren, vtkUnstructuredGridBase* i
                   "(Coloring) for this representation.");
     return false;
   }
+  const psi::ScalarComponent component =
+    psi::ColorMapComponent(vol->GetProperty(), scalars->GetNumberOfComponents());
   const std::string arrayKey = std::string(scalars->GetName() ? scalars->GetName() : "") + "|" +
-    std::to_string(cellFlag) + "|" + std::to_string(this->ScalarMode);
+    std::to_string(cellFlag) + "|" + std::to_string(this->ScalarMode) + "|" +
+    std::to_string(component.Index);
   const PsiMeshBuffers::Change change = I.Mesh.NeedsUpdate(input, scalars, arrayKey);
   if (change == PsiMeshBuffers::Change::None ||
     (change == PsiMeshBuffers::Change::Scalars &&
       I.Mesh.UpdateScalars(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()), input,
-        scalars)))
+        scalars, component)))
   {
     return true;
   }
   std::string error;
   if (!I.Mesh.Update(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()), input, scalars,
-        cellFlag == 1, arrayKey, error))
+        cellFlag == 1, component, arrayKey, error))
   {
     vtkErrorMacro("Psi Volume: " << error);
   }

@@ -238,7 +238,7 @@ private:
 
   void SetIsosurfaceVector(std::vector<double>& member, std::vector<double> v);
   void UpdateIsosurfaceList();
-  bool UpdateMesh(vtkRenderer* ren, vtkUnstructuredGridBase* input);
+  bool UpdateMesh(vtkRenderer* ren, vtkVolume* vol, vtkUnstructuredGridBase* input);
   void UpdateTables(vtkRenderer* ren, vtkVolume* vol);
   psi::ShaderFeatures ChooseFeatures(
     vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam);

@@ -25,5 +25,5 @@ add_test(NAME MPVONC COMMAND TestMPVONC)
 # The renderer's mesh gathering and its reuse of the filter's FaceNeighbors (GL-free).
 add_executable(TestTetMesh Cxx/TestTetMesh.cxx)
 target_link_libraries(TestTetMesh PRIVATE PsiVolume::Filters PsiVolume::Core VTK::CommonCore
-  VTK::CommonDataModel VTK::CommonExecutionModel)
+  VTK::CommonDataModel VTK::CommonExecutionModel VTK::RenderingCore)
 add_test(NAME TetMesh COMMAND TestTetMesh)

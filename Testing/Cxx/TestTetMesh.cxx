@@ -12,15 +12,18 @@
 #include "PsiTetConnectivity.h"
 #include "PsiTetMesh.h"
 #include "PsiTetSort.h"
+#include "PsiTransferFunctionAnalysis.h"
 #include "vtkPsiConformingTetrahedralize.h"
 
 #include "vtkCellData.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkVolumeProperty.h"
 
 #include <algorithm>
 #include <cmath>
@@ -184,6 +187,44 @@ void TestTimeStep()
   PSI_CHECK(!psi::UpdateTetMeshScalars(cells, ug->GetCellData()->GetArray("c")),
     "a mesh of cell scalars is gathered again");
 }
+// Coloring by a vector array follows the color map's vector mode: its magnitude, or the
+// component it selects, as ParaView's 'Volume' maps it.
+void TestVectorComponents()
+{
+  auto ug = Tetrahedralized(3);
+  vtkNew<vtkDoubleArray> v;
+  v->SetNumberOfComponents(3);
+  v->SetNumberOfTuples(ug->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < ug->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    ug->GetPoint(i, x);
+    v->SetTuple3(i, x[0] + 1, -2 * x[1], 0.5 * x[2] + 3);
+  }
+  vtkNew<vtkVolumeProperty> property;
+  vtkNew<vtkColorTransferFunction> ctf;
+  property->SetColor(ctf);
+  ctf->SetVectorModeToMagnitude();
+  psi::ScalarComponent mag = psi::ColorMapComponent(property, 3);
+  ctf->SetVectorModeToComponent();
+  ctf->SetVectorComponent(2);
+  psi::ScalarComponent z = psi::ColorMapComponent(property, 3);
+  PSI_CHECK(mag.Index == psi::ScalarComponent::Magnitude && z.Index == 2 &&
+      psi::ColorMapComponent(property, 1).Index == 0,
+    "vector mode read from the color map (%d, %d)", mag.Index, z.Index);
+  const psi::TetMesh mm = psi::GatherTetMesh(ug, v, false, mag);
+  const psi::TetMesh mz = psi::GatherTetMesh(ug, v, false, z);
+  double worstMag = 0, worstZ = 0;
+  for (vtkIdType i = 0; i < ug->GetNumberOfPoints(); ++i)
+  {
+    const double* t = v->GetTuple3(i);
+    const double m = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+    worstMag = std::max(worstMag, std::abs(mm.Points4[4 * i + 3] - m));
+    worstZ = std::max(worstZ, std::abs(mz.Points4[4 * i + 3] - t[2]));
+  }
+  PSI_CHECK(worstMag < 1e-5 && worstZ < 1e-6, "magnitude (%g) and component 2 (%g) gathered",
+    worstMag, worstZ);
+}
 } // namespace
 
 int main()
@@ -193,6 +234,7 @@ int main()
   TestCellScalars();
   TestStaleArray();
   TestTimeStep();
+  TestVectorComponents();
   std::printf("%s\n", psitest::Failures() ? "TestTetMesh FAILED" : "TestTetMesh passed");
   return psitest::Failures() ? 1 : 0;
 }

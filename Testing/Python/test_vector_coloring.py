@@ -1,0 +1,66 @@
+"""Coloring 'Psi Volume' by a vector array follows the color map's vector mode, as 'Volume'
+does: by ('POINTS', 'V', 'Magnitude') the image equals coloring by the magnitude computed as its
+own array, by component Z it equals coloring by the Z array, and the two differ (the X component,
+which a mapper reading component 0 would draw, differs from both). The same for cell data."""
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
+import numpy as np  # noqa: E402
+import psi_data  # noqa: E402
+import psi_testing  # noqa: E402
+from paraview import simple  # noqa: E402
+
+t = psi_testing.Checks("test_vector_coloring")
+psi_data.load_plugin(globals())
+src, _ = psi_data.wavelet(8)
+# V = (x, RTData / 40, z + 10): its components and its magnitude all differ from each other
+calc = simple.Calculator(Input=src, ResultArrayName="V",
+                         Function="coordsX*iHat + RTData/40*jHat + (coordsZ + 10)*kHat")
+mag = simple.Calculator(Input=calc, ResultArrayName="Vmag", Function="mag(V)")
+vz = simple.Calculator(Input=mag, ResultArrayName="Vz", Function="V_Z")
+vx = simple.Calculator(Input=vz, ResultArrayName="Vx", Function="V_X")
+cells = simple.PointDatatoCellData(Input=vx)
+view = simple.CreateRenderView()
+view.ViewSize = [160, 160]
+view.OrientationAxesVisibility = 0
+view.UseColorPaletteForBackground = 0
+view.Background = [0.0, 0.0, 0.0]
+
+
+def image(source, assoc, array, component=None, rng=None):
+    """'Psi Volume' colored by `array` (and vector `component`), over the scalar range `rng`."""
+    d = simple.Show(source, view)
+    d.SetRepresentationType("Psi Volume")
+    simple.ColorBy(d, (assoc, array) if component is None else (assoc, array, component))
+    lut = simple.GetColorTransferFunction(array)
+    pwf = simple.GetOpacityTransferFunction(array)
+    lut.RescaleTransferFunction(rng[0], rng[1])
+    pwf.RescaleTransferFunction(rng[0], rng[1])
+    d.ScalarOpacityUnitDistance = 3.0
+    view.ResetCamera()
+    simple.Render(view)
+    img = psi_testing.grab(view)
+    simple.Hide(source, view)
+    return img
+
+
+for assoc, source in (("POINTS", vx), ("CELLS", cells)):
+    data = source.PointData if assoc == "POINTS" else source.CellData
+    rmag, rz, rx = (data[a].GetRange() for a in ("Vmag", "Vz", "Vx"))
+    by_mag = image(source, assoc, "V", "Magnitude", rmag)
+    ref_mag = image(source, assoc, "Vmag", None, rmag)
+    by_z = image(source, assoc, "V", "Z", rz)
+    ref_z = image(source, assoc, "Vz", None, rz)
+    ref_x = image(source, assoc, "Vx", None, rz)
+    e_mag, e_z = psi_testing.mean_error(by_mag, ref_mag), psi_testing.mean_error(by_z, ref_z)
+    t.check(psi_testing.covered(ref_mag, [0, 0, 0]) > 2000, "%s: images are not empty" % assoc)
+    t.check(e_mag < 0.5 / 255, "%s: V Magnitude equals |V| as its own array (%.2e)"
+            % (assoc, e_mag))
+    t.check(e_z < 0.5 / 255, "%s: V component Z equals V_Z as its own array (%.2e)" % (assoc, e_z))
+    t.check(psi_testing.mean_error(by_z, ref_x) > 5.0 / 255,
+            "%s: component Z differs from component X (%.2e)"
+            % (assoc, psi_testing.mean_error(by_z, ref_x)))
+    t.check(psi_testing.mean_error(by_mag, ref_z) > 5.0 / 255,
+            "%s: magnitude differs from component Z" % assoc)
+t.finish()
