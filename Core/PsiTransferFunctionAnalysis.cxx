@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace psi
 {
@@ -126,6 +127,17 @@ ScalarComponent ColorMapComponent(vtkVolumeProperty* property, int numberOfCompo
                                                                    : ScalarComponent::Magnitude;
   }
   return c;
+}
+
+std::string UnitDistanceProblem(vtkVolumeProperty* property)
+{
+  const double unit = property->GetScalarOpacityUnitDistance(0);
+  if (unit > 0 && std::isfinite(unit))
+  {
+    return "";
+  }
+  return "Psi Volume draws nothing: the opacity unit distance (ScalarOpacityUnitDistance) is " +
+    std::to_string(unit) + "; opacity per unit distance needs a positive distance.";
 }
 
 std::vector<float> OpacityPrefixCounts(const TransferFunctionTable& table, bool& hasZeroOpacity)

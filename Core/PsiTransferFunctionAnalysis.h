@@ -8,6 +8,7 @@
 #include "PsiTetMesh.h"
 #include "PsiVolumeCoreModule.h"
 
+#include <string>
 #include <vector>
 
 class vtkVolumeProperty;
@@ -33,6 +34,10 @@ PSIVOLUMECORE_EXPORT std::vector<float> TransferFunctionKinks(
 /// VectorComponent, any other mode the magnitude); component 0 of a one-component array.
 PSIVOLUMECORE_EXPORT ScalarComponent ColorMapComponent(
   vtkVolumeProperty* property, int numberOfComponents);
+
+/// Why the opacity unit distance (ScalarOpacityUnitDistance of component 0) gives no optical
+/// depth: tau = opacity / unit distance needs a positive, finite distance. "" when it is fine.
+PSIVOLUMECORE_EXPORT std::string UnitDistanceProblem(vtkVolumeProperty* property);
 
 /// Prefix counts of the table's samples with non-zero opacity: entry i counts samples 0..i. A
 /// scalar interval meets only zero-opacity samples when the counts at its ends are equal

@@ -195,3 +195,46 @@ void PsiPreIntegrationTexture::ReleaseGraphicsResources(vtkWindow* win)
   this->Texture->ReleaseGraphicsResources(win);
   this->Valid = false;
 }
+
+// ---- all four -----------------------------------------------------------------------------------
+void PsiTransferTables::Activate(vtkShaderProgram* program, bool earlyDiscard, bool psi, bool pre)
+{
+  this->Transfer.Activate(program);
+  if (earlyDiscard)
+  {
+    this->OpacityPrefix.Activate(program, this->Transfer.GetTable());
+  }
+  if (psi)
+  {
+    this->PsiTable.Activate(program);
+  }
+  if (pre)
+  {
+    this->PreIntegration.Activate(program);
+  }
+}
+
+void PsiTransferTables::Deactivate(bool earlyDiscard, bool psi, bool pre)
+{
+  this->Transfer.Deactivate();
+  if (earlyDiscard)
+  {
+    this->OpacityPrefix.Deactivate();
+  }
+  if (psi)
+  {
+    this->PsiTable.Deactivate();
+  }
+  if (pre)
+  {
+    this->PreIntegration.Deactivate();
+  }
+}
+
+void PsiTransferTables::ReleaseGraphicsResources(vtkWindow* win)
+{
+  this->Transfer.ReleaseGraphicsResources(win);
+  this->OpacityPrefix.ReleaseGraphicsResources(win);
+  this->PsiTable.ReleaseGraphicsResources(win);
+  this->PreIntegration.ReleaseGraphicsResources(win);
+}

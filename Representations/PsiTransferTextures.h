@@ -107,4 +107,17 @@ private:
   bool Valid = false;
 };
 
+/// The four tables of a frame: binds and releases together only those its features use.
+struct PsiTransferTables
+{
+  PsiTransferFunctionTexture Transfer;
+  PsiOpacityPrefixTexture OpacityPrefix;
+  PsiPsiTableTexture PsiTable;
+  PsiPreIntegrationTexture PreIntegration;
+
+  void Activate(vtkShaderProgram* program, bool earlyDiscard, bool psi, bool pre);
+  void Deactivate(bool earlyDiscard, bool psi, bool pre);
+  void ReleaseGraphicsResources(vtkWindow* win);
+};
+
 #endif

@@ -48,10 +48,7 @@ struct vtkPsiVolumeMapper::Internals
 {
   PsiMeshBuffers Mesh;
   PsiVisibilityOrder Order;
-  PsiTransferFunctionTexture Transfer;
-  PsiOpacityPrefixTexture OpacityPrefix;
-  PsiPsiTableTexture PsiTable;
-  PsiPreIntegrationTexture PreIntegration;
+  PsiTransferTables Tables;
   PsiRenderTarget Target;
 
   // Transfer-function nodes for adaptive sampling, for the property and range they came from.
@@ -61,6 +58,7 @@ struct vtkPsiVolumeMapper::Internals
 
   vtkShaderProgram* Program = nullptr;
   std::string ProgramKey;
+  std::string LastWarning;
   vtkWindow* Context = nullptr;
 
   void Release(vtkWindow* win)
@@ -70,10 +68,7 @@ struct vtkPsiVolumeMapper::Internals
       this->Mesh.ReleaseGraphicsResources(win);
       this->Order.ReleaseGraphicsResources(win);
     }
-    this->Transfer.ReleaseGraphicsResources(win);
-    this->OpacityPrefix.ReleaseGraphicsResources(win);
-    this->PsiTable.ReleaseGraphicsResources(win);
-    this->PreIntegration.ReleaseGraphicsResources(win);
+    this->Tables.ReleaseGraphicsResources(win);
     this->Target.ReleaseGraphicsResources(win);
     this->Program = nullptr;
     this->ProgramKey.clear();
@@ -212,6 +207,17 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
+  // an optical depth needs a positive unit distance: like 'Projected tetra', draw nothing
+  const std::string badUnit = psi::UnitDistanceProblem(vol->GetProperty());
+  if (badUnit != I.LastWarning && !badUnit.empty())
+  {
+    vtkWarningMacro(<< badUnit); // once per new value
+  }
+  I.LastWarning = badUnit;
+  if (!badUnit.empty())
+  {
+    return this->ResetStatistics();
+  }
   if (I.Context && I.Context != renWin)
   {
     I.Release(I.Context);
@@ -313,25 +319,25 @@ void vtkPsiVolumeMapper::UpdateTables(vtkRenderer* ren, vtkVolume* vol)
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   vtkVolumeProperty* property = vol->GetProperty();
   const psi::TetMesh& mesh = I.Mesh.GetMesh();
-  if (I.Transfer.NeedsUpdate(property, mesh.ScalarRange, this->TransferFunctionSamples))
+  if (I.Tables.Transfer.NeedsUpdate(property, mesh.ScalarRange, this->TransferFunctionSamples))
   {
-    I.Transfer.Update(renWin, property, mesh.ScalarRange, this->TransferFunctionSamples);
+    I.Tables.Transfer.Update(renWin, property, mesh.ScalarRange, this->TransferFunctionSamples);
   }
-  if (this->EarlyDiscard && I.Transfer.HasZeroOpacity() &&
-    I.OpacityPrefix.NeedsUpdate(I.Transfer.GetVersion()))
+  if (this->EarlyDiscard && I.Tables.Transfer.HasZeroOpacity() &&
+    I.Tables.OpacityPrefix.NeedsUpdate(I.Tables.Transfer.GetVersion()))
   {
-    I.OpacityPrefix.Update(renWin, I.Transfer);
+    I.Tables.OpacityPrefix.Update(renWin, I.Tables.Transfer);
   }
-  if (MethodInfo(this->IntegrationMethod).NeedsPsiTable && I.PsiTable.NeedsUpdate())
+  if (MethodInfo(this->IntegrationMethod).NeedsPsiTable && I.Tables.PsiTable.NeedsUpdate())
   {
-    I.PsiTable.Update(renWin);
+    I.Tables.PsiTable.Update(renWin);
   }
   if (MethodInfo(this->IntegrationMethod).NeedsPreIntegrationTable &&
-    I.PreIntegration.NeedsUpdate(I.Transfer.GetVersion(), mesh.MaxEdgeLength))
+    I.Tables.PreIntegration.NeedsUpdate(I.Tables.Transfer.GetVersion(), mesh.MaxEdgeLength))
   {
     // Röttger's table belongs to one transfer function: rebuilt on every edit (timed).
     this->Stats.LastPreIntegrationSeconds =
-      I.PreIntegration.Update(renWin, I.Transfer, mesh.MaxEdgeLength);
+      I.Tables.PreIntegration.Update(renWin, I.Tables.Transfer, mesh.MaxEdgeLength);
   }
   if (!this->Isosurfaces.Empty() && this->IsosurfaceShading == ISO_SMOOTH)
   {
@@ -359,7 +365,7 @@ psi::ShaderFeatures vtkPsiVolumeMapper::ChooseFeatures(
   f.OpaqueClip = PsiRenderTarget::OpaqueGeometryOverlaps(ren, vol);
   f.IsoCount = this->Isosurfaces.Count();
   f.IsoSmooth = f.IsoCount > 0 && this->IsosurfaceShading == ISO_SMOOTH;
-  const bool zeroOpacity = I.Transfer.HasZeroOpacity();
+  const bool zeroOpacity = I.Tables.Transfer.HasZeroOpacity();
   if (f.IsoCount > 0 &&
     (this->IsosurfaceMethod == ISO_MARCHING_TETRAHEDRA ||
       (this->IsosurfaceMethod == ISO_AUTO && this->EarlyDiscard && zeroOpacity)))
@@ -429,19 +435,8 @@ void vtkPsiVolumeMapper::SetShaderParameters(vtkShaderProgram* program, vtkRende
   program->SetUniform1iv("classTable", 81, psi::GetPackedProjectionClassTable().data());
   program->SetUniformf("unitDistance",
     static_cast<float>(std::max(property->GetScalarOpacityUnitDistance(0), 1e-30)));
-  I.Transfer.Activate(program);
-  if (f.EarlyDiscard)
-  {
-    I.OpacityPrefix.Activate(program, I.Transfer.GetTable());
-  }
-  if (MethodInfo(f.Method).NeedsPsiTable)
-  {
-    I.PsiTable.Activate(program);
-  }
-  if (MethodInfo(f.Method).NeedsPreIntegrationTable)
-  {
-    I.PreIntegration.Activate(program);
-  }
+  I.Tables.Activate(program, f.EarlyDiscard, MethodInfo(f.Method).NeedsPsiTable,
+    MethodInfo(f.Method).NeedsPreIntegrationTable);
   I.Target.SetShaderParameters(program);
   if (f.IsoCount > 0)
   {
@@ -461,20 +456,8 @@ void vtkPsiVolumeMapper::SetShaderParameters(vtkShaderProgram* program, vtkRende
 
 void vtkPsiVolumeMapper::DeactivateTables(const psi::ShaderFeatures& f)
 {
-  Internals& I = *this->Impl;
-  I.Transfer.Deactivate();
-  if (f.EarlyDiscard)
-  {
-    I.OpacityPrefix.Deactivate();
-  }
-  if (MethodInfo(f.Method).NeedsPsiTable)
-  {
-    I.PsiTable.Deactivate();
-  }
-  if (MethodInfo(f.Method).NeedsPreIntegrationTable)
-  {
-    I.PreIntegration.Deactivate();
-  }
+  this->Impl->Tables.Deactivate(f.EarlyDiscard, MethodInfo(f.Method).NeedsPsiTable,
+    MethodInfo(f.Method).NeedsPreIntegrationTable);
 }
 
 void vtkPsiVolumeMapper::ResetStatistics()
@@ -490,11 +473,8 @@ void vtkPsiVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IntegrationMethod: " << GetIntegrationMethodName(this->IntegrationMethod)
      << "\n";
   os << indent << "TransferFunctionSamples: " << this->TransferFunctionSamples << "\n";
-  os << indent << "IsosurfaceMethod: "
-     << (this->IsosurfaceMethod == ISO_MARCHING_TETRAHEDRA ? "marching tetrahedra"
-            : this->IsosurfaceMethod == ISO_PER_FRAGMENT    ? "per fragment"
-                                                            : "auto")
-     << ", shading: " << (this->IsosurfaceShading == ISO_SMOOTH ? "smooth" : "flat") << "\n";
+  os << indent << "IsosurfaceMethod: " << this->IsosurfaceMethod
+     << ", IsosurfaceShading: " << this->IsosurfaceShading << "\n";
   os << indent << "NumberOfTetrahedra: " << this->Stats.NumberOfTetrahedra << "\n";
   os << indent << "NumberOfSkippedCells: " << this->Stats.NumberOfSkippedCells << "\n";
 }

@@ -652,6 +652,38 @@ def case_reader():
     t.check(rb.GetDataInformation().GetNumberOfCells() == 0, "reader: and an empty output")
 
 
+def case_unitdistance():
+    """ScalarOpacityUnitDistance 0 or -1 has no optical meaning (opacity per unit distance): the
+    volume is not drawn, as with 'Projected tetra', and a warning names the value; a positive
+    distance draws again."""
+    n = 8
+    p = box_points(n)
+    tets = box_tets(n)
+    f = field(p)
+    view = make_view()
+    d = show(producer(make_grid(p, tets, point_scalars=f)), view, "f", unit=0.15)
+    aim(view, [0, 1, 0, 1, 0, 1])
+    good = render_only(view, d, [d])
+    check_image(good, "unit distance 0.15", 0.3)
+    for unit in (0.0, -1.0):
+        d.ScalarOpacityUnitDistance = unit
+        m = MSG.mark()
+        img = render_only(view, d, [d])
+        warns = MSG.since(m, "WarningEvent", "unit distance")
+        for s in warns:
+            print("    message: " + short(s))
+        cov = psi_testing.covered(img, BG)
+        t.check(cov == 0, "unit distance %g: nothing drawn (%d pixels covered)" % (unit, cov))
+        t.check(len(warns) == 1, "unit distance %g: one warning names it (%d)" % (unit, len(warns)))
+        m = MSG.mark()
+        render_only(view, d, [d])
+        t.check(not MSG.since(m, "WarningEvent", "unit distance"),
+                "unit distance %g: the warning is not repeated every frame" % unit)
+    d.ScalarOpacityUnitDistance = 0.15
+    again = render_only(view, d, [d])
+    t.check(diff(again, good)[1] == 0, "unit distance 0.15 again: the same image")
+
+
 CASES = {
     "nontet": case_nontet,
     "surface": case_surface,
@@ -663,6 +695,7 @@ CASES = {
     "multiblock": case_multiblock,
     "large": case_large,
     "reader": case_reader,
+    "unitdistance": case_unitdistance,
 }
 
 if __name__ == "__main__":
