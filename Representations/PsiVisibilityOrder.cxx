@@ -34,7 +34,7 @@ void PsiVisibilityOrder::Update(const psi::TetMesh& mesh, int meshVersion,
   std::vector<int32_t> faceNeighbors, int method, const double mcvc[16], bool parallel)
 {
   const auto t0 = std::chrono::steady_clock::now();
-  if (method != this->Method || meshVersion != this->MeshVersion || !this->Sort)
+  if (this->NeedsMesh(meshVersion, method))
   {
     this->Sort = method == MPVONC ? psi::NewMPVONCSort() : psi::NewCentroidSort();
     this->Sort->SetMesh(&mesh, std::move(faceNeighbors));

@@ -27,6 +27,12 @@ public:
 
   /// mcvc: model (shifted) to view matrix, row-major.
   bool NeedsUpdate(int meshVersion, int method, const double mcvc[16], bool parallel) const;
+  /// Whether the next Update takes a new mesh (the mesh or the method changed): only then does it
+  /// use the face neighbours it is offered.
+  bool NeedsMesh(int meshVersion, int method) const
+  {
+    return !this->Sort || meshVersion != this->MeshVersion || method != this->Method;
+  }
   /// Sorts `mesh` for the view and uploads the order. `faceNeighbors` (may be empty) are
   /// offered to the sort when the mesh or the method changed (see psi::TetSort::SetMesh).
   void Update(const psi::TetMesh& mesh, int meshVersion, std::vector<int32_t> faceNeighbors,

@@ -231,7 +231,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   if (I.Order.NeedsUpdate(I.Mesh.GetVersion(), this->SortMethod, cam.MCVC, cam.Parallel))
   {
     std::vector<int32_t> neighbors;
-    if (this->SortMethod == MPVONC)
+    if (this->SortMethod == MPVONC && I.Order.NeedsMesh(I.Mesh.GetVersion(), this->SortMethod))
     {
       psi::FaceNeighborsFromArray(I.Mesh.GetMesh(),
         input->GetCellData() ? input->GetCellData()->GetArray("FaceNeighbors") : nullptr,
