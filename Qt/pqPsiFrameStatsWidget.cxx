@@ -35,17 +35,17 @@ QString count(long long n)
   return QLocale(QLocale::English).toString(n);
 }
 
-QString tooltip(const pqPsiFrameStatsWidget::FrameStats& stats)
+QString tooltip(const pqPsiFrameStatsWidget::Readout& stats)
 {
   QString text = pqPsiFrameStatsWidget::tr(
     "The last frame of 'Psi Volume' in this view: CPU time of the render call (sorting, uploads, "
     "draw submission) and of its visibility sort, tetrahedra drawn, cells not drawn (not "
     "tetrahedra, or NaN/Inf scalars) and, for MPVONC, visibility cycles broken. Updated after "
     "every render.");
-  if (stats.PreIntegrationSeconds > 0)
+  if (stats.Stats.LastPreIntegrationSeconds > 0)
   {
     text += pqPsiFrameStatsWidget::tr("\nLast full pre-integration table build: %1 ms.")
-              .arg(milliseconds(stats.PreIntegrationSeconds));
+              .arg(milliseconds(stats.Stats.LastPreIntegrationSeconds));
   }
   return text;
 }
@@ -62,7 +62,7 @@ pqPsiFrameStatsWidget::pqPsiFrameStatsWidget(vtkSMProxy* smproxy,
   this->Label->setObjectName("FrameStats");
   this->Label->setWordWrap(true);
   this->Label->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  this->Label->setToolTip(tooltip(FrameStats()));
+  this->Label->setToolTip(tooltip(Readout()));
   auto layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(this->Label);
@@ -85,7 +85,7 @@ pqPsiFrameStatsWidget::pqPsiFrameStatsWidget(vtkSMProxy* smproxy,
     }
   }
 
-  this->Label->setText(formatReadout(FrameStats()));
+  this->Label->setText(formatReadout(Readout()));
   this->scheduleRefresh();
 }
 
@@ -142,15 +142,15 @@ void pqPsiFrameStatsWidget::refresh()
   {
     return;
   }
-  const FrameStats stats = this->readStats();
+  const Readout stats = this->readStats();
   this->Label->setText(formatReadout(stats));
   this->Label->setToolTip(tooltip(stats));
 }
 
 //-----------------------------------------------------------------------------
-pqPsiFrameStatsWidget::FrameStats pqPsiFrameStatsWidget::readStats()
+pqPsiFrameStatsWidget::Readout pqPsiFrameStatsWidget::readStats()
 {
-  FrameStats stats;
+  Readout stats;
   vtkSMProxy* smproxy = this->proxy();
   vtkSMProperty* tetrahedra = smproxy ? smproxy->GetProperty(TetrahedraName) : nullptr;
   if (!tetrahedra)
@@ -170,18 +170,14 @@ pqPsiFrameStatsWidget::FrameStats pqPsiFrameStatsWidget::readStats()
   // ranks in client/server (volume representations always render on the server there).
   vtkNew<vtkPsiFrameStatsInformation> info;
   owner->GetSession()->GatherInformation(vtkPVSession::RENDER_SERVER, info, owner->GetGlobalID());
-  stats.RenderSeconds = info->GetLastRenderSeconds();
-  stats.SortSeconds = info->GetLastSortSeconds();
-  stats.PreIntegrationSeconds = info->GetLastPreIntegrationSeconds();
-  stats.Tetrahedra = info->GetNumberOfTetrahedra();
-  stats.SkippedCells = info->GetNumberOfSkippedCells();
-  stats.SortCycles = info->GetLastSortCycles();
-  stats.Drawn = stats.RenderSeconds > 0 || stats.Tetrahedra > 0 || stats.SkippedCells > 0;
+  stats.Stats = info->GetFrameStats();
+  const psi::FrameStats& s = stats.Stats;
+  stats.Drawn = s.LastRenderSeconds > 0 || s.NumberOfTetrahedra > 0 || s.NumberOfSkippedCells > 0;
   return stats;
 }
 
 //-----------------------------------------------------------------------------
-QString pqPsiFrameStatsWidget::formatReadout(const FrameStats& stats)
+QString pqPsiFrameStatsWidget::formatReadout(const Readout& stats)
 {
   if (stats.Hidden)
   {
@@ -192,11 +188,12 @@ QString pqPsiFrameStatsWidget::formatReadout(const FrameStats& stats)
     return tr("last frame: not rendered yet");
   }
   QString text = tr("last frame: %1 ms (sort %2 ms), %3 tetrahedra, %4 cells skipped")
-                   .arg(milliseconds(stats.RenderSeconds), milliseconds(stats.SortSeconds),
-                        count(stats.Tetrahedra), count(stats.SkippedCells));
-  if (stats.SortCycles > 0)
+                   .arg(milliseconds(stats.Stats.LastRenderSeconds),
+                     milliseconds(stats.Stats.LastSortSeconds),
+                     count(stats.Stats.NumberOfTetrahedra), count(stats.Stats.NumberOfSkippedCells));
+  if (stats.Stats.LastSortCycles > 0)
   {
-    text += tr(", %1 sort cycles").arg(count(stats.SortCycles));
+    text += tr(", %1 sort cycles").arg(count(stats.Stats.LastSortCycles));
   }
   return text;
 }

@@ -21,6 +21,8 @@
 #ifndef pqPsiFrameStatsWidget_h
 #define pqPsiFrameStatsWidget_h
 
+#include "PsiFrameStats.h"
+
 #include "pqPropertyWidget.h"
 
 #include <QPointer>
@@ -43,21 +45,17 @@ public:
   pqPsiFrameStatsWidget(vtkSMProxy* proxy, vtkSMPropertyGroup* group, QWidget* parent = nullptr);
   ~pqPsiFrameStatsWidget() override;
 
-  /// The values of one frame, as the mapper reports them.
-  struct FrameStats
+  /// The last frame as the mapper reports it (psi::FrameStats, gathered over the processes),
+  /// and whether there is one to show.
+  struct Readout
   {
     bool Drawn = false; // false: hidden, or not rendered yet
     bool Hidden = false;
-    double RenderSeconds = 0;
-    double SortSeconds = 0;
-    double PreIntegrationSeconds = 0;
-    long long Tetrahedra = 0;
-    long long SkippedCells = 0;
-    long long SortCycles = 0;
+    psi::FrameStats Stats;
   };
 
   /// The line shown for `stats`.
-  static QString formatReadout(const FrameStats& stats);
+  static QString formatReadout(const Readout& stats);
 
   /// The text shown now.
   QString readout() const;
@@ -83,7 +81,7 @@ private:
   Q_DISABLE_COPY(pqPsiFrameStatsWidget)
 
   void watchView(pqView* view);
-  FrameStats readStats();
+  Readout readStats();
 
   QLabel* Label;
   pqTimer* RefreshTimer;

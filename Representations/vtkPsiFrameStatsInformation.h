@@ -47,6 +47,10 @@ public:
   double GetLastRenderSeconds() const { return this->Stats.LastRenderSeconds; }
   double GetLastSortSeconds() const { return this->Stats.LastSortSeconds; }
   double GetLastPreIntegrationSeconds() const { return this->Stats.LastPreIntegrationSeconds; }
+#ifndef __VTK_WRAP__
+  /// All of them (the panel's read-out shows this).
+  const psi::FrameStats& GetFrameStats() const { return this->Stats; }
+#endif
   ///@}
 
 protected:
