@@ -1,5 +1,7 @@
 #include "vtkPsiVolumeRepresentation.h"
 
+#include "PsiIntegrationMethods.h"
+
 #include "vtkDataSet.h"
 #include "vtkVolumeRepresentationPreprocessor.h"
 #include "vtkInformation.h"
@@ -12,6 +14,22 @@
 namespace
 {
 constexpr const char* MapperName = "Psi Volume";
+
+// An integer setting outside its values (possible through the server manager, which does not
+// check enumeration domains) is clamped, with a warning that names it.
+int InRange(vtkObject* self, const char* name, int value, int lo, int hi)
+{
+  if (value >= lo && value <= hi)
+  {
+    return value;
+  }
+  const int used = value < lo ? lo : hi;
+  vtkWarningWithObjectMacro(self, "'Psi Volume' " << name << " = " << value
+                                                  << " is not one of its values (" << lo
+                                                  << " to " << hi << "): " << used
+                                                  << " is used.");
+  return used;
+}
 }
 
 vtkStandardNewMacro(vtkPsiVolumeRepresentation);
@@ -43,6 +61,7 @@ int vtkPsiVolumeRepresentation::RequestData(
 
 void vtkPsiVolumeRepresentation::SetIntegrationMethod(int method)
 {
+  method = InRange(this, "IntegrationMethod", method, 0, psi::NumberOfIntegrationMethods() - 1);
   if (method != this->PsiMapper->GetIntegrationMethod())
   {
     this->PsiMapper->SetIntegrationMethod(method);
@@ -71,6 +90,8 @@ bool vtkPsiVolumeRepresentation::GetEarlyDiscard()
 
 void vtkPsiVolumeRepresentation::SetSortMethod(int method)
 {
+  method = InRange(this, "SortMethod", method, vtkPsiVolumeMapper::CENTROID,
+    vtkPsiVolumeMapper::MPVONC);
   if (method != this->PsiMapper->GetSortMethod())
   {
     this->PsiMapper->SetSortMethod(method);
@@ -147,6 +168,7 @@ void vtkPsiVolumeRepresentation::SetIsosurfaceUseColorMap(int on)
 
 void vtkPsiVolumeRepresentation::SetIsosurfaceShading(int shading)
 {
+  shading = InRange(this, "IsosurfaceShading", shading, 0, 2);
   const bool lit = shading != 2;
   const int mode =
     shading == 1 ? vtkPsiVolumeMapper::ISO_FLAT : vtkPsiVolumeMapper::ISO_SMOOTH;
@@ -161,6 +183,8 @@ void vtkPsiVolumeRepresentation::SetIsosurfaceShading(int shading)
 
 void vtkPsiVolumeRepresentation::SetIsosurfaceMethod(int method)
 {
+  method = InRange(this, "IsosurfaceMethod", method, vtkPsiVolumeMapper::ISO_MARCHING_TETRAHEDRA,
+    vtkPsiVolumeMapper::ISO_AUTO);
   if (method != this->PsiMapper->GetIsosurfaceMethod())
   {
     this->PsiMapper->SetIsosurfaceMethod(method);
@@ -175,6 +199,8 @@ int vtkPsiVolumeRepresentation::GetLastUsedIsosurfaceMethod()
 
 void vtkPsiVolumeRepresentation::SetAdaptiveSampling(int mode)
 {
+  mode = InRange(this, "AdaptiveSampling", mode, vtkPsiVolumeMapper::ADAPTIVE_OFF,
+    vtkPsiVolumeMapper::ADAPTIVE_AUTO);
   if (mode != this->PsiMapper->GetAdaptiveSampling())
   {
     this->PsiMapper->SetAdaptiveSampling(mode);

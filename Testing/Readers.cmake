@@ -46,7 +46,7 @@ endif ()
 find_program(PVPYTHON_EXECUTABLE NAMES pvpython REQUIRED)
 # One test per case, each in its own pvpython, so that a crash or a hang names its case.
 set(psi_bad_input_cases nontet surface cellscalars nonfinite empty degenerate quadratic multiblock
-  large reader unitdistance)
+  large reader unitdistance outofrange)
 foreach (case IN LISTS psi_bad_input_cases)
   add_test(NAME PsiPython.bad_input.${case}
     COMMAND "${PVPYTHON_EXECUTABLE}" --force-offscreen-rendering

@@ -684,6 +684,36 @@ def case_unitdistance():
     t.check(diff(again, good)[1] == 0, "unit distance 0.15 again: the same image")
 
 
+def case_outofrange():
+    """Integer settings outside their values, as the server manager lets them through (it does
+    not check enumeration domains): each is clamped, with a warning naming it, and the image is
+    the clamped value's."""
+    n = 8
+    p = box_points(n)
+    tets = box_tets(n)
+    view = make_view()
+    d = show(producer(make_grid(p, tets, point_scalars=field(p))), view, "f", unit=0.15)
+    aim(view, [0, 1, 0, 1, 0, 1])
+    for name, bad, clamped in (("IntegrationMethod", 99, 6), ("IntegrationMethod", -3, 0),
+                               ("SortMethod", 7, 1), ("AdaptiveSampling", 5, 2),
+                               ("IsosurfaceMethod", -1, 0), ("IsosurfaceShading", 9, 2)):
+        d.GetProperty(name).SetElement(0, clamped)
+        d.UpdateVTKObjects()
+        ref = render_only(view, d, [d])
+        d.GetProperty(name).SetElement(0, bad)
+        m = MSG.mark()
+        d.UpdateVTKObjects()
+        img = render_only(view, d, [d])
+        warns = MSG.since(m, "WarningEvent", name)
+        for s in warns:
+            print("    message: " + short(s))
+        t.check(len(warns) >= 1 and str(bad) in warns[0],
+                "%s = %d: a warning names it (%d)" % (name, bad, len(warns)))
+        t.check(diff(img, ref)[1] == 0, "%s = %d draws as %d" % (name, bad, clamped))
+        d.GetProperty(name).SetElement(0, clamped)
+        d.UpdateVTKObjects()
+
+
 CASES = {
     "nontet": case_nontet,
     "surface": case_surface,
@@ -696,6 +726,7 @@ CASES = {
     "large": case_large,
     "reader": case_reader,
     "unitdistance": case_unitdistance,
+    "outofrange": case_outofrange,
 }
 
 if __name__ == "__main__":
