@@ -114,25 +114,37 @@ bool OFFParser::CheckCountsFitSize(uint64_t maxCount)
   return true;
 }
 
-bool OFFParser::ReadVertex(uint64_t i, double xyzs[4])
+// The four tokens of record i of a section of `declared` records: the file must not end before
+// it (a truncation) and the line must hold exactly four values (a format error).
+bool OFFParser::NextRecord(Token tok[4], uint64_t i, uint64_t declared, const char* plural,
+  const char* singular, const char* needs)
 {
-  static const char* const field[4] = { "x", "y", "z", "s" };
-  Token tok[4];
   const int n = this->NextLineTokens(tok);
   if (n < 0)
   {
     std::ostringstream msg;
-    msg << "the file ends after " << i << " of the " << this->NumberOfVertices
-        << " vertices declared by the header (truncated, or the counts are wrong)";
+    msg << "the file ends after " << i << " of the " << declared << " " << plural
+        << " declared by the header (truncated, or the counts are wrong)";
     return this->Fail(ErrorKind::Truncated, msg.str());
   }
   if (n != 4)
   {
     std::ostringstream msg;
-    msg << "line " << this->Cursor.Line << ": vertex " << i << " needs 4 values 'x y z s', found "
-        << (n > 4 ? std::string("more") : std::to_string(n))
+    msg << "line " << this->Cursor.Line << ": " << singular << " " << i << " needs " << needs
+        << ", found " << (n > 4 ? std::string("more") : std::to_string(n))
         << " (the counts may not match the file)";
     return this->Fail(ErrorKind::Format, msg.str());
+  }
+  return true;
+}
+
+bool OFFParser::ReadVertex(uint64_t i, double xyzs[4])
+{
+  static const char* const field[4] = { "x", "y", "z", "s" };
+  Token tok[4];
+  if (!this->NextRecord(tok, i, this->NumberOfVertices, "vertices", "vertex", "4 values 'x y z s'"))
+  {
+    return false;
   }
   for (int k = 0; k < 4; ++k)
   {
@@ -153,21 +165,10 @@ bool OFFParser::ReadVertex(uint64_t i, double xyzs[4])
 bool OFFParser::ReadTetrahedron(uint64_t t, uint64_t ids[4])
 {
   Token tok[4];
-  const int n = this->NextLineTokens(tok);
-  if (n < 0)
+  if (!this->NextRecord(
+        tok, t, this->NumberOfTetrahedra, "tetrahedra", "tetrahedron", "4 vertex indices"))
   {
-    std::ostringstream msg;
-    msg << "the file ends after " << t << " of the " << this->NumberOfTetrahedra
-        << " tetrahedra declared by the header (truncated, or the counts are wrong)";
-    return this->Fail(ErrorKind::Truncated, msg.str());
-  }
-  if (n != 4)
-  {
-    std::ostringstream msg;
-    msg << "line " << this->Cursor.Line << ": tetrahedron " << t
-        << " needs 4 vertex indices, found " << (n > 4 ? std::string("more") : std::to_string(n))
-        << " (the counts may not match the file)";
-    return this->Fail(ErrorKind::Format, msg.str());
+    return false;
   }
   for (int k = 0; k < 4; ++k)
   {

@@ -58,6 +58,8 @@ private:
   bool Fail(ErrorKind kind, const std::string& message);
   bool ReadCounts(int n, int first, const off::Token* tok);
   int NextLineTokens(off::Token* tok); // -1 at the end of the buffer
+  bool NextRecord(off::Token tok[4], uint64_t i, uint64_t declared, const char* plural,
+    const char* singular, const char* needs);
   std::string IndexError(uint64_t t, const off::Token& tok, off::NumberStatus st) const;
 
   off::LineCursor Cursor;
