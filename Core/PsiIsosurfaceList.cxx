@@ -1,5 +1,7 @@
 #include "PsiIsosurfaceList.h"
 
+#include "PsiTetMesh.h"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -14,7 +16,7 @@ IsosurfaceList IsosurfaceList::Normalize(const std::vector<double>& values,
   {
     const double v = values[i];
     const double o = i < opacities.size() ? opacities[i] : defaultOpacity;
-    if (std::isfinite(v) && std::abs(v) < 1e37)
+    if (FiniteScalar(v))
     {
       list.emplace_back(static_cast<float>(v),
         static_cast<float>(std::isfinite(o) ? std::min(1.0, std::max(0.0, o)) : 1.0));

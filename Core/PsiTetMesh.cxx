@@ -14,11 +14,6 @@ namespace psi
 {
 namespace
 {
-bool FiniteScalar(double s)
-{
-  return std::isfinite(s) && std::abs(s) < 1e37;
-}
-
 // The four point ids of cell c.
 void CellPoints(vtkUnstructuredGridBase* input, vtkIdType c, vtkIdList* ids, vtkIdType pts[4])
 {

@@ -10,6 +10,7 @@
 
 #include "PsiVolumeCoreModule.h"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -38,6 +39,13 @@ struct PSIVOLUMECORE_EXPORT TetMesh
   size_t NumberOfTets() const { return this->Tets.size() / 4; }
   size_t NumberOfPoints() const { return this->Points4.size() / 4; }
 };
+
+/// Whether the renderer can draw scalar s: finite and within float range. Tetrahedra touching
+/// another value are skipped; isovalues outside it are dropped.
+inline bool FiniteScalar(double s)
+{
+  return std::isfinite(s) && std::abs(s) < 1e37;
+}
 
 /// Which value of a tuple is the scalar: a component (clamped to the array's), or the magnitude
 /// of the whole tuple (Magnitude), as a color map's vector mode says (vtkScalarsToColors).

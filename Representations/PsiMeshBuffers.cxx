@@ -45,11 +45,10 @@ PsiMeshBuffers::Change PsiMeshBuffers::NeedsUpdate(
   return scalars->GetMTime() != this->ScalarsTime ? Change::Scalars : Change::None;
 }
 
-bool PsiMeshBuffers::UpdateScalars(vtkOpenGLRenderWindow* renWin,
-  vtkUnstructuredGridBase* input, vtkDataArray* scalars, psi::ScalarComponent component)
+bool PsiMeshBuffers::UpdateScalars(
+  vtkOpenGLRenderWindow* renWin, vtkDataArray* scalars, psi::ScalarComponent component)
 {
-  if (input->GetNumberOfPoints() != static_cast<vtkIdType>(this->Mesh.NumberOfPoints()) ||
-    !psi::UpdateTetMeshScalars(this->Mesh, scalars, component))
+  if (!psi::UpdateTetMeshScalars(this->Mesh, scalars, component))
   {
     return false;
   }

@@ -41,8 +41,8 @@ public:
     const std::string& arrayKey) const;
   /// Replaces the point scalars only and re-uploads the points (not the tetrahedra); false when
   /// the mesh must be gathered again instead (see psi::UpdateTetMeshScalars).
-  bool UpdateScalars(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBase* input,
-    vtkDataArray* scalars, psi::ScalarComponent component);
+  bool UpdateScalars(
+    vtkOpenGLRenderWindow* renWin, vtkDataArray* scalars, psi::ScalarComponent component);
   /// Gathers the mesh (psi::GatherTetMesh) and uploads it. Returns false, with `error` set, when
   /// the mesh does not fit the GPU's texture-buffer limit; the mesh is then empty.
   bool Update(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBase* input,

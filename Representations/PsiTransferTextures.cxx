@@ -50,7 +50,7 @@ void PsiTransferFunctionTexture::Update(vtkOpenGLRenderWindow* renWin,
     this->Texture->Create2DFromRaw(tf.Size, 1, 4, VTK_FLOAT, tf.Rgba.data());
     SetLinearClamped(this->Texture);
     this->Table = std::move(tf);
-    psi::OpacityPrefixCounts(this->Table, this->ZeroOpacity);
+    this->OpacityPrefix = psi::OpacityPrefixCounts(this->Table, this->ZeroOpacity);
     ++this->Version;
   }
   this->Time = property->GetMTime();
@@ -78,6 +78,7 @@ void PsiTransferFunctionTexture::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->Texture->ReleaseGraphicsResources(win);
   this->Table = psi::TransferFunctionTable();
+  this->OpacityPrefix.clear();
   this->Time = 0;
 }
 
@@ -88,10 +89,9 @@ PsiOpacityPrefixTexture::~PsiOpacityPrefixTexture() = default;
 void PsiOpacityPrefixTexture::Update(
   vtkOpenGLRenderWindow* renWin, const PsiTransferFunctionTexture& transfer)
 {
-  bool zero = false;
-  std::vector<float> prefix = psi::OpacityPrefixCounts(transfer.GetTable(), zero);
   this->Texture->SetContext(renWin);
-  this->Texture->Create2DFromRaw(transfer.GetTable().Size, 1, 1, VTK_FLOAT, prefix.data());
+  this->Texture->Create2DFromRaw(transfer.GetTable().Size, 1, 1, VTK_FLOAT,
+    const_cast<float*>(transfer.GetOpacityPrefix().data()));
   this->Version = transfer.GetVersion();
 }
 

@@ -18,6 +18,8 @@
 #include "vtkNew.h"
 #include "vtkType.h"
 
+#include <vector>
+
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkTextureObject;
@@ -43,10 +45,13 @@ public:
   int GetVersion() const { return this->Version; }
   /// Whether the opacity function has a zero region over the range (early discard applies).
   bool HasZeroOpacity() const { return this->ZeroOpacity; }
+  /// Prefix counts of the samples with non-zero opacity (psi::OpacityPrefixCounts).
+  const std::vector<float>& GetOpacityPrefix() const { return this->OpacityPrefix; }
 
 private:
   vtkNew<vtkTextureObject> Texture;
   psi::TransferFunctionTable Table;
+  std::vector<float> OpacityPrefix;
   vtkMTimeType Time = 0;
   double Range[2] = { 0, 0 };
   int Samples = 0;

@@ -35,23 +35,11 @@ public:
   void CopyToStream(vtkClientServerStream* stream) override;
   void CopyFromStream(const vtkClientServerStream* stream) override;
 
-  ///@{
-  /// Summed over the processes.
-  vtkIdType GetNumberOfTetrahedra() const { return this->Stats.NumberOfTetrahedra; }
-  vtkIdType GetNumberOfSkippedCells() const { return this->Stats.NumberOfSkippedCells; }
-  vtkIdType GetLastSortCycles() const { return this->Stats.LastSortCycles; }
-  ///@}
-
-  ///@{
-  /// Largest over the processes.
-  double GetLastRenderSeconds() const { return this->Stats.LastRenderSeconds; }
-  double GetLastSortSeconds() const { return this->Stats.LastSortSeconds; }
-  double GetLastPreIntegrationSeconds() const { return this->Stats.LastPreIntegrationSeconds; }
 #ifndef __VTK_WRAP__
-  /// All of them (the panel's read-out shows this).
+  /// The frame gathered over the processes: counts summed, times the largest (the panel's
+  /// read-out shows it).
   const psi::FrameStats& GetFrameStats() const { return this->Stats; }
 #endif
-  ///@}
 
 protected:
   vtkPsiFrameStatsInformation();

@@ -1,7 +1,6 @@
 #include "vtkPsiVolumeMapper.h"
 
 #include "PsiIntegrationMethods.h"
-#include "PsiIntegratorSources.h"
 #include "PsiMeshBuffers.h"
 #include "PsiProjectionClasses.h"
 #include "PsiRenderTarget.h"
@@ -223,7 +222,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     I.Release(I.Context);
   }
   I.Context = renWin;
-  if (!this->UpdateMesh(ren, vol, input) || I.Mesh.GetMesh().NumberOfTets() == 0)
+  if (!this->UpdateMesh(renWin, vol, input) || I.Mesh.GetMesh().NumberOfTets() == 0)
   {
     return;
   }
@@ -242,13 +241,13 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     this->Stats.LastSortSeconds = I.Order.GetLastSortSeconds();
     this->Stats.LastSortCycles = static_cast<vtkIdType>(I.Order.GetLastCycles());
   }
-  this->UpdateTables(ren, vol);
+  this->UpdateTables(renWin, vol);
   const psi::ShaderFeatures features = this->ChooseFeatures(ren, vol, cam);
   if (!I.Target.CaptureDepthTexture(ren, renWin, features.NearClip || features.OpaqueClip))
   {
     return;
   }
-  vtkShaderProgram* program = this->ReadyProgram(ren, features);
+  vtkShaderProgram* program = this->ReadyProgram(renWin, features);
   if (!program)
   {
     return;
@@ -265,7 +264,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 
 // Gathers and uploads the mesh when the data or the array changed. False: nothing to draw.
 bool vtkPsiVolumeMapper::UpdateMesh(
-  vtkRenderer* ren, vtkVolume* vol, vtkUnstructuredGridBase* input)
+  vtkOpenGLRenderWindow* renWin, vtkVolume* vol, vtkUnstructuredGridBase* input)
 {
   Internals& I = *this->Impl;
   int cellFlag = 0;
@@ -290,14 +289,12 @@ bool vtkPsiVolumeMapper::UpdateMesh(
   const PsiMeshBuffers::Change change = I.Mesh.NeedsUpdate(input, scalars, arrayKey);
   if (change == PsiMeshBuffers::Change::None ||
     (change == PsiMeshBuffers::Change::Scalars &&
-      I.Mesh.UpdateScalars(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()), input,
-        scalars, component)))
+      I.Mesh.UpdateScalars(renWin, scalars, component)))
   {
     return true;
   }
   std::string error;
-  if (!I.Mesh.Update(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()), input, scalars,
-        cellFlag == 1, component, arrayKey, error))
+  if (!I.Mesh.Update(renWin, input, scalars, cellFlag == 1, component, arrayKey, error))
   {
     vtkErrorMacro("Psi Volume: " << error);
   }
@@ -313,10 +310,9 @@ bool vtkPsiVolumeMapper::UpdateMesh(
 }
 
 // The transfer-function table, and only the other tables the frame's features need.
-void vtkPsiVolumeMapper::UpdateTables(vtkRenderer* ren, vtkVolume* vol)
+void vtkPsiVolumeMapper::UpdateTables(vtkOpenGLRenderWindow* renWin, vtkVolume* vol)
 {
   Internals& I = *this->Impl;
-  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   vtkVolumeProperty* property = vol->GetProperty();
   const psi::TetMesh& mesh = I.Mesh.GetMesh();
   if (I.Tables.Transfer.NeedsUpdate(property, mesh.ScalarRange, this->TransferFunctionSamples))
@@ -373,8 +369,9 @@ psi::ShaderFeatures vtkPsiVolumeMapper::ChooseFeatures(
     GLint maxVertices = 0, maxComponents = 0;
     glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &maxVertices);
     glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &maxComponents);
-    f.IsoTriangles = true;
-    f.IsoTriangles = psi::FitsGeometryOutputLimits(f, maxVertices, maxComponents);
+    psi::ShaderFeatures withTriangles = f; // the budget of the marching-tetrahedra program
+    withTriangles.IsoTriangles = true;
+    f.IsoTriangles = psi::FitsGeometryOutputLimits(withTriangles, maxVertices, maxComponents);
   }
   // Early discard only when the opacity function has zero regions, and not with per-fragment
   // isosurfaces (visible where the volume is transparent; marching tetrahedra still emit the
@@ -395,11 +392,10 @@ psi::ShaderFeatures vtkPsiVolumeMapper::ChooseFeatures(
 
 // The program of these features, composed and compiled once (VTK's shader cache keeps it).
 vtkShaderProgram* vtkPsiVolumeMapper::ReadyProgram(
-  vtkRenderer* ren, const psi::ShaderFeatures& features)
+  vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& features)
 {
   Internals& I = *this->Impl;
-  vtkOpenGLShaderCache* cache =
-    vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow())->GetShaderCache();
+  vtkOpenGLShaderCache* cache = renWin->GetShaderCache();
   const std::string key = features.Key();
   this->LastFeatureDefines = features.Defines();
   if (I.Program && I.ProgramKey == key)
@@ -408,11 +404,11 @@ vtkShaderProgram* vtkPsiVolumeMapper::ReadyProgram(
     return I.Program;
   }
   ++this->NumberOfProgramBuilds;
-  const psi::IntegrationMethodInfo& method = MethodInfo(features.Method);
-  const char* integrator = psi::IntegratorGlslSource(method.GlslName);
+  const char* integrator = psi::IntegratorSource(features.Method);
   if (!integrator)
   {
-    vtkErrorMacro("Psi Volume: no GLSL integrator " << method.GlslName << ".glsl embedded.");
+    vtkErrorMacro("Psi Volume: no GLSL integrator " << MethodInfo(features.Method).GlslName
+                                                    << ".glsl embedded.");
     return nullptr;
   }
   const psi::ShaderSources src = psi::ComposeShaders(features, integrator);

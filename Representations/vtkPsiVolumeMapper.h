@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkShaderProgram;
 class vtkVolume;
@@ -238,11 +239,13 @@ private:
 
   void SetIsosurfaceVector(std::vector<double>& member, std::vector<double> v);
   void UpdateIsosurfaceList();
-  bool UpdateMesh(vtkRenderer* ren, vtkVolume* vol, vtkUnstructuredGridBase* input);
-  void UpdateTables(vtkRenderer* ren, vtkVolume* vol);
+  bool UpdateMesh(
+    vtkOpenGLRenderWindow* renWin, vtkVolume* vol, vtkUnstructuredGridBase* input);
+  void UpdateTables(vtkOpenGLRenderWindow* renWin, vtkVolume* vol);
   psi::ShaderFeatures ChooseFeatures(
     vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam);
-  vtkShaderProgram* ReadyProgram(vtkRenderer* ren, const psi::ShaderFeatures& features);
+  vtkShaderProgram* ReadyProgram(
+    vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& features);
   void SetShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkVolume* vol,
     const PsiFrameCamera& cam, const psi::ShaderFeatures& features);
   void DeactivateTables(const psi::ShaderFeatures& features);
