@@ -51,11 +51,10 @@ def functions(path):
     for k, line in enumerate(lines):
         for ch in line:
             if ch == "{":
-                if depth == 0 or start is None and depth >= 0:
-                    prev = lines[k - 1].strip() if line.strip() == "{" and k > 0 else line
-                    if start is None and (SIGNATURE_END.search(prev.split("{")[0].strip())
-                                          or SIGNATURE_END.search(line.split("{")[0].strip())):
-                        start = (k, depth)
+                # a body opens after a signature line, or on a line of its own below one
+                head = lines[k - 1] if line.strip() == "{" and k > 0 else line
+                if start is None and SIGNATURE_END.search(head.split("{")[0].strip()):
+                    start = (k, depth)
                 depth += 1
             elif ch == "}":
                 depth -= 1
