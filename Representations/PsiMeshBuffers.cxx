@@ -135,8 +135,11 @@ void PsiMeshBuffers::Activate(vtkShaderProgram* program, bool gradients)
   glBindVertexArray(this->VAO);
   glBindBuffer(GL_ARRAY_BUFFER, this->TetBuffer);
   const GLint loc = glGetAttribLocation(program->GetHandle(), "tetPointIds");
-  glEnableVertexAttribArray(loc);
-  glVertexAttribIPointer(loc, 4, GL_UNSIGNED_INT, 0, nullptr);
+  if (loc >= 0) // the compute projector reads the ids from the buffer instead
+  {
+    glEnableVertexAttribArray(loc);
+    glVertexAttribIPointer(loc, 4, GL_UNSIGNED_INT, 0, nullptr);
+  }
 }
 
 void PsiMeshBuffers::Deactivate()

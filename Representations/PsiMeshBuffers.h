@@ -56,6 +56,8 @@ public:
   void Deactivate();
   void ReleaseGraphicsResources(vtkWindow* win);
 
+  /// The buffer of four uint32 point ids per tetrahedron (the compute projector reads it).
+  unsigned int GetTetBuffer() const { return this->TetBuffer; }
   const psi::TetMesh& GetMesh() const { return this->Mesh; }
   /// Bumped when points or cells change (not for new scalars): the visibility order compares it.
   int GetVersion() const { return this->Version; }

@@ -208,42 +208,6 @@ int Components(const std::string& type)
   return it->second;
 }
 
-// Sum of the components of the `out` variables declared in `src` (one declaration a line:
-// [flat|smooth|noperspective|centroid]* out <type> <name>[<n>];).
-int OutputComponents(const std::string& src)
-{
-  int total = 0;
-  for (const std::string& raw : Lines(src))
-  {
-    std::string line = raw.substr(0, raw.find("//"));
-    std::istringstream words(line);
-    std::vector<std::string> w;
-    for (std::string word; words >> word;)
-    {
-      w.push_back(word);
-    }
-    size_t i = 0;
-    while (i < w.size() &&
-      (w[i] == "flat" || w[i] == "smooth" || w[i] == "noperspective" || w[i] == "centroid"))
-    {
-      ++i;
-    }
-    if (i + 2 >= w.size() || w[i] != "out")
-    {
-      continue; // not "out <type> <name>"
-    }
-    std::string name = w[i + 2];
-    int count = 1;
-    const size_t bracket = name.find('[');
-    if (bracket != std::string::npos)
-    {
-      count = std::stoi(name.substr(bracket + 1));
-    }
-    total += count * Components(w[i + 1]);
-  }
-  return total;
-}
-
 bool Uses(const char* source, const char* name)
 {
   return std::string(source).find(name) != std::string::npos;
@@ -289,6 +253,37 @@ std::string ComposeGeometry(const ShaderFeatures& f)
   return gs;
 }
 } // namespace
+
+std::vector<ShaderVariable> DeclaredOutputs(const std::string& src)
+{
+  std::vector<ShaderVariable> outputs;
+  for (const std::string& raw : Lines(src))
+  {
+    std::istringstream words(raw.substr(0, raw.find("//")));
+    std::vector<std::string> w;
+    for (std::string word; words >> word;)
+    {
+      w.push_back(word);
+    }
+    ShaderVariable v;
+    size_t i = 0;
+    while (i < w.size() &&
+      (w[i] == "flat" || w[i] == "smooth" || w[i] == "noperspective" || w[i] == "centroid"))
+    {
+      v.Qualifiers += w[i++] + " ";
+    }
+    if (i + 2 >= w.size() || w[i] != "out")
+    {
+      continue; // not "out <type> <name>"
+    }
+    v.Type = w[i + 1];
+    v.Name = w[i + 2].substr(0, w[i + 2].find_first_of("[;"));
+    const size_t bracket = w[i + 2].find('[');
+    v.Count = bracket == std::string::npos ? 1 : std::stoi(w[i + 2].substr(bracket + 1));
+    outputs.push_back(v);
+  }
+  return outputs;
+}
 
 bool ShaderFeatures::operator==(const ShaderFeatures& o) const
 {
@@ -351,9 +346,25 @@ int GeometryOutputVertices(const ShaderFeatures& f)
   return projection;
 }
 
+int ProjectedTrianglesMax(const ShaderFeatures& f)
+{
+  const int projection = 4; // class 2: four triangles (Shirley & Tuchman's largest split)
+  const int surface = 2;    // a marching-tetrahedra quad
+  if (f.IsoCount > 0 && f.IsoTriangles)
+  {
+    return projection * (f.IsoCount + 1) + surface * f.IsoCount;
+  }
+  return projection;
+}
+
 int GeometryOutputComponentsPerVertex(const ShaderFeatures& f)
 {
-  return 4 + OutputComponents(ComposeGeometry(f)); // gl_Position + the declared outputs
+  int total = 4; // gl_Position
+  for (const ShaderVariable& v : DeclaredOutputs(ComposeGeometry(f)))
+  {
+    total += v.Count * Components(v.Type);
+  }
+  return total;
 }
 
 bool FitsGeometryOutputLimits(const ShaderFeatures& f, int maxVertices, int maxTotalComponents)

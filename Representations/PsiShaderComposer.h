@@ -16,6 +16,7 @@
 #include "PsiVolumeRepresentationsModule.h"
 
 #include <string>
+#include <vector>
 
 namespace psi
 {
@@ -66,6 +67,10 @@ struct PSIVOLUMEREPRESENTATIONS_EXPORT ShaderFeatures
 /// a strip of 5 and one of 3; the near-plane screen box has 4), and with marching tetrahedra
 /// that once per volume piece (IsoCount + 1) plus a 4-vertex strip per surface.
 PSIVOLUMEREPRESENTATIONS_EXPORT int GeometryOutputVertices(const ShaderFeatures& f);
+/// Triangles one tetrahedron emits at most: 4 for its projection (class 2), and with marching
+/// tetrahedra 4 per volume piece plus 2 per surface. The compute-shader projector sizes its
+/// slots with it.
+PSIVOLUMEREPRESENTATIONS_EXPORT int ProjectedTrianglesMax(const ShaderFeatures& f);
 /// Output components per geometry-shader vertex: gl_Position plus every `out` variable declared
 /// in the composed geometry shader (counted from its source, so it follows the GLSL).
 PSIVOLUMEREPRESENTATIONS_EXPORT int GeometryOutputComponentsPerVertex(const ShaderFeatures& f);
@@ -78,6 +83,17 @@ PSIVOLUMEREPRESENTATIONS_EXPORT bool FitsGeometryOutputLimits(
 /// vec4 integrateSegment(float sf, float sb, float D); methods out of range give partial
 /// pre-integration, the mapper's default.
 PSIVOLUMEREPRESENTATIONS_EXPORT const char* IntegratorSource(int method);
+
+/// A stage output: `[qualifiers] out <Type> <Name>[<Count>];`.
+struct ShaderVariable
+{
+  std::string Qualifiers; ///< "flat ", "smooth ", "noperspective ", ... or empty
+  std::string Type;
+  std::string Name;
+  int Count = 1;
+};
+/// The `out` variables declared in `src`, one declaration a line, in order.
+PSIVOLUMEREPRESENTATIONS_EXPORT std::vector<ShaderVariable> DeclaredOutputs(const std::string& src);
 
 struct ShaderSources
 {

@@ -41,6 +41,9 @@ public:
   void Draw() const;
   void ReleaseGraphicsResources(vtkWindow* win);
 
+  /// The order on the GPU: a buffer of uint32 tetrahedron ids, and their number.
+  unsigned int GetIndexBuffer() const { return this->IndexBuffer; }
+  size_t GetSize() const { return this->Order.size(); }
   size_t GetLastCycles() const { return this->LastCycles; }
   double GetLastSortSeconds() const { return this->LastSortSeconds; }
 

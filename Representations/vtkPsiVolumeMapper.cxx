@@ -1,5 +1,6 @@
 #include "vtkPsiVolumeMapper.h"
 
+#include "PsiComputeProjector.h"
 #include "PsiIntegrationMethods.h"
 #include "PsiMeshBuffers.h"
 #include "PsiProjectionClasses.h"
@@ -25,6 +26,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -49,6 +51,7 @@ struct vtkPsiVolumeMapper::Internals
   PsiVisibilityOrder Order;
   PsiTransferTables Tables;
   PsiRenderTarget Target;
+  PsiComputeProjector Projector;
 
   // Transfer-function nodes for adaptive sampling, for the property and range they came from.
   std::vector<float> Kinks;
@@ -69,6 +72,7 @@ struct vtkPsiVolumeMapper::Internals
     }
     this->Tables.ReleaseGraphicsResources(win);
     this->Target.ReleaseGraphicsResources(win);
+    this->Projector.ReleaseGraphicsResources(win);
     this->Program = nullptr;
     this->ProgramKey.clear();
     this->Context = nullptr;
@@ -247,19 +251,43 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
-  vtkShaderProgram* program = this->ReadyProgram(renWin, features);
+  this->DrawVolume(renWin, ren, vol, cam, features);
+  this->Stats.LastRenderSeconds = SecondsSince(t0);
+}
+
+// Projects and draws the volume with the chosen projector: the geometry-shader program, or the
+// compute projector's projection pass and draw program.
+void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren,
+  vtkVolume* vol, const PsiFrameCamera& cam, const psi::ShaderFeatures& features)
+{
+  Internals& I = *this->Impl;
+  const bool gradients = features.IsoCount > 0 && features.IsoSmooth;
+  const bool compute = this->UseComputeProjector(renWin);
+  this->LastUsedProjector = compute ? PROJECTOR_COMPUTE_SHADER : PROJECTOR_GEOMETRY_SHADER;
+  vtkShaderProgram* program = compute ? this->ReadyComputeProjector(renWin, features)
+                                      : this->ReadyProgram(renWin, features);
   if (!program)
   {
     return;
   }
   this->SetShaderParameters(program, ren, vol, cam, features);
-  I.Target.DrawAndComposite(renWin, [&]() {
-    I.Mesh.Activate(program, features.IsoCount > 0 && features.IsoSmooth);
-    I.Order.Draw();
-    I.Mesh.Deactivate();
-  });
+  I.Mesh.Activate(program, gradients);
+  vtkShaderProgram* draw = compute ? I.Projector.ReadyDrawProgram(renWin) : program;
+  if (draw && compute)
+  {
+    this->SetShaderParameters(draw, ren, vol, cam, features);
+    I.Mesh.Activate(draw, gradients); // the fragment shader reads points when clipping
+  }
+  if (draw)
+  {
+    I.Target.DrawAndComposite(renWin, [&]() {
+      compute ? I.Projector.Draw(renWin, I.Order.GetIndexBuffer(), I.Order.GetSize(),
+                  I.Mesh.GetTetBuffer())
+              : I.Order.Draw();
+    });
+  }
+  I.Mesh.Deactivate();
   this->DeactivateTables(features);
-  this->Stats.LastRenderSeconds = SecondsSince(t0);
 }
 
 // Gathers and uploads the mesh when the data or the array changed. False: nothing to draw.
@@ -420,6 +448,41 @@ vtkShaderProgram* vtkPsiVolumeMapper::ReadyProgram(
     vtkErrorMacro("Psi Volume: the shader program failed to compile (see above).");
   }
   return I.Program;
+}
+
+// The projector of this frame: the one asked for, Auto resolved (see Projectors).
+bool vtkPsiVolumeMapper::UseComputeProjector(vtkOpenGLRenderWindow* renWin)
+{
+  int projector = this->Projector;
+  const char* site = std::getenv("PSI_PROJECTOR");
+  if (projector == PROJECTOR_AUTO)
+  {
+    projector = site && std::string(site) == "compute" ? PROJECTOR_COMPUTE_SHADER
+      : site && std::string(site) == "geometry"        ? PROJECTOR_GEOMETRY_SHADER
+                                                       : PsiComputeProjector::Preferred(renWin);
+  }
+  if (projector == PROJECTOR_COMPUTE_SHADER && !PsiComputeProjector::IsSupported(renWin))
+  {
+    vtkWarningMacro("Psi Volume: the compute projector needs OpenGL 4.3; using the geometry "
+                    "shader.");
+    projector = PROJECTOR_GEOMETRY_SHADER;
+  }
+  return projector == PROJECTOR_COMPUTE_SHADER;
+}
+
+// The compute projector's projection program for these features (built once per feature set).
+vtkShaderProgram* vtkPsiVolumeMapper::ReadyComputeProjector(
+  vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& features)
+{
+  this->LastFeatureDefines = features.Defines();
+  std::string error;
+  vtkShaderProgram* program = this->Impl->Projector.ReadyComputeProgram(
+    renWin, features, psi::IntegratorSource(features.Method), error);
+  if (!program)
+  {
+    vtkErrorMacro("Psi Volume: the compute projector failed to build: " << error);
+  }
+  return program;
 }
 
 void vtkPsiVolumeMapper::SetShaderParameters(vtkShaderProgram* program, vtkRenderer* ren,

@@ -86,6 +86,26 @@ public:
   /// Whether the last frame used early discard.
   vtkGetMacro(LastUsedEarlyDiscard, bool);
 
+  /// Which stage projects the tetrahedra (both run the same classification and emission code,
+  /// Shaders/PsiVolumeGS.glsl with its features):
+  ///  - PROJECTOR_GEOMETRY_SHADER: a geometry shader per tetrahedron (Maximo et al. 2010 §3.2);
+  ///  - PROJECTOR_COMPUTE_SHADER: a compute pass writes each chunk's triangles in visibility
+  ///    order, drawn by a pass-through vertex shader (needs OpenGL 4.3; else the geometry
+  ///    shader is used, with a warning). Compute shaders run on all of a CPU driver's threads.
+  ///  - PROJECTOR_AUTO (default): the environment's PSI_PROJECTOR ("geometry" or "compute", a
+  ///    site's choice) when set, else the projector measured faster on the driver
+  ///    (DefaultProjector).
+  enum Projectors
+  {
+    PROJECTOR_GEOMETRY_SHADER = 0,
+    PROJECTOR_COMPUTE_SHADER = 1,
+    PROJECTOR_AUTO = 2
+  };
+  vtkSetClampMacro(Projector, int, PROJECTOR_GEOMETRY_SHADER, PROJECTOR_AUTO);
+  vtkGetMacro(Projector, int);
+  /// The projector the last frame used.
+  vtkGetMacro(LastUsedProjector, int);
+
   /// Number of samples of the transfer function table (default 1024).
   vtkSetClampMacro(TransferFunctionSamples, int, 2, 1 << 16);
   vtkGetMacro(TransferFunctionSamples, int);
@@ -211,6 +231,8 @@ protected:
   int IntegrationMethod = 1; // psi::Method::PartialPreIntegration, the XML default
   int TransferFunctionSamples = 1024;
   int SortMethod = MPVONC;
+  int Projector = PROJECTOR_AUTO;
+  int LastUsedProjector = PROJECTOR_GEOMETRY_SHADER;
   bool ExactPerspectiveSegments = true;
   bool EarlyDiscard = true;
   bool LastUsedEarlyDiscard = false;
@@ -246,6 +268,11 @@ private:
     vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam);
   vtkShaderProgram* ReadyProgram(
     vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& features);
+  vtkShaderProgram* ReadyComputeProjector(
+    vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& features);
+  bool UseComputeProjector(vtkOpenGLRenderWindow* renWin);
+  void DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren, vtkVolume* vol,
+    const PsiFrameCamera& cam, const psi::ShaderFeatures& features);
   void SetShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkVolume* vol,
     const PsiFrameCamera& cam, const psi::ShaderFeatures& features);
   void DeactivateTables(const psi::ShaderFeatures& features);

@@ -104,6 +104,22 @@ int vtkPsiVolumeRepresentation::GetSortMethod()
   return this->PsiMapper->GetSortMethod();
 }
 
+void vtkPsiVolumeRepresentation::SetProjector(int projector)
+{
+  projector = InRange(this, "Projector", projector, vtkPsiVolumeMapper::PROJECTOR_GEOMETRY_SHADER,
+    vtkPsiVolumeMapper::PROJECTOR_AUTO);
+  if (projector != this->PsiMapper->GetProjector())
+  {
+    this->PsiMapper->SetProjector(projector);
+    this->Modified();
+  }
+}
+
+int vtkPsiVolumeRepresentation::GetProjector()
+{
+  return this->PsiMapper->GetProjector();
+}
+
 void vtkPsiVolumeRepresentation::SetNumberOfIsosurfaces(int n)
 {
   if (n != this->PsiMapper->GetNumberOfIsosurfaces())

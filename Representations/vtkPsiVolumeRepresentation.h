@@ -48,6 +48,12 @@ public:
   ///@}
 
   ///@{
+  /// See vtkPsiVolumeMapper::Projectors.
+  void SetProjector(int projector);
+  int GetProjector();
+  ///@}
+
+  ///@{
   /// Isosurfaces and adaptive sampling: see vtkPsiVolumeMapper.
   void SetNumberOfIsosurfaces(int n);
   void SetIsosurfaceValue(int i, double value);

@@ -5,6 +5,8 @@
 // left, the geometry-shader budget matches max_vertices and the outputs of the composed source,
 // and a representative subset compiles and links with the real driver. Needs an X server.
 // Usage: TestShaderComposition [output-dir]   (writes the compiled subset's composed sources)
+#include "PsiComputeProjector.h"
+#include "PsiComputeProjectorComposer.h"
 #include "PsiShaderComposer.h"
 #include "PsiTestCheck.h"
 
@@ -250,7 +252,8 @@ int main(int argc, char* argv[])
   rw->Render();
   vtkOpenGLRenderWindow* win = vtkOpenGLRenderWindow::SafeDownCast(rw);
   PSI_CHECK(win != nullptr, "an OpenGL render window");
-  int compiled = 0;
+  int compiled = 0, computeBuilt = 0;
+  PsiComputeProjector projector;
   for (const psi::ShaderFeatures& f : compile)
   {
     if (!win)
@@ -269,11 +272,26 @@ int main(int argc, char* argv[])
     PSI_CHECK(prog != nullptr && prog->GetCompiled(), "does not compile or link:\n%s",
       Describe(f).c_str());
     compiled += prog != nullptr ? 1 : 0;
+    // The compute-shader projector of the same features: its projection pass and draw program.
+    if (!outDir.empty())
+    {
+      const psi::ComputeProjectorSources c = psi::ComposeComputeProjector(f);
+      std::ofstream(outDir + "/projector" + std::to_string(compiled - 1) + ".glsl")
+        << "// " << Describe(f) << "\n// ---- compute\n" << c.Compute << "// ---- vertex\n"
+        << c.Vertex;
+    }
+    std::string error;
+    const bool project =
+      projector.ReadyComputeProgram(win, f, psi::IntegratorSource(f.Method), error) != nullptr;
+    PSI_CHECK(project && projector.ReadyDrawProgram(win) != nullptr,
+      "the compute projector does not build: %s\n%s", error.c_str(), Describe(f).c_str());
+    computeBuilt += project ? 1 : 0;
   }
+  projector.ReleaseGraphicsResources(win);
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("%d of %zu programs compiled and linked (%.1f s)\n", compiled, compile.size(),
-    seconds);
+  std::printf("%d of %zu programs compiled and linked, %d compute projectors (%.1f s)\n",
+    compiled, compile.size(), computeBuilt, seconds);
   std::printf("%s\n",
     psitest::Failures() ? "TestShaderComposition FAILED" : "TestShaderComposition passed");
   return psitest::Failures() ? 1 : 0;

@@ -1,0 +1,228 @@
+#include "PsiComputeProjector.h"
+
+#include "PsiComputeProjectorComposer.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureUnitManager.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace
+{
+// A vtkShaderProgram holding a compute shader (VTK 9.2's programs have vertex, fragment and
+// geometry stages only), so that the mapper sets its uniforms through the same calls.
+class PsiComputeProgram : public vtkShaderProgram
+{
+public:
+  static PsiComputeProgram* New();
+  vtkTypeMacro(PsiComputeProgram, vtkShaderProgram);
+
+  bool Build(const std::string& source, std::string& error)
+  {
+    const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+    const char* text = source.c_str();
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint ok = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok)
+    {
+      error = "compute shader: " + Log(shader, false);
+      glDeleteShader(shader);
+      return false;
+    }
+    const GLuint program = glCreateProgram();
+    glAttachShader(program, shader);
+    glLinkProgram(program);
+    glDeleteShader(shader); // freed with the program
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok)
+    {
+      error = "compute program: " + Log(program, true);
+      glDeleteProgram(program);
+      return false;
+    }
+    this->Handle = static_cast<int>(program);
+    this->Linked = true;
+    return true;
+  }
+
+private:
+  static std::string Log(GLuint object, bool program)
+  {
+    GLint n = 0;
+    program ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &n)
+            : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &n);
+    std::vector<char> log(static_cast<size_t>(std::max(n, 1)), '\0');
+    program ? glGetProgramInfoLog(object, n, nullptr, log.data())
+            : glGetShaderInfoLog(object, n, nullptr, log.data());
+    return log.data();
+  }
+};
+vtkStandardNewMacro(PsiComputeProgram);
+} // namespace
+
+PsiComputeProjector::PsiComputeProjector() = default;
+PsiComputeProjector::~PsiComputeProjector() = default;
+
+bool PsiComputeProjector::IsSupported(vtkOpenGLRenderWindow* renWin)
+{
+  int major = 0, minor = 0;
+  renWin->GetOpenGLVersion(major, minor);
+  return major > 4 || (major == 4 && minor >= 3);
+}
+
+bool PsiComputeProjector::Preferred(vtkOpenGLRenderWindow* renWin)
+{
+  return false && IsSupported(renWin); // TODO: measured choice
+}
+
+vtkShaderProgram* PsiComputeProjector::ReadyComputeProgram(vtkOpenGLRenderWindow* renWin,
+  const psi::ShaderFeatures& f, const char* integrator, std::string& error)
+{
+  (void)renWin;
+  const std::string key = f.Key();
+  if (!this->Compute || key != this->Key)
+  {
+    const psi::ComputeProjectorSources src = psi::ComposeComputeProjector(f, integrator);
+    vtkNew<PsiComputeProgram> program;
+    if (!program->Build(src.Compute, error))
+    {
+      this->Compute = nullptr;
+      this->Key.clear();
+      return nullptr;
+    }
+    this->Compute = program.Get();
+    this->DrawVertex = src.Vertex;
+    this->DrawFragment = src.Fragment;
+    this->SlotVertices = src.SlotVertices;
+    this->SlotTriangles = src.SlotTriangles;
+    this->Vec4sPerVertex = src.Vec4sPerVertex;
+    this->DrawProgram = nullptr;
+    this->Key = key;
+  }
+  glUseProgram(static_cast<GLuint>(this->Compute->GetHandle()));
+  return this->Compute;
+}
+
+vtkShaderProgram* PsiComputeProjector::ReadyDrawProgram(vtkOpenGLRenderWindow* renWin)
+{
+  this->DrawProgram = renWin->GetShaderCache()->ReadyShaderProgram(
+    this->DrawVertex.c_str(), this->DrawFragment.c_str(), "");
+  return this->DrawProgram;
+}
+
+void PsiComputeProjector::ReserveBuffers(vtkOpenGLRenderWindow* renWin, size_t tetsPerPass)
+{
+  const size_t vec4s = tetsPerPass * this->SlotVertices * this->Vec4sPerVertex;
+  const size_t indices = tetsPerPass * this->SlotTriangles * 3;
+  if (vec4s == this->ReservedVec4s && indices == this->ReservedIndices)
+  {
+    return; // the slots of this feature set fit as they are
+  }
+  if (!this->Vertices)
+  {
+    glGenBuffers(1, &this->Vertices);
+    glGenTextures(1, &this->VertexTexture);
+  }
+  glBindBuffer(GL_TEXTURE_BUFFER, this->Vertices);
+  glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(vec4s * 4 * sizeof(float)), nullptr,
+    GL_DYNAMIC_COPY);
+  glBindBuffer(GL_TEXTURE_BUFFER, 0);
+  (void)renWin;
+  if (!this->Indices)
+  {
+    glGenBuffers(1, &this->Indices);
+    glGenVertexArrays(1, &this->VAO);
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Indices);
+  glBufferData(GL_SHADER_STORAGE_BUFFER,
+    static_cast<GLsizeiptr>(indices * sizeof(GLuint)), nullptr, GL_DYNAMIC_COPY);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  this->ReservedVec4s = vec4s;
+  this->ReservedIndices = indices;
+}
+
+void PsiComputeProjector::Draw(vtkOpenGLRenderWindow* renWin, unsigned int orderBuffer,
+  size_t count, unsigned int tetBuffer)
+{
+  const size_t bytesPerTet = size_t(this->SlotVertices) * this->Vec4sPerVertex * 16 +
+    size_t(this->SlotTriangles) * 3 * sizeof(GLuint);
+  const size_t perPass =
+    std::min<size_t>({ size_t(1) << 16, std::max<size_t>(64, BufferBudget / bytesPerTet),
+      std::max<size_t>(count, 1) });
+  this->ReserveBuffers(renWin, (perPass + 63) / 64 * 64);
+  const GLuint compute = static_cast<GLuint>(this->Compute->GetHandle());
+  const GLuint draw = static_cast<GLuint>(this->DrawProgram->GetHandle());
+  // The vertices reach the draw program as a buffer texture, on a unit VTK's manager lends.
+  vtkTextureUnitManager* units = renWin->GetTextureUnitManager();
+  const int unit = units->Allocate();
+  renWin->GetState()->vtkglActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_BUFFER, this->VertexTexture);
+  glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, this->Vertices);
+  this->DrawProgram->SetUniformi("projected", unit);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, orderBuffer);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, tetBuffer);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, this->Vertices);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, this->Indices);
+  glBindVertexArray(this->VAO);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->Indices);
+  glEnable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+  const GLint firstLoc = glGetUniformLocation(compute, "firstTet");
+  const GLint countLoc = glGetUniformLocation(compute, "tetCount");
+  for (size_t first = 0; first < count; first += perPass)
+  {
+    const size_t n = std::min(perPass, count - first);
+    glUseProgram(compute);
+    glUniform1ui(firstLoc, static_cast<GLuint>(first));
+    glUniform1ui(countLoc, static_cast<GLuint>(n));
+    glDispatchCompute(static_cast<GLuint>((n + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    glUseProgram(draw);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(n * this->SlotTriangles * 3),
+      GL_UNSIGNED_INT, nullptr);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); // the next pass rewrites the buffers
+  }
+  glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  glBindVertexArray(0);
+  for (GLuint b = 0; b < 4; ++b)
+  {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, 0);
+  }
+  renWin->GetState()->vtkglActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_BUFFER, 0);
+  units->Free(unit);
+  renWin->GetShaderCache()->ReleaseCurrentShader();
+  glUseProgram(0);
+}
+
+void PsiComputeProjector::ReleaseGraphicsResources(vtkWindow* win)
+{
+  if (this->Compute)
+  {
+    this->Compute->ReleaseGraphicsResources(win);
+    this->Compute = nullptr;
+  }
+  this->Key.clear();
+  this->DrawProgram = nullptr;
+  (void)win;
+  if (this->Indices)
+  {
+    glDeleteBuffers(1, &this->Indices);
+    glDeleteVertexArrays(1, &this->VAO);
+  }
+  if (this->Vertices)
+  {
+    glDeleteBuffers(1, &this->Vertices);
+    glDeleteTextures(1, &this->VertexTexture);
+  }
+  this->Indices = this->VAO = this->Vertices = this->VertexTexture = 0;
+  this->ReservedVec4s = this->ReservedIndices = 0;
+}

@@ -1,0 +1,67 @@
+// PsiComputeProjector: the compute-shader projector. A compute pass classifies and projects a
+// chunk of the visibility order (Shaders/PsiProjectCS.glsl, the geometry shader's own code) into
+// a vertex buffer and an index buffer, which the draw program (a pass-through vertex shader and
+// the usual fragment shader) then draws in order; chunk after chunk, the buffers are reused.
+// Programs come from psi::ComposeComputeProjector, once per feature set.
+#ifndef PsiComputeProjector_h
+#define PsiComputeProjector_h
+
+#include "PsiVolumeRepresentationsModule.h"
+#include "vtkSmartPointer.h"
+
+#include <cstddef>
+#include <string>
+
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkWindow;
+namespace psi
+{
+struct ShaderFeatures;
+}
+
+class PSIVOLUMEREPRESENTATIONS_EXPORT PsiComputeProjector
+{
+public:
+  PsiComputeProjector();
+  ~PsiComputeProjector();
+
+  /// Whether the context can run the projector (OpenGL 4.3: compute shaders, storage buffers).
+  static bool IsSupported(vtkOpenGLRenderWindow* renWin);
+  /// Whether the compute projector is the faster one on this driver (vtkPsiVolumeMapper's
+  /// PROJECTOR_AUTO), by measurement (README, "Projectors").
+  static bool Preferred(vtkOpenGLRenderWindow* renWin);
+  /// Composes and builds the programs for `f` (once per feature key) and leaves the compute
+  /// program bound. Null, with `error` set, when a program does not build.
+  vtkShaderProgram* ReadyComputeProgram(vtkOpenGLRenderWindow* renWin,
+    const psi::ShaderFeatures& f, const char* integrator, std::string& error);
+  /// The draw program of the last ReadyComputeProgram, made ready (bound) by VTK's shader cache.
+  vtkShaderProgram* ReadyDrawProgram(vtkOpenGLRenderWindow* renWin);
+  /// Projects and draws `count` tetrahedra: the order is the uint32 buffer `orderBuffer` of
+  /// tetrahedron ids, `tetBuffer` holds four uint32 point ids per tetrahedron. Both programs'
+  /// uniforms must be set. Leaves no program bound (VTK's shader cache is told).
+  void Draw(vtkOpenGLRenderWindow* renWin, unsigned int orderBuffer, size_t count,
+    unsigned int tetBuffer);
+  void ReleaseGraphicsResources(vtkWindow* win);
+
+  /// Bytes of the reused vertex and index buffers (their size bounds the tetrahedra per pass).
+  static constexpr size_t BufferBudget = size_t(48) << 20;
+
+private:
+  PsiComputeProjector(const PsiComputeProjector&) = delete;
+  void operator=(const PsiComputeProjector&) = delete;
+  void ReserveBuffers(vtkOpenGLRenderWindow* renWin, size_t tetsPerPass);
+
+  vtkSmartPointer<vtkShaderProgram> Compute;
+  vtkShaderProgram* DrawProgram = nullptr; // owned by VTK's shader cache
+  std::string DrawVertex, DrawFragment;
+  std::string Key;
+  int SlotVertices = 0, SlotTriangles = 0, Vec4sPerVertex = 0;
+  unsigned int Vertices = 0;      // buffer: the projected vertices of one pass
+  unsigned int VertexTexture = 0; // buffer texture over Vertices (the draw program reads it)
+  unsigned int Indices = 0;       // buffer: the triangles' indices of one pass
+  unsigned int VAO = 0;
+  size_t ReservedVec4s = 0, ReservedIndices = 0; // the buffers' sizes
+};
+
+#endif

@@ -1,0 +1,36 @@
+// PsiComputeProjectorComposer: the programs of the compute-shader projector, composed from the
+// geometry-shader projector's (psi::ComposeShaders), so that both projectors run the same
+// classification and emission code for every feature set. GL-free (plain strings).
+//
+// The compute shader (Shaders/PsiProjectCS.glsl) holds the composed vertex and geometry shaders
+// as functions; the draw program is a pass-through vertex shader (Shaders/PsiProjectedVS.glsl)
+// that fetches each projected vertex and hands the geometry shader's outputs, under the same
+// names and qualifiers, to the unchanged fragment shader.
+#ifndef PsiComputeProjectorComposer_h
+#define PsiComputeProjectorComposer_h
+
+#include "PsiShaderComposer.h"
+
+#include <string>
+
+namespace psi
+{
+
+struct ComputeProjectorSources
+{
+  std::string Compute;  ///< complete, with its #version line (compiled by the mapper)
+  std::string Vertex;   ///< pass-through, //VTK::System::Dec left for VTK's shader cache
+  std::string Fragment; ///< psi::ComposeShaders(f).Fragment
+  int SlotVertices = 0;  ///< vertices one tetrahedron may write (GeometryOutputVertices)
+  int SlotTriangles = 0; ///< triangles one tetrahedron may write (ProjectedTrianglesMax)
+  int Vec4sPerVertex = 0; ///< clip position plus one vec4 per output vec4 (matrix column)
+};
+
+/// Composes the compute projector for `f`. `integratorSource` as for psi::ComposeShaders.
+/// Throws std::logic_error when a stage output has a type it cannot pass on.
+PSIVOLUMEREPRESENTATIONS_EXPORT ComputeProjectorSources ComposeComputeProjector(
+  const ShaderFeatures& f, const char* integratorSource = nullptr);
+
+} // namespace psi
+
+#endif
