@@ -2,7 +2,8 @@
 mesh grows, each mapper in its own pvpython process so that peak memory is its own.
 
 pvpython Benchmarks/bench_scale.py [--sizes 20 40 60] [--bluntfin] [--size 512] [--frames 4]
-                                   [--mappers "Psi Volume" "Projected tetra" "Bunyk ray cast"]
+                                   [--mappers "Psi Volume GS" "Psi Volume CS" "Projected tetra"
+                                              "Bunyk ray cast"]
                                    [--bunyk-max-tets 400000] [--threads 1 2]
 
 --sizes are half-extents of ParaView's Wavelet, tetrahedralized (5 tets per voxel): 20 gives
@@ -15,7 +16,9 @@ pvpython Benchmarks/bench_scale.py [--sizes 20 40 60] [--bluntfin] [--size 512] 
     rendering threads) over s/frame with the last;
   - time step: a new time step of the same mesh (the scalars change, points and cells do not),
     rendered at a fixed view, over a plain frame at that view.
-'Psi Volume' runs with its defaults (partial pre-integration, MPVONC). Bunyk runs only up to
+'Psi Volume' runs with its defaults (partial pre-integration, MPVONC), once with each projector:
+"Psi Volume GS" the geometry shader, "Psi Volume CS" the compute shader ("Psi Volume": Auto).
+Bunyk runs only up to
 --bunyk-max-tets. Ratios are taken within one run; absolute times vary with the machine."""
 import argparse
 import json
@@ -42,6 +45,10 @@ out.GetPointData().AddArray(a)
 """
 
 
+# 'Psi Volume' with each projector (vtkPsiVolumeMapper::Projectors); plain 'Psi Volume' is Auto.
+PROJECTORS = {"Psi Volume GS": "Geometry Shader", "Psi Volume CS": "Compute Shader"}
+
+
 def worker(args):
     """One mapper on one mesh: prints one JSON line."""
     sys.path.insert(0, os.path.join(HERE, "..", "Python"))
@@ -63,8 +70,9 @@ def worker(args):
     view.ViewSize = [args.size, args.size]
     view.OrientationAxesVisibility = 0
     rep = psi_data.show_volume(prog, "step", view, representation="Volume")
-    if args.mapper == "Psi Volume":
+    if args.mapper.startswith("Psi Volume"):
         rep.SetRepresentationType("Psi Volume")
+        rep.Projector = PROJECTORS.get(args.mapper, "Auto")
     else:
         rep.SelectMapper = args.mapper
     view.ResetCamera()
@@ -130,7 +138,8 @@ def main():
     p.add_argument("--frames", type=int, default=4)
     p.add_argument("--threads", nargs=2, type=int, default=[1, 2])
     p.add_argument("--mappers", nargs="*",
-                   default=["Psi Volume", "Projected tetra", "Bunyk ray cast"])
+                   default=["Psi Volume GS", "Psi Volume CS", "Projected tetra",
+                            "Bunyk ray cast"])
     p.add_argument("--bunyk-max-tets", type=int, default=400000)
     p.add_argument("--timeout", type=float, default=3000)
     args = p.parse_args()

@@ -7,6 +7,9 @@ target_link_libraries(TestPsiIsosurfaces PRIVATE PsiVolume::Representations PsiT
 vtk_module_autoinit(TARGETS TestPsiIsosurfaces MODULES VTK::RenderingOpenGL2)
 file(MAKE_DIRECTORY "${CMAKE_BINARY_DIR}/Testing/Images")
 add_test(NAME PsiIsosurfaces COMMAND TestPsiIsosurfaces "${CMAKE_BINARY_DIR}/Testing/Images")
+set_tests_properties(PsiIsosurfaces PROPERTIES ENVIRONMENT "PSI_PROJECTOR=geometry")
+add_test(NAME PsiIsosurfaces.compute COMMAND TestPsiIsosurfaces)
+set_tests_properties(PsiIsosurfaces.compute PROPERTIES ENVIRONMENT "PSI_PROJECTOR=compute")
 
 find_program(PVPYTHON_EXECUTABLE NAMES pvpython REQUIRED)
 add_test(NAME PsiPython.isosurfaces

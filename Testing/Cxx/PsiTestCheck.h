@@ -3,6 +3,8 @@
 #define PsiTestCheck_h
 
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 
 namespace psitest
 {
@@ -10,6 +12,15 @@ inline int& Failures()
 {
   static int n = 0;
   return n;
+}
+
+/// The projector a run asks for through PSI_PROJECTOR ("geometry" or "compute"; CTest runs each
+/// render test once with each): 0 geometry shader, 1 compute shader (vtkPsiVolumeMapper's
+/// Projectors), -1 when unset.
+inline int RequestedProjector()
+{
+  const char* p = std::getenv("PSI_PROJECTOR");
+  return !p ? -1 : std::string(p) == "compute" ? 1 : std::string(p) == "geometry" ? 0 : -1;
 }
 } // namespace psitest
 
