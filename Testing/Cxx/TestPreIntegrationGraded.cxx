@@ -9,8 +9,11 @@
 //     (PsiReferenceIntegrals) for lengths from 1e-3 to 1 of the longest edge;
 //  3. a graded slab (layers 0.005 to 5 thick) rendered with vtkPsiVolumeMapper and measured
 //     against the exact CPU ray caster (PsiReferenceRaycaster), which also checks that the GLSL
-//     coordinate matches the C++ one. A linear length axis (32 samples up to the longest edge)
-//     turns the thin layers nearly transparent there: mean error 0.12, max 0.49 (measured).
+//     coordinate matches the C++ one.
+// Measured with the log axis: lookups within 0.0036 of the exact integral, image mean error
+// 0.0013 and max 0.0041 (as partial pre-integration). With a linear axis (32 samples up to the
+// longest edge) the thin layers turn nearly transparent: lookups off by 0.86 at D = 0.018, image
+// mean error 0.0061 and max 0.70; every check of steps 2 and 3 fails.
 //
 // Usage: TestPreIntegrationGraded [output-dir]   (PNG images of GPU, reference and 8x difference)
 #include "PsiIntegrationMethods.h"
@@ -221,7 +224,7 @@ void TestGradedSlabImage(const std::string& outDir)
   PSI_CHECK(partial.Covered > W * H / 3, "graded slab: image nearly empty (%d)", partial.Covered);
   PSI_CHECK(partial.Mean < 0.004, "graded slab, partial pre-integration: mean error %g",
     partial.Mean);
-  PSI_CHECK(full.Mean < 0.006 && full.Max < 0.05,
+  PSI_CHECK(full.Mean < 0.003 && full.Max < 0.05,
     "graded slab, full pre-integration: mean error %g, max %g", full.Mean, full.Max);
 }
 } // namespace
