@@ -8,7 +8,8 @@ From pvpython or the GUI's Python shell, on the active view and the active sourc
 As a command (scripts/accuracy-report.sh wraps it under Xvfb):
     pvpython Python/psi_accuracy.py [FILE|bluntfin|post|comb|spx] [--array NAME] [--out DIR]
                                     [--size 384] [--frames 3] [--wavelet-half 20]
-                                    [--unit-distance U] [--no-paraview]
+                                    [--unit-distance U] [--no-paraview] [--paraview-timeout 120]
+                                    [--paraview-mappers 'Projected tetra' 'Z sweep' ...]
 Prints the table and writes DIR/report.md, DIR/accuracy.png (error against time),
 DIR/methods.png (each image and its error map) and the rows as DIR/report.json. ParaView's
 mappers run in a child pvpython each (a crash there is a row of the table, not the end of the
@@ -190,7 +191,7 @@ def measure_psi(cap, methods, frames):
     return rows
 
 
-def measure_paraview(cap, mappers, frames, timeout=600):
+def measure_paraview(cap, mappers, frames, timeout=120):
     """Rows (name, s/frame or None, image or None, note) of ParaView's mappers, each in a child
     pvpython so that a crash is a row."""
     scene = os.path.join(cap.work, "scene.json")
@@ -211,7 +212,8 @@ def measure_paraview(cap, mappers, frames, timeout=600):
                 rows.append(("ParaView " + name, None, None,
                              "failed (exit code %d: %s)" % (p.returncode, tail)))
         except subprocess.TimeoutExpired:
-            rows.append(("ParaView " + name, None, None, "timed out after %d s" % timeout))
+            rows.append(("ParaView " + name, None, None,
+                         "timed out after %d s (--paraview-timeout)" % timeout))
     return rows
 
 
@@ -223,7 +225,7 @@ def errors(img, ref):
 
 
 def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
-           paraview_mappers=PARAVIEW_MAPPERS, title=None):
+           paraview_mappers=PARAVIEW_MAPPERS, title=None, paraview_timeout=120):
     """Renders the active (or given) view's volume with every method and mapper, measures each
     image against the exact reference at the same view, prints the table and writes
     out_dir/report.md, accuracy.png and methods.png. Returns the rows as dicts."""
@@ -246,7 +248,7 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
         rows = [dict(name=n, spf=spf, image=img, note="") for n, spf, img in
                 measure_psi(cap, methods, frames)]
         rows += [dict(name=n, spf=spf, image=img, note=note) for n, spf, img, note in
-                 measure_paraview(cap, paraview_mappers, frames)]
+                 measure_paraview(cap, paraview_mappers, frames, paraview_timeout)]
         rows.append(dict(name=REFERENCE, spf=ref_seconds, image=refs[-1], note=""))
     rep.SetRepresentationType(saved_type)
     simple.Render(view)
@@ -333,6 +335,10 @@ def main():
     p.add_argument("--wavelet-half", type=int, default=20)
     p.add_argument("--unit-distance", type=float)
     p.add_argument("--no-paraview", action="store_true", help="skip ParaView's own mappers")
+    p.add_argument("--paraview-mappers", nargs="*", default=PARAVIEW_MAPPERS,
+                   help="which of ParaView's mappers (default: %s)" % ", ".join(PARAVIEW_MAPPERS))
+    p.add_argument("--paraview-timeout", type=float, default=120,
+                   help="seconds each ParaView mapper may take (Z sweep is slow on big meshes)")
     p.add_argument("--child-mapper", help=argparse.SUPPRESS)
     p.add_argument("--child-scene", help=argparse.SUPPRESS)
     p.add_argument("--child-out", help=argparse.SUPPRESS)
@@ -342,7 +348,7 @@ def main():
     psi_data.load_plugin(globals())
     view, rep, src, title = command_scene(args)
     report(view, rep, src, args.out, args.frames,
-           [] if args.no_paraview else PARAVIEW_MAPPERS, title)
+           [] if args.no_paraview else args.paraview_mappers, title, args.paraview_timeout)
     psi_testing.exit_now(0)
 
 

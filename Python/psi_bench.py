@@ -36,16 +36,20 @@ def set_mapper(rep, name):
         rep.SelectMapper = name
 
 
-def time_frames(view, frames, jitter=0.5):
-    """Mean wall-clock seconds of `frames` renders after a warm-up one (tables, shaders). The
-    camera turns by +-`jitter` degrees between frames, so that view-dependent work (the
-    visibility sort) is counted, and is put back exactly afterwards."""
+def time_frames(view, frames, jitter=0.5, budget=30.0):
+    """Mean wall-clock seconds of `frames` renders after a warm-up one (tables, shaders), or of
+    fewer (at least one) once `budget` seconds are spent. The camera turns by +-`jitter` degrees
+    between frames, so that view-dependent work (the visibility sort) is counted, and is put back
+    exactly afterwards."""
     saved = (list(view.CameraPosition), list(view.CameraFocalPoint), list(view.CameraViewUp))
+    t0 = time.perf_counter()
     simple.Render(view)
     psi_data.wait(view)
     cam = view.GetActiveCamera()
     times = []
     for k in range(frames):
+        if k > 0 and time.perf_counter() - t0 > budget:
+            break
         cam.Azimuth(jitter if k % 2 == 0 else -jitter)
         t = time.perf_counter()
         simple.Render(view)
