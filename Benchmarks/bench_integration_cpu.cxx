@@ -47,7 +47,8 @@ int main(int argc, char* argv[])
     const float v[4] = { float(s), float(0.5 * s), float(1 - s), float(s) };
     std::copy(v, v + 4, &tf.Rgba[4 * i]);
   }
-  const psi::PreIntegrationTable pre = psi::BuildPreIntegrationTable(tf, table, 100.0);
+  const psi::PreIntegrationTable pre = psi::BuildPreIntegrationTable(
+    tf, table, psi::MakePreIntegrationLengthAxis(0, 100.0));
   // For its accuracy: a table for L(s) = s, tau(s) = s on [0, 1], lengths up to 1; a sweep point
   // (alpha_f, alpha_b, D) is the segment from s = alpha_f to s = alpha_b.
   psi::TransferFunctionTable ramp = tf;
@@ -57,7 +58,8 @@ int main(int argc, char* argv[])
     const float v[4] = { s, s, s, s };
     std::copy(v, v + 4, &ramp.Rgba[4 * i]);
   }
-  const psi::PreIntegrationTable rampTable = psi::BuildPreIntegrationTable(ramp, table, 1.0);
+  const psi::PreIntegrationTable rampTable = psi::BuildPreIntegrationTable(
+    ramp, table, psi::MakePreIntegrationLengthAxis(0, 1.0));
 
   if (csv)
   {
@@ -98,7 +100,7 @@ int main(int argc, char* argv[])
     for (double D : { 0.001, 0.1, 1.0, 100.0 })
     {
       maxErr[di] = 0;
-      if (info.NeedsPreIntegrationTable && D > rampTable.MaxLength)
+      if (info.NeedsPreIntegrationTable && D > rampTable.Axis.MaxLength)
       {
         maxErr[di++] = -1; // beyond the table's lengths: not applicable
         continue;

@@ -12,6 +12,50 @@
 namespace psi
 {
 
+double PreIntegrationLengthAxis::Index(double l) const
+{
+  if (!(l > 0))
+  {
+    return 0;
+  }
+  const double x = l / this->MinLength;
+  const double k = x < 1 ? x : 1 + std::log(x) * (this->Samples - 2) /
+      std::log(this->MaxLength / this->MinLength);
+  return std::min(k, static_cast<double>(this->Samples - 1));
+}
+
+double PreIntegrationLengthAxis::Length(int k) const
+{
+  if (k <= 0)
+  {
+    return 0;
+  }
+  if (k >= this->Samples - 1)
+  {
+    return this->MaxLength;
+  }
+  return this->MinLength *
+    std::pow(this->MaxLength / this->MinLength, (k - 1.0) / (this->Samples - 2));
+}
+
+void PreIntegrationLengthAxis::ShaderUniform(float u[4]) const
+{
+  u[0] = static_cast<float>(1 / this->MinLength);
+  u[1] = static_cast<float>((this->Samples - 2) / std::log(this->MaxLength / this->MinLength));
+  u[2] = static_cast<float>(this->Samples - 1);
+  u[3] = static_cast<float>(1.0 / this->Samples);
+}
+
+PreIntegrationLengthAxis MakePreIntegrationLengthAxis(double minEdge, double maxEdge, int samples)
+{
+  PreIntegrationLengthAxis a;
+  a.Samples = std::max(samples, 3);
+  a.MaxLength = maxEdge > 0 && std::isfinite(maxEdge) ? maxEdge : 1;
+  const double lo = 1e-4 * a.MaxLength, hi = 1e-2 * a.MaxLength;
+  a.MinLength = minEdge > 0 ? std::min(std::max(0.1 * minEdge, lo), hi) : lo;
+  return a;
+}
+
 void PreIntegrationTable::Lookup(double sf, double sb, double D, double out[4]) const
 {
   const int ns = this->ScalarSamples, nd = this->LengthSamples;
@@ -25,7 +69,7 @@ void PreIntegrationTable::Lookup(double sf, double sb, double D, double out[4]) 
   double wi, wj, wk;
   coord((sf - this->Range[0]) / span * (ns - 1), ns, i, wi);
   coord((sb - this->Range[0]) / span * (ns - 1), ns, j, wj);
-  coord(D / this->MaxLength * (nd - 1), nd, k, wk);
+  coord(this->Axis.Index(D), nd, k, wk);
   for (int c = 0; c < 4; ++c)
   {
     double v = 0;
@@ -45,15 +89,16 @@ void PreIntegrationTable::Lookup(double sf, double sb, double D, double out[4]) 
 }
 
 PreIntegrationTable BuildPreIntegrationTable(const TransferFunctionTable& tf, const PsiTable& psi,
-  double maxLength, int scalarSamples, int lengthSamples)
+  const PreIntegrationLengthAxis& axis, int scalarSamples)
 {
   const auto t0 = std::chrono::steady_clock::now();
   PreIntegrationTable t;
   t.ScalarSamples = std::max(scalarSamples, 2);
-  t.LengthSamples = std::max(lengthSamples, 2);
+  t.Axis = axis;
+  t.Axis.Samples = std::max(axis.Samples, 3);
+  t.LengthSamples = t.Axis.Samples;
   t.Range[0] = tf.Range[0];
   t.Range[1] = tf.Range[1];
-  t.MaxLength = maxLength > 0 ? maxLength : 1;
   const int ns = t.ScalarSamples, nd = t.LengthSamples;
   t.Rgba.assign(4 * static_cast<size_t>(ns) * ns * nd, 0.0f);
   // Transfer-function samples between two table scalars: pieces where the table is linear.
@@ -75,7 +120,7 @@ PreIntegrationTable BuildPreIntegrationTable(const TransferFunctionTable& tf, co
         }
         for (int k = 0; k < nd; ++k)
         {
-          const double d = t.MaxLength * k / (nd - 1) / pieces;
+          const double d = t.Axis.Length(k) / pieces;
           Rgba acc{ { 0, 0, 0, 0 } };
           for (int p = 0; p < pieces && acc[3] < 1 - 1e-7; ++p) // front to back
           {

@@ -118,10 +118,12 @@ void GatherTets(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cell
   }
 }
 
-// Scalar range of the drawn tetrahedra (never empty) and, when `edges`, the longest edge.
+// Scalar range of the drawn tetrahedra (never empty) and, when `edges`, the longest and shortest
+// edge.
 void MeasureTets(TetMesh& m, bool edges = true)
 {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo, maxEdge2 = 0;
+  double minEdge2 = std::numeric_limits<double>::infinity();
   for (size_t t = 0; t < m.Tets.size(); t += 4)
   {
     for (int a = 0; a < 4; ++a)
@@ -135,12 +137,14 @@ void MeasureTets(TetMesh& m, bool edges = true)
         const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
           (p[2] - q[2]) * (p[2] - q[2]);
         maxEdge2 = std::max(maxEdge2, d2);
+        minEdge2 = d2 > 0 ? std::min(minEdge2, d2) : minEdge2;
       }
     }
   }
   if (edges)
   {
     m.MaxEdgeLength = std::sqrt(maxEdge2);
+    m.MinEdgeLength = std::isfinite(minEdge2) ? std::sqrt(minEdge2) : 0;
   }
   if (!(lo <= hi))
   {

@@ -34,6 +34,7 @@ struct PSIVOLUMECORE_EXPORT TetMesh
   int64_t NonTetCells = 0;   ///< input cells skipped for not being tetrahedra
   int64_t NonFiniteTets = 0; ///< tetrahedra skipped for a NaN or infinite scalar
   double MaxEdgeLength = 0;  ///< bounds every ray segment's length
+  double MinEdgeLength = 0;  ///< shortest edge (sets the pre-integration table's length axis)
   bool CellScalars = false;  ///< gathered with cell scalars (private points per tetrahedron)
 
   size_t NumberOfTets() const { return this->Tets.size() / 4; }

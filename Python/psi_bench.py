@@ -25,6 +25,42 @@ def load(data):
     return psi_data.open_any(data)
 
 
+def set_mapper(rep, name):
+    """Puts `rep` on 'Psi Volume|<IntegrationMethod>' or on 'Volume' with one of ParaView's
+    SelectMapper values ('Projected tetra', 'Z sweep', 'Bunyk ray cast', 'Resample To Image')."""
+    if name.startswith("Psi Volume"):
+        rep.SetRepresentationType("Psi Volume")
+        rep.IntegrationMethod = name.split("|")[1]
+    else:
+        rep.SetRepresentationType("Volume")
+        rep.SelectMapper = name
+
+
+def time_frames(view, frames, jitter=0.5, budget=30.0):
+    """Mean wall-clock seconds of `frames` renders after a warm-up one (tables, shaders), or of
+    fewer (at least one) once `budget` seconds are spent. The camera turns by +-`jitter` degrees
+    between frames, so that view-dependent work (the visibility sort) is counted, and is put back
+    exactly afterwards."""
+    saved = (list(view.CameraPosition), list(view.CameraFocalPoint), list(view.CameraViewUp))
+    t0 = time.perf_counter()
+    simple.Render(view)
+    psi_data.wait(view)
+    cam = view.GetActiveCamera()
+    times = []
+    for k in range(frames):
+        if k > 0 and time.perf_counter() - t0 > budget:
+            break
+        cam.Azimuth(jitter if k % 2 == 0 else -jitter)
+        t = time.perf_counter()
+        simple.Render(view)
+        psi_data.wait(view)
+        times.append(time.perf_counter() - t)
+    view.CameraPosition, view.CameraFocalPoint, view.CameraViewUp = saved
+    simple.Render(view)
+    psi_data.wait(view)
+    return sum(times) / len(times) if times else float("nan")
+
+
 class Scene:
     """One view orbiting a volume; the color map is in RGB space so that the linear integrator
     (linear between control points) is exact for it."""
@@ -65,12 +101,7 @@ class Scene:
 
     def set_mapper(self, name):
         """'Psi Volume|<IntegrationMethod>' or one of ParaView's SelectMapper values."""
-        if name.startswith("Psi Volume"):
-            self.rep.SetRepresentationType("Psi Volume")
-            self.rep.IntegrationMethod = name.split("|")[1]
-        else:
-            self.rep.SetRepresentationType("Volume")
-            self.rep.SelectMapper = name
+        set_mapper(self.rep, name)
 
     def references(self, steps):
         """Exact reference images (Bunyk + linear integrator) at the given orbit steps."""

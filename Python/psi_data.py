@@ -16,6 +16,9 @@ PLOT3D = {
     "comb": ("combxyz.bin", "combq.bin", 0, "Density"),
 }
 
+# Single-file datasets of ../shared/data by short name, and the point array to render.
+NAMED_FILES = {"spx": ("spx.vtk", "scalars")}
+
 
 def find_plugin():
     """Path of the built plugin (PSI_PLUGIN overrides)."""
@@ -56,10 +59,12 @@ def open_any(path, array=None):
     """A pipeline producing an unstructured grid from `path`, and the point array to render.
 
     `path` may be a PLOT3D grid file (its solution file is found by replacing 'xyz' with 'q'),
-    one of the short names bluntfin/post/comb, or anything ParaView reads."""
+    one of the short names bluntfin/post/comb/spx, or anything ParaView reads."""
     base = os.path.basename(path)
     if path in PLOT3D:
         return plot3d(path)
+    if path in NAMED_FILES:
+        path, array = os.path.join(SHARED_DATA, NAMED_FILES[path][0]), array or NAMED_FILES[path][1]
     if base.endswith("xyz.bin"):
         key = base[: -len("xyz.bin")]
         if key in PLOT3D:

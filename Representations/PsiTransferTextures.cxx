@@ -153,16 +153,18 @@ void PsiPsiTableTexture::ReleaseGraphicsResources(vtkWindow* win)
 PsiPreIntegrationTexture::PsiPreIntegrationTexture() = default;
 PsiPreIntegrationTexture::~PsiPreIntegrationTexture() = default;
 
-bool PsiPreIntegrationTexture::NeedsUpdate(int transferVersion, double maxLength) const
+bool PsiPreIntegrationTexture::NeedsUpdate(
+  int transferVersion, const psi::PreIntegrationLengthAxis& axis) const
 {
-  return !this->Valid || this->Version != transferVersion || this->Table.MaxLength != maxLength;
+  const psi::PreIntegrationLengthAxis& a = this->Table.Axis;
+  return !this->Valid || this->Version != transferVersion || a.MaxLength != axis.MaxLength ||
+    a.MinLength != axis.MinLength || a.Samples != axis.Samples;
 }
 
-double PsiPreIntegrationTexture::Update(
-  vtkOpenGLRenderWindow* renWin, const PsiTransferFunctionTexture& transfer, double maxLength)
+double PsiPreIntegrationTexture::Update(vtkOpenGLRenderWindow* renWin,
+  const PsiTransferFunctionTexture& transfer, const psi::PreIntegrationLengthAxis& axis)
 {
-  this->Table =
-    psi::BuildPreIntegrationTable(transfer.GetTable(), psi::GetDefaultPsiTable(), maxLength);
+  this->Table = psi::BuildPreIntegrationTable(transfer.GetTable(), psi::GetDefaultPsiTable(), axis);
   this->Texture->SetContext(renWin);
   this->Texture->Create3DFromRaw(this->Table.ScalarSamples, this->Table.ScalarSamples,
     this->Table.LengthSamples, 4, VTK_FLOAT, this->Table.Rgba.data());
@@ -178,11 +180,13 @@ void PsiPreIntegrationTexture::Activate(vtkShaderProgram* program)
 {
   this->Texture->Activate();
   program->SetUniformi("preIntegrated", this->Texture->GetTextureUnit());
-  const double ns = this->Table.ScalarSamples, nd = this->Table.LengthSamples;
+  const double ns = this->Table.ScalarSamples;
   const double r0 = this->Table.Range[0], r1 = this->Table.Range[1];
   const double ss = (ns - 1) / (ns * (r1 - r0));
   SetUniform2(program, "preScalarScaleShift", ss, 0.5 / ns - r0 * ss);
-  SetUniform2(program, "preLengthScaleShift", (nd - 1) / (nd * this->Table.MaxLength), 0.5 / nd);
+  float axis[4];
+  this->Table.Axis.ShaderUniform(axis);
+  program->SetUniform4f("preLengthAxis", axis);
 }
 
 void PsiPreIntegrationTexture::Deactivate()

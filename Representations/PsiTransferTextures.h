@@ -96,11 +96,11 @@ class PsiPreIntegrationTexture
 public:
   PsiPreIntegrationTexture();
   ~PsiPreIntegrationTexture();
-  bool NeedsUpdate(int transferVersion, double maxLength) const;
-  /// Rebuilds the table for the transfer function and segments up to maxLength; returns the
-  /// seconds the build took.
+  bool NeedsUpdate(int transferVersion, const psi::PreIntegrationLengthAxis& axis) const;
+  /// Rebuilds the table for the transfer function over the length axis (segments up to its
+  /// MaxLength); returns the seconds the build took.
   double Update(vtkOpenGLRenderWindow* renWin, const PsiTransferFunctionTexture& transfer,
-    double maxLength);
+    const psi::PreIntegrationLengthAxis& axis);
   void Activate(vtkShaderProgram* program);
   void Deactivate();
   void ReleaseGraphicsResources(vtkWindow* win);

@@ -356,12 +356,14 @@ void vtkPsiVolumeMapper::UpdateTables(vtkOpenGLRenderWindow* renWin, vtkVolume* 
   {
     I.Tables.PsiTable.Update(renWin);
   }
+  const psi::PreIntegrationLengthAxis axis =
+    psi::MakePreIntegrationLengthAxis(mesh.MinEdgeLength, mesh.MaxEdgeLength);
   if (MethodInfo(this->IntegrationMethod).NeedsPreIntegrationTable &&
-    I.Tables.PreIntegration.NeedsUpdate(I.Tables.Transfer.GetVersion(), mesh.MaxEdgeLength))
+    I.Tables.PreIntegration.NeedsUpdate(I.Tables.Transfer.GetVersion(), axis))
   {
     // Röttger's table belongs to one transfer function: rebuilt on every edit (timed).
     this->Stats.LastPreIntegrationSeconds =
-      I.Tables.PreIntegration.Update(renWin, I.Tables.Transfer, mesh.MaxEdgeLength);
+      I.Tables.PreIntegration.Update(renWin, I.Tables.Transfer, axis);
   }
   if (!this->Isosurfaces.Empty() && this->IsosurfaceShading == ISO_SMOOTH)
   {

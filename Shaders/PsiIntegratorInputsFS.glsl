@@ -17,7 +17,8 @@ uniform float unitDistance;         // ScalarOpacityUnitDistance
 
 //PSI::Integrator::PreIntegrated
 // Full pre-integration (Röttger et al. 2000): the 3D table over (front scalar, back scalar,
-// length) for the current transfer function.
+// length) for the current transfer function. Its length axis is logarithmic (Kraus, Qiao & Ebert
+// 2004; psi::PreIntegrationLengthAxis): (1 / l_min, (n - 2) / ln(l_max / l_min), n - 1, 1 / n).
 uniform sampler3D preIntegrated;
 uniform vec2 preScalarScaleShift;
-uniform vec2 preLengthScaleShift;
+uniform vec4 preLengthAxis;

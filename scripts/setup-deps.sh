@@ -9,7 +9,7 @@ PKGS=(paraview paraview-dev python3-paraview qtbase5-dev libutfcpp-dev qttools5-
   libgl2ps-dev libgdal-dev libfreetype-dev libavcodec-dev libavformat-dev libswscale-dev
   libavutil-dev libeigen3-dev libexpat1-dev libboost-dev python3-dev libx11-dev libgl-dev
   zlib1g-dev python3-mpi4py libdouble-conversion-dev libcgal-dev libosmesa6-dev xvfb xauth mesa-utils
-  cmake g++ make python3-numpy libqt5opengl5-dev clang libclang-rt-14-dev)
+  cmake g++ make python3-numpy python3-matplotlib libqt5opengl5-dev clang libclang-rt-14-dev)
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,5 +1,6 @@
 // Helpers shared by the GL image tests: the CPU reference scene of a tetrahedral grid and its
-// transfer function, and writing an RGB image (doubles in [0, 1], rows from the bottom) as PNG.
+// transfer function, writing an RGB image (doubles in [0, 1], rows from the bottom) as PNG, and
+// measuring a rendered image against the reference at the same camera.
 #ifndef PsiTestScene_h
 #define PsiTestScene_h
 
@@ -23,6 +24,15 @@
 #include "vtkSmartPointer.h"
 #include "vtkPointData.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkFloatArray.h"
+#include "vtkMatrix4x4.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkVolume.h"
+
+#include <cmath>
+#include <cstdio>
 
 #include <algorithm>
 #include <string>
@@ -128,6 +138,93 @@ inline void WritePng(const std::string& file, const std::vector<double>& rgb, in
   writer->SetFileName(file.c_str());
   writer->SetInputData(im);
   writer->Write();
+}
+
+struct Result
+{
+  double Mean = 0, Max = 0;
+  int Covered = 0;
+};
+
+/// Renders the current scene, then the same camera with the CPU reference; compares (mean and
+/// max absolute error of 8-bit channels in [0, 1], covered pixels). With `outDir`, writes the GPU
+/// image, the reference and 8x their difference as PNG.
+inline Result Compare(const std::string& name, vtkRenderWindow* win, vtkRenderer* ren, vtkVolume* vol,
+  const psi::ReferenceScene& refScene, vtkActor* opaque, const std::string& outDir)
+{
+  const int W = win->GetSize()[0], H = win->GetSize()[1];
+  psi::ReferenceCamera cam;
+  cam.Width = W;
+  cam.Height = H;
+  // Opaque geometry as drawn by GL (its depth and flat color), without the volume.
+  if (opaque)
+  {
+    vol->VisibilityOff();
+    win->Render();
+    std::vector<float> z(W * H);
+    win->GetZbufferData(0, 0, W - 1, H - 1, z.data());
+    cam.OpaqueDepth = z;
+    vtkNew<vtkFloatArray> rgba;
+    win->GetRGBAPixelData(0, 0, W - 1, H - 1, 0, rgba);
+    cam.OpaqueColor.resize(3 * W * H);
+    for (int i = 0; i < W * H; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        cam.OpaqueColor[3 * i + k] = rgba->GetValue(4 * i + k);
+      }
+    }
+    vol->VisibilityOn();
+  }
+  win->Render();
+  vtkNew<vtkUnsignedCharArray> px;
+  win->GetPixelData(0, 0, W - 1, H - 1, 0, px);
+  std::vector<double> gpu(3 * W * H);
+  for (int i = 0; i < W * H; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      gpu[3 * i + k] = px->GetValue(3 * i + k) / 255.0;
+    }
+  }
+  vtkCamera* c = ren->GetActiveCamera();
+  vtkNew<vtkMatrix4x4> m;
+  m->DeepCopy(c->GetCompositeProjectionTransformMatrix(double(W) / H, -1, 1));
+  m->Invert();
+  std::copy(m->GetData(), m->GetData() + 16, cam.NdcToWorld.begin());
+  const double* bg = ren->GetBackground();
+  cam.Background = { { bg[0], bg[1], bg[2] } };
+  const std::vector<double> ref = psi::RenderReference(refScene, cam);
+
+  Result r;
+  std::vector<double> diff(ref.size());
+  for (size_t i = 0; i < ref.size(); ++i)
+  {
+    const double e = std::abs(gpu[i] - std::min(1.0, std::max(0.0, ref[i])));
+    r.Mean += e;
+    r.Max = std::max(r.Max, e);
+    diff[i] = 8 * e;
+  }
+  r.Mean /= ref.size();
+  for (int i = 0; i < W * H; ++i)
+  {
+    double d = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      d += std::abs(gpu[3 * i + k] - bg[k]);
+    }
+    r.Covered += d > 2.0 / 255;
+  }
+  if (!outDir.empty())
+  {
+    psitest::WritePng(outDir + "/" + name + "_gpu.png", gpu, W, H);
+    psitest::WritePng(outDir + "/" + name + "_ref.png", ref, W, H);
+    psitest::WritePng(outDir + "/" + name + "_diff8x.png", diff, W, H);
+  }
+  std::printf("%-28s mean error %.5f  max %.4f  covered pixels %d\n", name.c_str(), r.Mean, r.Max,
+    r.Covered);
+  std::fflush(stdout);
+  return r;
 }
 } // namespace psitest
 

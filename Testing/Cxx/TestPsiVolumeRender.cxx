@@ -101,89 +101,9 @@ psi::ReferenceScene MakeReference(Scene& s)
     s.Grid, s.Color, s.Opacity, s.Property->GetScalarOpacityUnitDistance());
 }
 
-struct Result
-{
-  double Mean = 0, Max = 0;
-  int Covered = 0;
-};
+using psitest::Compare;
+using psitest::Result;
 
-// Renders the current scene, then the same camera with the CPU reference; compares.
-Result Compare(const std::string& name, vtkRenderWindow* win, vtkRenderer* ren, vtkVolume* vol,
-  const psi::ReferenceScene& refScene, vtkActor* opaque, const std::string& outDir)
-{
-  psi::ReferenceCamera cam;
-  cam.Width = W;
-  cam.Height = H;
-  // Opaque geometry as drawn by GL (its depth and flat color), without the volume.
-  if (opaque)
-  {
-    vol->VisibilityOff();
-    win->Render();
-    std::vector<float> z(W * H);
-    win->GetZbufferData(0, 0, W - 1, H - 1, z.data());
-    cam.OpaqueDepth = z;
-    vtkNew<vtkFloatArray> rgba;
-    win->GetRGBAPixelData(0, 0, W - 1, H - 1, 0, rgba);
-    cam.OpaqueColor.resize(3 * W * H);
-    for (int i = 0; i < W * H; ++i)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        cam.OpaqueColor[3 * i + k] = rgba->GetValue(4 * i + k);
-      }
-    }
-    vol->VisibilityOn();
-  }
-  win->Render();
-  vtkNew<vtkUnsignedCharArray> px;
-  win->GetPixelData(0, 0, W - 1, H - 1, 0, px);
-  std::vector<double> gpu(3 * W * H);
-  for (int i = 0; i < W * H; ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      gpu[3 * i + k] = px->GetValue(3 * i + k) / 255.0;
-    }
-  }
-  vtkCamera* c = ren->GetActiveCamera();
-  vtkNew<vtkMatrix4x4> m;
-  m->DeepCopy(c->GetCompositeProjectionTransformMatrix(double(W) / H, -1, 1));
-  m->Invert();
-  std::copy(m->GetData(), m->GetData() + 16, cam.NdcToWorld.begin());
-  const double* bg = ren->GetBackground();
-  cam.Background = { { bg[0], bg[1], bg[2] } };
-  const std::vector<double> ref = psi::RenderReference(refScene, cam);
-
-  Result r;
-  std::vector<double> diff(ref.size());
-  for (size_t i = 0; i < ref.size(); ++i)
-  {
-    const double e = std::abs(gpu[i] - std::min(1.0, std::max(0.0, ref[i])));
-    r.Mean += e;
-    r.Max = std::max(r.Max, e);
-    diff[i] = 8 * e;
-  }
-  r.Mean /= ref.size();
-  for (int i = 0; i < W * H; ++i)
-  {
-    double d = 0;
-    for (int k = 0; k < 3; ++k)
-    {
-      d += std::abs(gpu[3 * i + k] - bg[k]);
-    }
-    r.Covered += d > 2.0 / 255;
-  }
-  if (!outDir.empty())
-  {
-    psitest::WritePng(outDir + "/" + name + "_gpu.png", gpu, W, H);
-    psitest::WritePng(outDir + "/" + name + "_ref.png", ref, W, H);
-    psitest::WritePng(outDir + "/" + name + "_diff8x.png", diff, W, H);
-  }
-  std::printf("%-28s mean error %.5f  max %.4f  covered pixels %d\n", name.c_str(), r.Mean, r.Max,
-    r.Covered);
-  std::fflush(stdout);
-  return r;
-}
 // The Wavelet on [-half, half]^3 with cells of `cell` units, each cube split into the 6 Kuhn
 // tetrahedra around its main diagonal (the split of vtkPsiConformingTetrahedralize): long thin
 // cells whose centroid order is wrong across many shared faces.

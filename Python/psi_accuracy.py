@@ -1,0 +1,356 @@
+"""What accuracy costs, for the user's own data: every integration method of 'Psi Volume'
+(adaptive sampling off and on) and ParaView's own unstructured-volume mappers, timed at the same
+view and measured against the exact reference, the project's CPU ray caster
+(Testing/Support/PsiReferenceRaycaster, run by build/bin/psi_reference_render).
+
+From pvpython or the GUI's Python shell, on the active view and the active source's volume:
+    import psi_accuracy; psi_accuracy.report(out_dir="accuracy")
+As a command (scripts/accuracy-report.sh wraps it under Xvfb):
+    pvpython Python/psi_accuracy.py [FILE|bluntfin|post|comb|spx] [--array NAME] [--out DIR]
+                                    [--size 384] [--frames 3] [--wavelet-half 20]
+                                    [--unit-distance U] [--no-paraview] [--paraview-timeout 120]
+                                    [--paraview-mappers 'Projected tetra' 'Z sweep' ...]
+Prints the table and writes DIR/report.md, DIR/accuracy.png (error against time),
+DIR/methods.png (each image and its error map) and the rows as DIR/report.json. ParaView's
+mappers run in a child pvpython each (a crash there is a row of the table, not the end of the
+report)."""
+import argparse
+import glob
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+from paraview import servermanager, simple
+from vtkmodules.vtkCommonMath import vtkMatrix4x4
+from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
+from vtkmodules.vtkRenderingCore import vtkColorTransferFunction
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import psi_bench  # noqa: E402
+import psi_data  # noqa: E402
+import psi_testing  # noqa: E402
+
+PARAVIEW_MAPPERS = ["Projected tetra", "Z sweep", "Bunyk ray cast"]
+REFERENCE = "Exact reference (CPU)"
+TF_SAMPLES = 512  # extra breakpoints where the color map or opacity is not linear between nodes
+
+
+def find_reference_renderer():
+    """build/bin/psi_reference_render (PSI_REFERENCE_RENDER overrides)."""
+    if os.environ.get("PSI_REFERENCE_RENDER"):
+        return os.environ["PSI_REFERENCE_RENDER"]
+    plugin = psi_data.find_plugin()
+    build = plugin.split(os.sep + "lib")[0]
+    hits = glob.glob(os.path.join(build, "bin", "psi_reference_render"))
+    if not hits:
+        raise RuntimeError("psi_reference_render not built: run scripts/build.sh")
+    return hits[0]
+
+
+def find_pvpython():
+    return os.environ.get("PSI_PVPYTHON") or shutil.which("pvpython") or "pvpython"
+
+
+class Capture:
+    """The scene of a view as the reference and the child processes need it: mesh file, color
+    map, opacity, unit distance, camera, size, background."""
+
+    def __init__(self, view, rep, src, work):
+        self.view, self.rep, self.src, self.work = view, rep, src, work
+        self.array = rep.ColorArrayName[1]
+        self.association = rep.ColorArrayName[0] or psi_data.association(src, self.array)
+        self.lut = simple.GetColorTransferFunction(self.array)
+        self.pwf = simple.GetOpacityTransferFunction(self.array)
+        self.size = list(view.ViewSize)
+        self.mesh = os.path.join(work, "mesh.vtu")
+        self.write_mesh()
+
+    def write_mesh(self):
+        data = servermanager.Fetch(self.src)
+        if data.IsA("vtkCompositeDataSet"):
+            merged = simple.MergeBlocks(Input=self.src)
+            data = servermanager.Fetch(merged)
+            simple.Delete(merged)
+        if not data.IsA("vtkUnstructuredGrid"):
+            tets = vtkDataSetTriangleFilter()
+            tets.SetInputData(data)
+            tets.Update()
+            data = tets.GetOutput()
+        self.cells = data.GetNumberOfCells()
+        w = vtkXMLUnstructuredGridWriter()
+        w.SetFileName(self.mesh)
+        w.SetInputData(data)
+        w.SetDataModeToAppended()
+        w.Write()
+
+    def component(self):
+        if self.lut.VectorMode == "Magnitude":
+            return -1
+        return int(self.lut.VectorComponent)
+
+    def background(self):
+        return list(self.view.GetRenderer().GetBackground())
+
+    def table(self):
+        """Rows (s, r, g, b, opacity): every color and opacity node, and TF_SAMPLES more when
+        the color space is not RGB or a node has a midpoint or sharpness (not linear between)."""
+        ctf = vtkColorTransferFunction()  # the continuous map (no 256-color discretization)
+        ctf.DeepCopy(self.lut.GetClientSideObject())
+        opacity = self.pwf.GetClientSideObject()
+        rgb = list(self.lut.RGBPoints)
+        pts = list(self.pwf.Points)
+        s = set(rgb[0::4]) | set(pts[0::4])
+        linear = (self.lut.ColorSpace == "RGB" and all(
+            m == 0.5 and h == 0.0 for m, h in zip(pts[2::4], pts[3::4])))
+        lo, hi = min(s), max(s)
+        rng = self.src.GetDataInformation().DataInformation.GetArrayInformation(
+            self.array, 0 if self.association == "POINTS" else 1)
+        if rng is not None:
+            r = rng.GetComponentRange(-1 if self.component() < 0 else self.component())
+            lo, hi = min(lo, r[0]), max(hi, r[1])
+        if not linear:
+            s |= set(np.linspace(lo, hi, TF_SAMPLES).tolist())
+        rows = []
+        for v in sorted(s):
+            c = ctf.GetColor(v)
+            rows.append((v, c[0], c[1], c[2], opacity.GetValue(v)))
+        return rows
+
+    def ndc_to_world(self):
+        m = vtkMatrix4x4()
+        m.DeepCopy(self.view.GetActiveCamera().GetCompositeProjectionTransformMatrix(
+            self.size[0] / float(self.size[1]), -1, 1))
+        m.Invert()
+        return [m.GetElement(i, j) for i in range(4) for j in range(4)]
+
+    def write_reference_scene(self, path):
+        with open(path, "w") as f:
+            f.write("array %s\ncomponent %d\nsize %d %d\n" % (
+                self.array, self.component(), self.size[0], self.size[1]))
+            f.write("background %r %r %r\nunit %r\n" % (tuple(self.background()) + (
+                self.rep.ScalarOpacityUnitDistance,)))
+            f.write("ndc_to_world %s\n" % " ".join(repr(v) for v in self.ndc_to_world()))
+            rows = self.table()
+            f.write("tf %d\n" % len(rows))
+            for row in rows:
+                f.write("%r %r %r %r %r\n" % row)
+
+    def write_child_scene(self, path, frames):
+        v = self.view
+        scene = dict(mesh=self.mesh, array=self.array, association=self.association,
+                     size=self.size, background=self.background(), frames=frames,
+                     unit=float(self.rep.ScalarOpacityUnitDistance),
+                     rgb_points=list(self.lut.RGBPoints),
+                     color_space=self.lut.GetProperty("ColorSpace").GetData(),
+                     vector_mode=self.lut.GetProperty("VectorMode").GetData(),
+                     vector_component=int(self.lut.VectorComponent),
+                     opacity_points=list(self.pwf.Points),
+                     camera=dict(position=list(v.CameraPosition),
+                                 focal=list(v.CameraFocalPoint), up=list(v.CameraViewUp),
+                                 angle=float(v.CameraViewAngle),
+                                 parallel=int(v.CameraParallelProjection),
+                                 scale=float(v.CameraParallelScale)))
+        with open(path, "w") as f:
+            json.dump(scene, f)
+
+
+def reference_image(cap, runs=2):
+    """The reference image (float RGB 0..255, rows from the bottom) and its seconds, rendered
+    `runs` times: the error between the runs is the reference's own row (0 when deterministic)."""
+    exe = find_reference_renderer()
+    scene = os.path.join(cap.work, "reference.txt")
+    cap.write_reference_scene(scene)
+    images, seconds = [], []
+    for k in range(runs):
+        out = os.path.join(cap.work, "reference_%d.raw" % k)
+        t = time.perf_counter()
+        subprocess.run([exe, cap.mesh, scene, out], check=True, capture_output=True, text=True)
+        seconds.append(time.perf_counter() - t)
+        img = np.fromfile(out, dtype=np.float64).reshape(cap.size[1], cap.size[0], 3)
+        images.append(np.clip(img, 0, 1) * 255.0)
+    return images, min(seconds)
+
+
+def measure_psi(cap, methods, frames):
+    """Rows (name, s/frame, image) of 'Psi Volume' with each method, adaptive sampling off/on."""
+    rows = []
+    for m in methods:
+        for adaptive in ("Off", "On"):
+            psi_bench.set_mapper(cap.rep, "Psi Volume|" + m)
+            cap.rep.AdaptiveSampling = adaptive
+            spf = psi_bench.time_frames(cap.view, frames)
+            rows.append(("%s%s" % (m, " + adaptive" if adaptive == "On" else ""), spf,
+                         psi_testing.grab(cap.view)))
+    cap.rep.AdaptiveSampling = "Off"
+    return rows
+
+
+def measure_paraview(cap, mappers, frames, timeout=120):
+    """Rows (name, s/frame or None, image or None, note) of ParaView's mappers, each in a child
+    pvpython so that a crash is a row."""
+    scene = os.path.join(cap.work, "scene.json")
+    cap.write_child_scene(scene, frames)
+    rows = []
+    for name in mappers:
+        out = os.path.join(cap.work, "pv_%s.npy" % name.replace(" ", "_"))
+        cmd = [find_pvpython(), "--force-offscreen-rendering", os.path.abspath(__file__),
+               "--child-mapper", name, "--child-scene", scene, "--child-out", out]
+        try:
+            p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+            result = [l for l in p.stdout.splitlines() if l.startswith("PSI_CHILD ")]
+            if result and os.path.exists(out):
+                spf = json.loads(result[-1][len("PSI_CHILD "):])["seconds_per_frame"]
+                rows.append(("ParaView " + name, spf, np.load(out), ""))
+            else:
+                tail = (p.stderr.strip().splitlines() or ["no output"])[-1][:80]
+                rows.append(("ParaView " + name, None, None,
+                             "failed (exit code %d: %s)" % (p.returncode, tail)))
+        except subprocess.TimeoutExpired:
+            rows.append(("ParaView " + name, None, None,
+                         "timed out after %d s (--paraview-timeout)" % timeout))
+    return rows
+
+
+def errors(img, ref):
+    if img is None:
+        return float("nan"), float("nan")
+    e = np.abs(img - ref)
+    return float(e.mean()), float(e.max())
+
+
+def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
+           paraview_mappers=PARAVIEW_MAPPERS, title=None, paraview_timeout=120):
+    """Renders the active (or given) view's volume with every method and mapper, measures each
+    image against the exact reference at the same view, prints the table and writes
+    out_dir/report.md, accuracy.png and methods.png. Returns the rows as dicts."""
+    import psi_accuracy_plots
+
+    view = view or simple.GetActiveView()
+    src = src or simple.GetActiveSource()
+    rep = rep or simple.GetDisplayProperties(src, view)
+    os.makedirs(out_dir, exist_ok=True)
+    saved_type = rep.GetProperty("Representation").GetData()
+    with tempfile.TemporaryDirectory(prefix="psi_accuracy_") as work:
+        simple.Render(view)
+        cap = Capture(view, rep, src, work)
+        if rep.Representation != "Psi Volume":
+            rep.SetRepresentationType("Psi Volume")
+        simple.Render(view)
+        refs, ref_seconds = reference_image(cap)
+        ref = refs[0]
+        methods = list(rep.GetProperty("IntegrationMethod").Available)
+        rows = [dict(name=n, spf=spf, image=img, note="") for n, spf, img in
+                measure_psi(cap, methods, frames)]
+        rows += [dict(name=n, spf=spf, image=img, note=note) for n, spf, img, note in
+                 measure_paraview(cap, paraview_mappers, frames, paraview_timeout)]
+        rows.append(dict(name=REFERENCE, spf=ref_seconds, image=refs[-1], note=""))
+    rep.SetRepresentationType(saved_type)
+    simple.Render(view)
+    for r in rows:
+        r["mean"], r["max"] = errors(r["image"], ref)
+        r["err_s"] = r["mean"] * r["spf"] if r["spf"] is not None else float("nan")
+    info = dict(title=title or "%s (%s)" % (src.GetXMLLabel(), cap.array), cells=cap.cells,
+                size=cap.size, frames=frames)
+    print(psi_accuracy_plots.table_text(rows, info))
+    psi_accuracy_plots.write_all(rows, ref, info, out_dir)
+    return [{k: v for k, v in r.items() if k != "image"} for r in rows]
+
+
+def child_main(args):
+    """One of ParaView's mappers on the captured scene: prints PSI_CHILD {seconds_per_frame},
+    saves the image as .npy."""
+    with open(args.child_scene) as f:
+        s = json.load(f)
+    reader = simple.XMLUnstructuredGridReader(FileName=[s["mesh"]])
+    view = simple.CreateRenderView()
+    view.ViewSize = s["size"]
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = s["background"]
+    d = simple.Show(reader, view)
+    simple.ColorBy(d, (s["association"], s["array"]))
+    lut = simple.GetColorTransferFunction(s["array"])
+    pwf = simple.GetOpacityTransferFunction(s["array"])
+    lut.AutomaticRescaleRangeMode = "Never"
+    lut.RGBPoints = s["rgb_points"]
+    lut.ColorSpace = s["color_space"]
+    lut.VectorMode = s["vector_mode"]
+    lut.VectorComponent = s["vector_component"]
+    pwf.Points = s["opacity_points"]
+    psi_bench.set_mapper(d, args.child_mapper)
+    d.ScalarOpacityUnitDistance = s["unit"]
+    c = s["camera"]
+    view.CameraPosition, view.CameraFocalPoint, view.CameraViewUp = (
+        c["position"], c["focal"], c["up"])
+    view.CameraViewAngle = c["angle"]
+    view.CameraParallelProjection = c["parallel"]
+    view.CameraParallelScale = c["scale"]
+    spf = psi_bench.time_frames(view, s["frames"])
+    np.save(args.child_out, psi_testing.grab(view))
+    print("PSI_CHILD " + json.dumps(dict(seconds_per_frame=spf)))
+    psi_testing.exit_now(0)
+
+
+def command_scene(args):
+    """Source, array and a view for the command line: FILE, a shared dataset or the Wavelet."""
+    if args.file:
+        name = args.file
+        shared = psi_data.PLOT3D.get(name, psi_data.NAMED_FILES.get(name))
+        if shared and not os.path.exists(os.path.join(psi_data.SHARED_DATA, shared[0])):
+            print("SKIP: %s not found in %s" % (name, psi_data.SHARED_DATA))
+            psi_testing.exit_now(psi_testing.SKIP)
+        src, array = psi_data.open_any(name, args.array)
+    else:
+        src, array = psi_data.wavelet(args.wavelet_half)
+    if array is None:
+        raise SystemExit("%s has no point or cell array to render" % args.file)
+    view = simple.CreateRenderView()
+    view.ViewSize = [args.size, args.size]
+    view.OrientationAxesVisibility = 0
+    d = psi_data.show_volume(src, array, view, unit_distance=args.unit_distance)
+    simple.SetActiveView(view)
+    simple.SetActiveSource(src)
+    view.ResetCamera()
+    cam = view.GetActiveCamera()
+    cam.Azimuth(30)
+    cam.Elevation(20)
+    view.ResetCamera()
+    title = args.file or "Wavelet %d^3, tetrahedralized" % (2 * args.wavelet_half + 1)
+    return view, d, src, "%s (%s)" % (title, array)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    p.add_argument("file", nargs="?")
+    p.add_argument("--array")
+    p.add_argument("--out", default="psi_accuracy")
+    p.add_argument("--size", type=int, default=384)
+    p.add_argument("--frames", type=int, default=3)
+    p.add_argument("--wavelet-half", type=int, default=20)
+    p.add_argument("--unit-distance", type=float)
+    p.add_argument("--no-paraview", action="store_true", help="skip ParaView's own mappers")
+    p.add_argument("--paraview-mappers", nargs="*", default=PARAVIEW_MAPPERS,
+                   help="which of ParaView's mappers (default: %s)" % ", ".join(PARAVIEW_MAPPERS))
+    p.add_argument("--paraview-timeout", type=float, default=120,
+                   help="seconds each ParaView mapper may take (Z sweep is slow on big meshes)")
+    p.add_argument("--child-mapper", help=argparse.SUPPRESS)
+    p.add_argument("--child-scene", help=argparse.SUPPRESS)
+    p.add_argument("--child-out", help=argparse.SUPPRESS)
+    args = p.parse_args()
+    if args.child_mapper:
+        child_main(args)
+    psi_data.load_plugin(globals())
+    view, rep, src, title = command_scene(args)
+    report(view, rep, src, args.out, args.frames,
+           [] if args.no_paraview else args.paraview_mappers, title, args.paraview_timeout)
+    psi_testing.exit_now(0)
+
+
+if __name__ == "__main__":
+    main()

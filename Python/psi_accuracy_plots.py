@@ -1,0 +1,203 @@
+"""Outputs of the accuracy report (psi_accuracy.report): the table as text and Markdown, the
+error-against-time plot (accuracy.png) and the images with their error maps (methods.png).
+Uses matplotlib when it imports; otherwise writes the plots with VTK's PNG writer (plain points
+and images, no text) and says so in report.md."""
+import json
+import math
+import os
+import textwrap
+
+import numpy as np
+
+try:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    HAVE_MATPLOTLIB = True
+except ImportError:  # pragma: no cover - depends on the ParaView build
+    HAVE_MATPLOTLIB = False
+
+HEADER = ("method", "s/frame", "mean err", "max err", "mean err x s")
+EXPLAIN = ("Errors are absolute differences of 8-bit RGB channels (0..255) against the exact "
+           "reference at the same view, mean over all pixels and channels, and the worst one. "
+           "'mean err x s' is the mean error times the frame time: lower is better on both "
+           "counts (a method twice as fast at twice the error scores the same).")
+
+
+def _fmt(v, spec):
+    return "-" if v is None or (isinstance(v, float) and math.isnan(v)) else spec % v
+
+
+def table_rows(rows):
+    return [(r["name"], _fmt(r["spf"], "%.3f"), _fmt(r["mean"], "%.3f"), _fmt(r["max"], "%.0f"),
+             _fmt(r["err_s"], "%.3f"), r["note"]) for r in rows]
+
+
+def table_text(rows, info):
+    lines = ["", "%s: %d cells, %dx%d, %d timed frames per method" % (
+        info["title"], info["cells"], info["size"][0], info["size"][1], info["frames"])]
+    lines.append("%-44s %9s %9s %8s %13s" % HEADER)
+    for name, spf, mean, mx, es, note in table_rows(rows):
+        lines.append("%-44s %9s %9s %8s %13s %s" % (name, spf, mean, mx, es, note))
+    return "\n".join(lines)
+
+
+def table_markdown(rows):
+    out = ["| " + " | ".join(HEADER) + " | note |", "|---|---|---|---|---|---|"]
+    for row in table_rows(rows):
+        out.append("| " + " | ".join(row) + " |")
+    return "\n".join(out)
+
+
+def write_all(rows, ref, info, out_dir):
+    plotted = plot_accuracy(rows, info, os.path.join(out_dir, "accuracy.png"))
+    plot_methods(rows, ref, os.path.join(out_dir, "methods.png"))
+    with open(os.path.join(out_dir, "report.md"), "w") as f:
+        f.write("# What accuracy costs: %s\n\n" % info["title"])
+        f.write("%d cells, %dx%d pixels, mean of %d timed frames per method (after a warm-up "
+                "frame). %s\n\n" % (info["cells"], info["size"][0], info["size"][1],
+                                    info["frames"], EXPLAIN))
+        f.write(table_markdown(rows) + "\n\n")
+        if not plotted:
+            f.write("matplotlib is not available in this pvpython: accuracy.png and methods.png "
+                    "were written without labels (VTK's PNG writer).\n\n")
+        f.write("![error against time](accuracy.png)\n\n![images and error maps](methods.png)\n")
+    with open(os.path.join(out_dir, "report.json"), "w") as f:
+        json.dump(dict(info, rows=[{k: (None if isinstance(v, float) and math.isnan(v) else v)
+                                    for k, v in r.items() if k != "image"} for r in rows]),
+                  f, indent=1)
+    print("report: %s" % os.path.abspath(os.path.join(out_dir, "report.md")))
+
+
+def _spread(targets, gap):
+    """Positions near `targets` (sorted ascending, in [0, 1]) at least `gap` apart."""
+    pos = []
+    for t in targets:
+        pos.append(max(t, pos[-1] + gap) if pos else max(t, 0.0))
+    for i in range(len(pos) - 1, -1, -1):
+        upper = 1.0 if i == len(pos) - 1 else pos[i + 1] - gap
+        pos[i] = min(pos[i], upper)
+    return pos
+
+
+def _style(name):
+    if name.startswith("ParaView"):
+        return dict(marker="s", color="black")
+    if name.startswith("Exact"):
+        return dict(marker="*", color="crimson", s=120)
+    base = name.replace(" + adaptive", "")
+    palette = plt.get_cmap("tab10")
+    color = palette(sum(map(ord, base)) % 10)
+    return dict(marker="^" if "adaptive" in name else "o", color=color)
+
+
+def plot_accuracy(rows, info, path):
+    """Mean error against seconds per frame, both logarithmic; labels in a column to the right of
+    the axes, in the order of their points and joined to them, so that none overlap."""
+    pts = [r for r in rows if r["spf"] is not None and not math.isnan(r["mean"])]
+    if not HAVE_MATPLOTLIB:
+        return _fallback_scatter(pts, path)
+    positive = [r["mean"] for r in pts if r["mean"] > 0] or [1.0]
+    floor = min(positive) / 3.0
+    fig, ax = plt.subplots(figsize=(8.6, 0.26 * len(pts) + 2.2))
+    fig.subplots_adjust(left=0.1, right=0.56, top=0.9, bottom=0.12)
+    for r in pts:
+        ax.scatter(r["spf"], max(r["mean"], floor), zorder=3, **_style(r["name"]))
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    xs = [r["spf"] for r in pts]
+    ys = [max(r["mean"], floor) for r in pts]
+    ax.set_xlim(min(xs) / 1.5, max(xs) * 1.5)
+    ax.set_ylim(floor / 1.5, max(ys) * 1.5)
+    ax.set_xlabel("seconds per frame (%dx%d, llvmpipe)" % tuple(info["size"]))
+    ax.set_ylabel("mean error vs exact reference (0..255)")
+    ax.set_title(info["title"], fontsize=10)
+    ax.grid(True, which="both", alpha=0.25)
+    to_axes = ax.transAxes.inverted()
+    order = sorted(pts, key=lambda r: to_axes.transform(
+        ax.transData.transform((r["spf"], max(r["mean"], floor))))[1])
+    targets = [to_axes.transform(ax.transData.transform((r["spf"], max(r["mean"], floor))))[1]
+               for r in order]
+    slots = _spread(targets, min(0.9 / max(len(order), 1), 0.07))
+    for r, y in zip(order, slots):
+        label = r["name"] + (" (error 0)" if r["mean"] == 0 else "")
+        ax.annotate(label, xy=(r["spf"], max(r["mean"], floor)), xycoords="data",
+                    xytext=(1.04, y), textcoords="axes fraction", fontsize=8, va="center",
+                    arrowprops=dict(arrowstyle="-", color="0.6", lw=0.6, shrinkA=0, shrinkB=3))
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return True
+
+
+def plot_methods(rows, ref, path, pairs_per_line=4):
+    """Each image beside its error map (|image - reference|, mean over RGB, one color scale)."""
+    shown = [dict(name="Exact reference (CPU) image", image=ref, mean=0.0)] + [
+        r for r in rows if r["image"] is not None and not r["name"].startswith("Exact")]
+    if not HAVE_MATPLOTLIB:
+        return _fallback_tiles(shown, ref, path)
+    emax = max(8.0, max(float(np.percentile(np.abs(r["image"] - ref).mean(axis=2), 99.5))
+                        for r in shown))
+    lines = int(math.ceil(len(shown) / float(pairs_per_line)))
+    fig, axes = plt.subplots(lines, 2 * pairs_per_line,
+                             figsize=(2 * pairs_per_line * 1.45, lines * 1.85 + 0.5))
+    axes = np.atleast_2d(axes)
+    for a in axes.flat:
+        a.axis("off")
+    im = None
+    for k, r in enumerate(shown):
+        a, b = axes[k // pairs_per_line, 2 * (k % pairs_per_line)], \
+            axes[k // pairs_per_line, 2 * (k % pairs_per_line) + 1]
+        a.imshow(np.clip(r["image"], 0, 255).astype(np.uint8), origin="lower")
+        im = b.imshow(np.abs(r["image"] - ref).mean(axis=2), origin="lower", cmap="magma",
+                      vmin=0, vmax=emax)
+        a.set_title(textwrap.fill(r["name"].replace("ParaView ", "ParaView\n"), 22,
+                                  break_long_words=False, replace_whitespace=False), fontsize=7)
+        b.set_title("error, mean %.2f" % r["mean"], fontsize=7)
+    fig.subplots_adjust(left=0.01, right=0.92, top=0.93, bottom=0.02, wspace=0.05, hspace=0.45)
+    cax = fig.add_axes([0.935, 0.1, 0.012, 0.75])
+    fig.colorbar(im, cax=cax).set_label("|error| (0..255)", fontsize=7)
+    cax.tick_params(labelsize=7)
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
+    return True
+
+
+def _write_png(rgb, path):
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+    from vtkmodules.vtkIOImage import vtkPNGWriter
+
+    h, w, _ = rgb.shape
+    img = vtkImageData()
+    img.SetDimensions(w, h, 1)
+    arr = numpy_to_vtk(np.ascontiguousarray(rgb.reshape(-1, 3)).astype(np.uint8), deep=1)
+    img.GetPointData().SetScalars(arr)
+    writer = vtkPNGWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(img)
+    writer.Write()
+
+
+def _fallback_scatter(pts, path, n=400):
+    """Without matplotlib: log-log points on white, no text."""
+    canvas = np.full((n, n, 3), 255, np.uint8)
+    if pts:
+        x = np.log10([r["spf"] for r in pts])
+        y = np.log10([max(r["mean"], 1e-3) for r in pts])
+        fx = (x - x.min()) / max(np.ptp(x), 1e-9) * (n - 40) + 20
+        fy = (y - y.min()) / max(np.ptp(y), 1e-9) * (n - 40) + 20
+        for i, j in zip(fx.astype(int), fy.astype(int)):
+            canvas[j - 3:j + 4, i - 3:i + 4] = (30, 60, 200)
+    _write_png(canvas, path)
+    return False
+
+
+def _fallback_tiles(shown, ref, path):
+    tiles = []
+    for r in shown:
+        err = np.clip(np.abs(r["image"] - ref).mean(axis=2, keepdims=True) * 8, 0, 255)
+        tiles.append(np.concatenate([np.clip(r["image"], 0, 255), np.repeat(err, 3, 2)], 1))
+    _write_png(np.concatenate(tiles, 0), path)
+    return False

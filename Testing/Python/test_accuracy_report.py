@@ -1,0 +1,66 @@
+"""The accuracy report (Python/psi_accuracy.py, scripts/accuracy-report.sh) on a small scene:
+its outputs exist, its table has a row per integration method (adaptive sampling off and on)
+with finite errors, ParaView's 'Projected tetra' has a row (measured, or the reason it is not),
+the reference agrees with itself (error 0 between two runs), and partial pre-integration is
+close to the reference (a misplaced reference camera, a flipped image or a wrong transfer
+function gives errors of tens)."""
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, "..", "..", "Python"))
+import psi_accuracy  # noqa: E402
+import psi_testing  # noqa: E402
+from paraview import simple  # noqa: E402
+
+checks = psi_testing.Checks("accuracy_report")
+out = tempfile.mkdtemp(prefix="psi_accuracy_test_")
+cmd = [psi_accuracy.find_pvpython(), "--force-offscreen-rendering",
+       os.path.join(here, "..", "..", "Python", "psi_accuracy.py"),
+       "--wavelet-half", "3", "--size", "96", "--frames", "1", "--out", out,
+       "--paraview-mappers", "Projected tetra"]
+p = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
+print(p.stdout)
+print(p.stderr[-2000:])
+checks.check(p.returncode == 0, "report command exits 0 (got %d)" % p.returncode)
+for name in ("report.md", "accuracy.png", "methods.png", "report.json"):
+    path = os.path.join(out, name)
+    checks.check(os.path.exists(path) and os.path.getsize(path) > 0, "%s written" % name)
+if not os.path.exists(os.path.join(out, "report.json")):
+    checks.finish()
+
+with open(os.path.join(out, "report.json")) as f:
+    rows = {r["name"]: r for r in json.load(f)["rows"]}
+md = open(os.path.join(out, "report.md")).read()
+psi_accuracy.psi_data.load_plugin(globals())
+# The methods as the plugin offers them (the IntegrationMethod enumeration).
+view = simple.CreateRenderView()
+rep = simple.Show(simple.Tetrahedralize(Input=simple.Wavelet(WholeExtent=[0, 1, 0, 1, 0, 1])),
+                  view)
+rep.SetRepresentationType("Psi Volume")
+methods = list(rep.GetProperty("IntegrationMethod").Available)
+checks.check(len(methods) == 7, "seven integration methods offered (%d)" % len(methods))
+for m in methods:
+    for name in (m, m + " + adaptive"):
+        r = rows.get(name)
+        ok = r is not None and all(r[k] is not None and math.isfinite(r[k])
+                                   for k in ("spf", "mean", "max"))
+        checks.check(ok, "row '%s' with finite time and errors: %s" % (name, r))
+        checks.check("| %s |" % name in md, "report.md has a row for '%s'" % name)
+# ParaView's mappers run in child processes; one keeps the test short (the others go the same way).
+r = rows.get("ParaView Projected tetra")
+checks.check(r is not None and (r["mean"] is not None or r["note"]),
+             "row for ParaView Projected tetra (measured, or why not): %s" % r)
+ref = rows.get(psi_accuracy.REFERENCE)
+checks.check(ref is not None and ref["mean"] == 0 and ref["max"] == 0,
+             "the reference agrees with itself: %s" % ref)
+ppi = rows.get("Partial Pre-Integration")
+checks.check(ppi is not None and ppi["mean"] < 1.0 and ppi["max"] < 12,
+             "partial pre-integration close to the reference: %s" % ppi)
+shutil.rmtree(out, ignore_errors=True)
+checks.finish()

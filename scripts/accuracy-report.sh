@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# What accuracy costs, for your own data: renders FILE (or the embedded default, the
+# tetrahedralized Wavelet of run.sh) with every integration method of 'Psi Volume' (adaptive
+# sampling off and on) and ParaView's own volume mappers, measures each image against the exact
+# CPU reference at the same view, prints the table and writes DIR/report.md, DIR/accuracy.png and
+# DIR/methods.png.
+#   bash scripts/accuracy-report.sh [FILE|bluntfin|post|comb|spx] [--array NAME] [--out DIR]
+#                                   [--size 384] [--frames 3] [--no-paraview]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+bash "$root/scripts/setup-deps.sh"
+bash "$root/scripts/build.sh" >/dev/null
+xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" pvpython --force-offscreen-rendering \
+  "$root/Python/psi_accuracy.py" "$@"
