@@ -7,10 +7,10 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
-#include "vtkTextureUnitManager.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
 namespace
@@ -129,12 +129,11 @@ void PsiComputeProjector::ReserveBuffers(vtkOpenGLRenderWindow* renWin, size_t t
   if (!this->Vertices)
   {
     glGenBuffers(1, &this->Vertices);
-    glGenTextures(1, &this->VertexTexture);
   }
-  glBindBuffer(GL_TEXTURE_BUFFER, this->Vertices);
-  glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(vec4s * 4 * sizeof(float)), nullptr,
+  glBindBuffer(GL_ARRAY_BUFFER, this->Vertices);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vec4s * 4 * sizeof(GLuint)), nullptr,
     GL_DYNAMIC_COPY);
-  glBindBuffer(GL_TEXTURE_BUFFER, 0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
   (void)renWin;
   if (!this->Indices)
   {
@@ -160,19 +159,28 @@ void PsiComputeProjector::Draw(vtkOpenGLRenderWindow* renWin, unsigned int order
   this->ReserveBuffers(renWin, (perPass + 63) / 64 * 64);
   const GLuint compute = static_cast<GLuint>(this->Compute->GetHandle());
   const GLuint draw = static_cast<GLuint>(this->DrawProgram->GetHandle());
-  // The vertices reach the draw program as a buffer texture, on a unit VTK's manager lends.
-  vtkTextureUnitManager* units = renWin->GetTextureUnitManager();
-  const int unit = units->Allocate();
-  renWin->GetState()->vtkglActiveTexture(GL_TEXTURE0 + unit);
-  glBindTexture(GL_TEXTURE_BUFFER, this->VertexTexture);
-  glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, this->Vertices);
-  this->DrawProgram->SetUniformi("projected", unit);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, orderBuffer);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, tetBuffer);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, this->Vertices);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, this->Indices);
   glBindVertexArray(this->VAO);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->Indices);
+  // The vertices reach the draw program as attributes psiVertex0.. (PsiProjectedVS.glsl).
+  glBindBuffer(GL_ARRAY_BUFFER, this->Vertices);
+  const GLsizei stride = static_cast<GLsizei>(this->Vec4sPerVertex * 4 * sizeof(GLuint));
+  std::vector<GLuint> attributes;
+  for (int t = 0; t < this->Vec4sPerVertex; ++t)
+  {
+    const GLint loc = glGetAttribLocation(draw, ("psiVertex" + std::to_string(t)).c_str());
+    if (loc >= 0)
+    {
+      attributes.push_back(static_cast<GLuint>(loc));
+      glEnableVertexAttribArray(static_cast<GLuint>(loc));
+      glVertexAttribIPointer(static_cast<GLuint>(loc), 4, GL_UNSIGNED_INT, stride,
+        reinterpret_cast<const void*>(size_t(t) * 4 * sizeof(GLuint)));
+    }
+  }
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
   glEnable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
   const GLint firstLoc = glGetUniformLocation(compute, "firstTet");
   const GLint countLoc = glGetUniformLocation(compute, "tetCount");
@@ -183,22 +191,23 @@ void PsiComputeProjector::Draw(vtkOpenGLRenderWindow* renWin, unsigned int order
     glUniform1ui(firstLoc, static_cast<GLuint>(first));
     glUniform1ui(countLoc, static_cast<GLuint>(n));
     glDispatchCompute(static_cast<GLuint>((n + 63) / 64), 1, 1);
-    glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
     glUseProgram(draw);
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(n * this->SlotTriangles * 3),
       GL_UNSIGNED_INT, nullptr);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); // the next pass rewrites the buffers
   }
   glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+  for (GLuint loc : attributes)
+  {
+    glDisableVertexAttribArray(loc); // the next feature set may lay its vertices out otherwise
+  }
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
   glBindVertexArray(0);
   for (GLuint b = 0; b < 4; ++b)
   {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, 0);
   }
-  renWin->GetState()->vtkglActiveTexture(GL_TEXTURE0 + unit);
-  glBindTexture(GL_TEXTURE_BUFFER, 0);
-  units->Free(unit);
   renWin->GetShaderCache()->ReleaseCurrentShader();
   glUseProgram(0);
 }
@@ -221,8 +230,7 @@ void PsiComputeProjector::ReleaseGraphicsResources(vtkWindow* win)
   if (this->Vertices)
   {
     glDeleteBuffers(1, &this->Vertices);
-    glDeleteTextures(1, &this->VertexTexture);
   }
-  this->Indices = this->VAO = this->Vertices = this->VertexTexture = 0;
+  this->Indices = this->VAO = this->Vertices = 0;
   this->ReservedVec4s = this->ReservedIndices = 0;
 }

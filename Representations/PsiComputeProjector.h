@@ -57,9 +57,8 @@ private:
   std::string DrawVertex, DrawFragment;
   std::string Key;
   int SlotVertices = 0, SlotTriangles = 0, Vec4sPerVertex = 0;
-  unsigned int Vertices = 0;      // buffer: the projected vertices of one pass
-  unsigned int VertexTexture = 0; // buffer texture over Vertices (the draw program reads it)
-  unsigned int Indices = 0;       // buffer: the triangles' indices of one pass
+  unsigned int Vertices = 0; // buffer: the projected vertices of one pass (vertex attributes)
+  unsigned int Indices = 0;  // buffer: the triangles' indices of one pass
   unsigned int VAO = 0;
   size_t ReservedVec4s = 0, ReservedIndices = 0; // the buffers' sizes
 };

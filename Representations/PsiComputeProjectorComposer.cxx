@@ -184,13 +184,16 @@ ComputeProjectorSources ComposeComputeProjector(
       const std::string value = p.Columns > 1 ? v.Name + "[" + std::to_string(c) + "]" : v.Name;
       store += Line("  projectedVertices[base + " + std::to_string(texel) + "u] = " +
         ToTexel(p, value) + ";");
-      columns += std::string(c ? ", " : "") +
-        FromTexel(p, "texelFetch(projected, base + " + std::to_string(texel) + ")");
+      columns += std::string(c ? ", " : "") + FromTexel(p, "psiVertex" + std::to_string(texel));
     }
     load += Line("  " + v.Name + " = " + (p.Columns > 1 ? v.Type + "(" + columns + ")" : columns) +
       ";");
   }
   out.Vec4sPerVertex = texel;
+  for (int t = 0; t < texel; ++t)
+  {
+    declare += Line("in uvec4 psiVertex" + std::to_string(t) + ";");
+  }
   const std::string counts = "#define PSI_SLOT_VERTICES " + std::to_string(out.SlotVertices) +
     "\n#define PSI_SLOT_TRIANGLES " + std::to_string(out.SlotTriangles) +
     "\n#define PSI_VERTEX_VEC4S " + std::to_string(out.Vec4sPerVertex) + "\n";
