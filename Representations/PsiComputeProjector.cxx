@@ -10,6 +10,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -78,17 +79,29 @@ bool PsiComputeProjector::IsSupported(vtkOpenGLRenderWindow* renWin)
   return major > 4 || (major == 4 && minor >= 3);
 }
 
-bool PsiComputeProjector::Preferred(vtkOpenGLRenderWindow* renWin)
+bool PsiComputeProjector::Chosen(
+  int projector, vtkOpenGLRenderWindow* renWin, std::string& warning)
 {
-  return false && IsSupported(renWin); // TODO: measured choice
+  const char* site = std::getenv("PSI_PROJECTOR");
+  if (projector == 2) // Auto
+  {
+    projector = site && std::string(site) == "compute" ? 1 : 0;
+  }
+  if (projector == 1 && !IsSupported(renWin))
+  {
+    warning = "Psi Volume: the compute projector needs OpenGL 4.3; using the geometry shader.";
+    return false;
+  }
+  return projector == 1;
 }
 
 vtkShaderProgram* PsiComputeProjector::ReadyComputeProgram(vtkOpenGLRenderWindow* renWin,
-  const psi::ShaderFeatures& f, const char* integrator, std::string& error)
+  const psi::ShaderFeatures& f, const char* integrator, std::string& error, bool& built)
 {
   (void)renWin;
   const std::string key = f.Key();
-  if (!this->Compute || key != this->Key)
+  built = !this->Compute || key != this->Key;
+  if (built)
   {
     const psi::ComputeProjectorSources src = psi::ComposeComputeProjector(f, integrator);
     vtkNew<PsiComputeProgram> program;

@@ -28,13 +28,15 @@ public:
 
   /// Whether the context can run the projector (OpenGL 4.3: compute shaders, storage buffers).
   static bool IsSupported(vtkOpenGLRenderWindow* renWin);
-  /// Whether the compute projector is the faster one on this driver (vtkPsiVolumeMapper's
-  /// PROJECTOR_AUTO), by measurement (README, "Projectors").
-  static bool Preferred(vtkOpenGLRenderWindow* renWin);
-  /// Composes and builds the programs for `f` (once per feature key) and leaves the compute
-  /// program bound. Null, with `error` set, when a program does not build.
+  /// Whether this frame projects with compute shaders, for vtkPsiVolumeMapper's Projector
+  /// (0 geometry shader, 1 compute shader, 2 Auto: the environment's PSI_PROJECTOR, "geometry"
+  /// or "compute", else the geometry shader, measured the faster here; README, "Projectors").
+  /// The compute shader asked for where OpenGL 4.3 is missing gives false and a `warning`.
+  static bool Chosen(int projector, vtkOpenGLRenderWindow* renWin, std::string& warning);
+  /// Composes and builds the programs for `f` (once per feature key: `built` tells) and leaves
+  /// the compute program bound. Null, with `error` set, when a program does not build.
   vtkShaderProgram* ReadyComputeProgram(vtkOpenGLRenderWindow* renWin,
-    const psi::ShaderFeatures& f, const char* integrator, std::string& error);
+    const psi::ShaderFeatures& f, const char* integrator, std::string& error, bool& built);
   /// The draw program of the last ReadyComputeProgram, made ready (bound) by VTK's shader cache.
   vtkShaderProgram* ReadyDrawProgram(vtkOpenGLRenderWindow* renWin);
   /// Projects and draws `count` tetrahedra: the order is the uint32 buffer `orderBuffer` of

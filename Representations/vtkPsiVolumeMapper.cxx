@@ -1,6 +1,7 @@
 #include "vtkPsiVolumeMapper.h"
 
 #include "PsiComputeProjector.h"
+#include "PsiGeometryProjector.h"
 #include "PsiIntegrationMethods.h"
 #include "PsiMeshBuffers.h"
 #include "PsiProjectionClasses.h"
@@ -26,7 +27,6 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -51,15 +51,14 @@ struct vtkPsiVolumeMapper::Internals
   PsiVisibilityOrder Order;
   PsiTransferTables Tables;
   PsiRenderTarget Target;
-  PsiComputeProjector Projector;
+  PsiGeometryProjector Geometry;
+  PsiComputeProjector Compute;
 
   // Transfer-function nodes for adaptive sampling, for the property and range they came from.
   std::vector<float> Kinks;
   vtkMTimeType KinksTime = 0;
   std::array<double, 2> KinksRange{ { 0, 0 } };
 
-  vtkShaderProgram* Program = nullptr;
-  std::string ProgramKey;
   std::string LastWarning;
   vtkWindow* Context = nullptr;
 
@@ -72,9 +71,8 @@ struct vtkPsiVolumeMapper::Internals
     }
     this->Tables.ReleaseGraphicsResources(win);
     this->Target.ReleaseGraphicsResources(win);
-    this->Projector.ReleaseGraphicsResources(win);
-    this->Program = nullptr;
-    this->ProgramKey.clear();
+    this->Geometry.ReleaseGraphicsResources();
+    this->Compute.ReleaseGraphicsResources(win);
     this->Context = nullptr;
   }
 };
@@ -262,17 +260,21 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
 {
   Internals& I = *this->Impl;
   const bool gradients = features.IsoCount > 0 && features.IsoSmooth;
-  const bool compute = this->UseComputeProjector(renWin);
+  std::string warning; // the compute projector asked for where it cannot run
+  const bool compute = PsiComputeProjector::Chosen(this->Projector, renWin, warning);
+  if (!warning.empty())
+  {
+    vtkWarningMacro(<< warning);
+  }
   this->LastUsedProjector = compute ? PROJECTOR_COMPUTE_SHADER : PROJECTOR_GEOMETRY_SHADER;
-  vtkShaderProgram* program = compute ? this->ReadyComputeProjector(renWin, features)
-                                      : this->ReadyProgram(renWin, features);
+  vtkShaderProgram* program = this->ReadyProjection(renWin, features, compute);
   if (!program)
   {
     return;
   }
   this->SetShaderParameters(program, ren, vol, cam, features);
   I.Mesh.Activate(program, gradients);
-  vtkShaderProgram* draw = compute ? I.Projector.ReadyDrawProgram(renWin) : program;
+  vtkShaderProgram* draw = compute ? I.Compute.ReadyDrawProgram(renWin) : program;
   if (draw && compute)
   {
     this->SetShaderParameters(draw, ren, vol, cam, features);
@@ -281,9 +283,9 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   if (draw)
   {
     I.Target.DrawAndComposite(renWin, [&]() {
-      compute ? I.Projector.Draw(renWin, I.Order.GetIndexBuffer(), I.Order.GetSize(),
+      compute ? I.Compute.Draw(renWin, I.Order.GetIndexBuffer(), I.Order.GetSize(),
                   I.Mesh.GetTetBuffer())
-              : I.Order.Draw();
+              : I.Geometry.Draw(I.Order);
     });
   }
   I.Mesh.Deactivate();
@@ -420,69 +422,25 @@ psi::ShaderFeatures vtkPsiVolumeMapper::ChooseFeatures(
   return f;
 }
 
-// The program of these features, composed and compiled once (VTK's shader cache keeps it).
-vtkShaderProgram* vtkPsiVolumeMapper::ReadyProgram(
-  vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& features)
+// The projection program of this frame's projector for these features (each projector composes
+// and builds a program once per feature set).
+vtkShaderProgram* vtkPsiVolumeMapper::ReadyProjection(
+  vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& features, bool compute)
 {
   Internals& I = *this->Impl;
-  vtkOpenGLShaderCache* cache = renWin->GetShaderCache();
-  const std::string key = features.Key();
   this->LastFeatureDefines = features.Defines();
-  if (I.Program && I.ProgramKey == key)
-  {
-    cache->ReadyShaderProgram(I.Program);
-    return I.Program;
-  }
-  ++this->NumberOfProgramBuilds;
   const char* integrator = psi::IntegratorSource(features.Method);
-  if (!integrator)
-  {
-    vtkErrorMacro("Psi Volume: no GLSL integrator " << MethodInfo(features.Method).GlslName
-                                                    << ".glsl embedded.");
-    return nullptr;
-  }
-  const psi::ShaderSources src = psi::ComposeShaders(features, integrator);
-  I.Program = cache->ReadyShaderProgram(
-    src.Vertex.c_str(), src.Fragment.c_str(), src.Geometry.c_str());
-  I.ProgramKey = key;
-  if (!I.Program)
-  {
-    vtkErrorMacro("Psi Volume: the shader program failed to compile (see above).");
-  }
-  return I.Program;
-}
-
-// The projector of this frame: the one asked for, Auto resolved (see Projectors).
-bool vtkPsiVolumeMapper::UseComputeProjector(vtkOpenGLRenderWindow* renWin)
-{
-  int projector = this->Projector;
-  const char* site = std::getenv("PSI_PROJECTOR");
-  if (projector == PROJECTOR_AUTO)
-  {
-    projector = site && std::string(site) == "compute" ? PROJECTOR_COMPUTE_SHADER
-      : site && std::string(site) == "geometry"        ? PROJECTOR_GEOMETRY_SHADER
-                                                       : PsiComputeProjector::Preferred(renWin);
-  }
-  if (projector == PROJECTOR_COMPUTE_SHADER && !PsiComputeProjector::IsSupported(renWin))
-  {
-    vtkWarningMacro("Psi Volume: the compute projector needs OpenGL 4.3; using the geometry "
-                    "shader.");
-    projector = PROJECTOR_GEOMETRY_SHADER;
-  }
-  return projector == PROJECTOR_COMPUTE_SHADER;
-}
-
-// The compute projector's projection program for these features (built once per feature set).
-vtkShaderProgram* vtkPsiVolumeMapper::ReadyComputeProjector(
-  vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& features)
-{
-  this->LastFeatureDefines = features.Defines();
-  std::string error;
-  vtkShaderProgram* program = this->Impl->Projector.ReadyComputeProgram(
-    renWin, features, psi::IntegratorSource(features.Method), error);
+  std::string error = "the shader program failed to compile (see above).";
+  bool built = false;
+  vtkShaderProgram* program = !integrator ? nullptr
+    : compute ? I.Compute.ReadyComputeProgram(renWin, features, integrator, error, built)
+              : I.Geometry.ReadyProgram(renWin, features, integrator, built);
+  this->NumberOfProgramBuilds += built ? 1 : 0;
   if (!program)
   {
-    vtkErrorMacro("Psi Volume: the compute projector failed to build: " << error);
+    vtkErrorMacro("Psi Volume: " << (integrator ? error
+                                                : std::string("no GLSL integrator ") +
+                         MethodInfo(features.Method).GlslName + ".glsl embedded."));
   }
   return program;
 }

@@ -266,11 +266,8 @@ private:
   void UpdateTables(vtkOpenGLRenderWindow* renWin, vtkVolume* vol);
   psi::ShaderFeatures ChooseFeatures(
     vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam);
-  vtkShaderProgram* ReadyProgram(
-    vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& features);
-  vtkShaderProgram* ReadyComputeProjector(
-    vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& features);
-  bool UseComputeProjector(vtkOpenGLRenderWindow* renWin);
+  vtkShaderProgram* ReadyProjection(
+    vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& features, bool compute);
   void DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren, vtkVolume* vol,
     const PsiFrameCamera& cam, const psi::ShaderFeatures& features);
   void SetShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkVolume* vol,
