@@ -93,8 +93,9 @@ public:
   ///    order, drawn by a pass-through vertex shader (needs OpenGL 4.3; else the geometry
   ///    shader is used, with a warning). Compute shaders run on all of a CPU driver's threads.
   ///  - PROJECTOR_AUTO (default): the environment's PSI_PROJECTOR ("geometry" or "compute", a
-  ///    site's choice) when set, else the projector measured faster on the driver
-  ///    (DefaultProjector).
+  ///    site's choice) when set, else the geometry shader, measured the faster of the two with
+  ///    Mesa's llvmpipe (README, "Projectors"; the compute projector needs far less memory
+  ///    there).
   enum Projectors
   {
     PROJECTOR_GEOMETRY_SHADER = 0,
