@@ -3,11 +3,14 @@
 #include "PsiIntegrationMethods.h"
 
 #include "vtkDataSet.h"
-#include "vtkVolumeRepresentationPreprocessor.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
+#include "vtkPsiConformingTetrahedralize.h"
 #include "vtkPsiVolumeMapper.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolumeRepresentationPreprocessor.h"
 
 #include <algorithm>
 
@@ -30,6 +33,26 @@ int InRange(vtkObject* self, const char* name, int value, int lo, int hi)
                                                   << " is used.");
   return used;
 }
+
+// Whether `data` has cells other than tetrahedra (every dataset but an all-tetrahedra
+// unstructured grid; an empty one has nothing to split).
+bool HasNonTetrahedra(vtkDataSet* data)
+{
+  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(data);
+  if (!grid)
+  {
+    return data->GetNumberOfCells() > 0;
+  }
+  vtkUnsignedCharArray* types = grid->GetDistinctCellTypesArray();
+  for (vtkIdType i = 0; types && i < types->GetNumberOfValues(); ++i)
+  {
+    if (types->GetValue(i) != VTK_TETRA)
+    {
+      return true;
+    }
+  }
+  return false;
+}
 }
 
 vtkStandardNewMacro(vtkPsiVolumeRepresentation);
@@ -50,6 +73,8 @@ void vtkPsiVolumeRepresentation::SetActiveVolumeMapper(const char*)
 int vtkPsiVolumeRepresentation::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  vtkDataSet* input = vtkDataSet::GetData(inputVector[0], 0);
+  this->TetrahedralizeInput = input && HasNonTetrahedra(input); // see GetInternalOutputPort
   const int ok = this->Superclass::RequestData(request, inputVector, outputVector);
   vtkDataSet* data = vtkDataSet::SafeDownCast(this->Preprocessor->GetOutputDataObject(0));
   if (!data || data->GetNumberOfCells() == 0)
@@ -57,6 +82,20 @@ int vtkPsiVolumeRepresentation::RequestData(
     this->PsiMapper->ResetStatistics();
   }
   return ok;
+}
+
+// The superclass feeds its preprocessor (VTK's generic triangulator) from this port: for
+// non-tetrahedral input it gets the conforming tetrahedralization instead, whose all-tetrahedra
+// output the preprocessor passes through.
+vtkAlgorithmOutput* vtkPsiVolumeRepresentation::GetInternalOutputPort(int port, int conn)
+{
+  vtkAlgorithmOutput* input = this->Superclass::GetInternalOutputPort(port, conn);
+  if (port != 0 || conn != 0 || !this->TetrahedralizeInput)
+  {
+    return input;
+  }
+  this->Conforming->SetInputConnection(input);
+  return this->Conforming->GetOutputPort();
 }
 
 void vtkPsiVolumeRepresentation::SetIntegrationMethod(int method)
@@ -246,7 +285,7 @@ vtkIdType vtkPsiVolumeRepresentation::GetNumberOfTetrahedra()
 
 vtkIdType vtkPsiVolumeRepresentation::GetNumberOfSkippedCells()
 {
-  return this->PsiMapper->GetNumberOfSkippedCells();
+  return this->GetFrameStats().NumberOfSkippedCells;
 }
 
 double vtkPsiVolumeRepresentation::GetLastRenderSeconds()
@@ -259,9 +298,14 @@ double vtkPsiVolumeRepresentation::GetLastSortSeconds()
   return this->PsiMapper->GetLastSortSeconds();
 }
 
-const psi::FrameStats& vtkPsiVolumeRepresentation::GetFrameStats() const
+psi::FrameStats vtkPsiVolumeRepresentation::GetFrameStats() const
 {
-  return this->PsiMapper->GetFrameStats();
+  psi::FrameStats stats = this->PsiMapper->GetFrameStats();
+  if (this->TetrahedralizeInput) // cells the tetrahedralization could not split (2D, ...)
+  {
+    stats.NumberOfSkippedCells += this->Conforming->GetNumberOfSkippedCells();
+  }
+  return stats;
 }
 
 void vtkPsiVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)

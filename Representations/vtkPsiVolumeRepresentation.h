@@ -4,9 +4,12 @@
  *
  * Everything a ParaView user knows from 'Volume' is inherited from
  * vtkUnstructuredGridVolumeRepresentation: the color map and opacity function, the
- * ScalarOpacityUnitDistance, tetrahedralization of non-tetrahedral input on the way in
- * (vtkVolumeRepresentationPreprocessor), ordered compositing in parallel, and state files.
- * This subclass registers its own mapper as the only volume mapper and forwards its options.
+ * ScalarOpacityUnitDistance, ordered compositing in parallel, and state files. This subclass
+ * registers its own mapper as the only volume mapper and forwards its options. Non-tetrahedral
+ * input (hexahedra, voxels, wedges, pyramids, prisms, polyhedra, structured data) goes through
+ * the project's conforming tetrahedralization (vtkPsiConformingTetrahedralize: neighbouring
+ * cells split their shared faces alike, no zero-volume tetrahedra, face neighbours for MPVONC),
+ * once per input change, instead of VTK's generic triangulator.
  */
 #ifndef vtkPsiVolumeRepresentation_h
 #define vtkPsiVolumeRepresentation_h
@@ -16,6 +19,7 @@
 #include "vtkNew.h"
 #include "vtkUnstructuredGridVolumeRepresentation.h"
 
+class vtkPsiConformingTetrahedralize;
 class vtkPsiVolumeMapper;
 
 class PSIVOLUMEREPRESENTATIONS_EXPORT vtkPsiVolumeRepresentation
@@ -28,6 +32,11 @@ public:
 
   /// The mapper is fixed to vtkPsiVolumeMapper; the inherited 'SelectMapper' is ignored.
   void SetActiveVolumeMapper(const char*) override;
+
+  using Superclass::GetInternalOutputPort;
+  /// Port 0 of non-tetrahedral input is the conforming tetrahedralization's output (see the
+  /// class documentation).
+  vtkAlgorithmOutput* GetInternalOutputPort(int port, int conn) override;
 
   ///@{
   /// A psi::Method value: a row of psi::IntegrationMethodTable() (PsiIntegrationMethods.h).
@@ -80,7 +89,7 @@ public:
   vtkIdType GetLastSortCycles();
 #ifndef __VTK_WRAP__
   /// All of the above at once (vtkPsiFrameStatsInformation gathers it over the processes).
-  const psi::FrameStats& GetFrameStats() const;
+  psi::FrameStats GetFrameStats() const;
 #endif
   ///@}
 
@@ -88,10 +97,13 @@ protected:
   vtkPsiVolumeRepresentation();
   ~vtkPsiVolumeRepresentation() override;
 
-  /// ParaView does not call the mapper for empty input; its read-outs are reset here instead.
+  /// Non-tetrahedral input is tetrahedralized conformingly first. ParaView does not call the
+  /// mapper for empty input; its read-outs are reset here instead.
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   vtkNew<vtkPsiVolumeMapper> PsiMapper;
+  vtkNew<vtkPsiConformingTetrahedralize> Conforming;
+  bool TetrahedralizeInput = false;
 
 private:
   vtkPsiVolumeRepresentation(const vtkPsiVolumeRepresentation&) = delete;
