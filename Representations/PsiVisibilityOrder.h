@@ -42,6 +42,8 @@ public:
   void ReleaseGraphicsResources(vtkWindow* win);
 
   size_t GetLastCycles() const { return this->LastCycles; }
+  /// The order last uploaded, farthest first (what Draw draws).
+  const std::vector<uint32_t>& GetOrder() const { return this->Order; }
   double GetLastSortSeconds() const { return this->LastSortSeconds; }
 
 private:
