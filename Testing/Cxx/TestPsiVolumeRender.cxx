@@ -271,7 +271,8 @@ int main(int argc, char* argv[])
   outside();
   for (const Case& k :
     { Case{ "perspective_partial", static_cast<int>(psi::Method::PartialPreIntegration), 0.006 },
-      Case{ "perspective_average", static_cast<int>(psi::Method::Average), 0.02 } })
+      Case{ "perspective_average", static_cast<int>(psi::Method::Average), 0.02 },
+      Case{ "perspective_full", static_cast<int>(psi::Method::FullPreIntegration), 0.006 } })
   {
     mapper->SetIntegrationMethod(k.Method);
     const Result r = Compare(k.Name, win, ren, vol, refScene, nullptr, outDir);
@@ -331,6 +332,37 @@ int main(int argc, char* argv[])
     mapper->ExactPerspectiveSegmentsOn();
     PSI_CHECK(r.Max < 0.25 * linear.Max, "exact segments max error %g vs screen-linear %g", r.Max,
       linear.Max);
+  }
+
+  // Camera inside, and an opaque square just beyond the near plane, in front of cells that the
+  // near plane cuts: their rays enter those cells behind the square, so the scene-depth test of
+  // the clipped segment's front (the screen box itself is drawn on the near plane) must hide them.
+  {
+    vtkNew<vtkPlaneSource> square;
+    double c[3], d[3], p[3];
+    cam->GetPosition(p);
+    cam->GetDirectionOfProjection(d);
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] = p[k] + 0.4 * d[k];
+    }
+    square->SetCenter(c);
+    square->SetNormal(d);
+    vtkNew<vtkPolyDataMapper> squareMapper;
+    squareMapper->SetInputConnection(square->GetOutputPort());
+    vtkNew<vtkActor> near;
+    near->SetMapper(squareMapper);
+    near->GetProperty()->LightingOff();
+    near->GetProperty()->SetColor(0.2, 0.7, 0.3);
+    near->SetScale(0.25);
+    near->SetOrigin(c);
+    ren->AddActor(near);
+    const Result r = Compare("camera_inside_opaque", win, ren, vol, refScene, near, outDir);
+    PSI_CHECK(mapper->GetLastUsedNearPlaneClipping() && mapper->GetLastUsedOpaqueClipping(),
+      "inside view with opaque geometry: near-plane and opaque paths");
+    PSI_CHECK(r.Mean < 0.003 && r.Max < 0.03, "camera inside, opaque square: mean error %g max %g",
+      r.Mean, r.Max);
+    ren->RemoveActor(near);
   }
 
   // Opaque geometry through the middle of the volume: hides what is behind it, and the cells it
