@@ -433,6 +433,32 @@ int main(int argc, char* argv[])
     }
     PSI_CHECK(maxDiff == 0, "early discard changed the image (max %d/255)", maxDiff);
     PSI_CHECK(with.Mean < 0.006, "early discard scene vs reference: mean error %g", with.Mean);
+
+    // A coarse table (16 samples) with the opacity rising from zero over one sample interval:
+    // a cell whose scalar range ends inside that interval, or meets a single non-zero sample,
+    // sees a visible opacity there, and early discard must keep it (the test of the samples that
+    // bracket the cell's range, Maximo et al. 2010 §3.5).
+    mapper->SetTransferFunctionSamples(16);
+    const double step = (r[1] - r[0]) / 15;
+    s.Opacity->RemoveAllPoints();
+    s.Opacity->AddPoint(r[0], 0.0);
+    s.Opacity->AddPoint(r[0] + 7 * step, 0.0);
+    s.Opacity->AddPoint(r[0] + 8 * step, 0.8);
+    s.Opacity->AddPoint(r[1], 0.8);
+    win->Render();
+    PSI_CHECK(mapper->GetLastUsedEarlyDiscard(), "coarse table: early discard compiled in");
+    win->GetPixelData(0, 0, W - 1, H - 1, 0, a);
+    mapper->EarlyDiscardOff();
+    win->Render();
+    win->GetPixelData(0, 0, W - 1, H - 1, 0, b);
+    mapper->EarlyDiscardOn();
+    mapper->SetTransferFunctionSamples(1024);
+    maxDiff = 0;
+    for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
+    {
+      maxDiff = std::max(maxDiff, std::abs(int(a->GetValue(i)) - int(b->GetValue(i))));
+    }
+    PSI_CHECK(maxDiff == 0, "early discard changed the image, coarse table (max %d/255)", maxDiff);
     s.Opacity->DeepCopy(saved);
   }
 
