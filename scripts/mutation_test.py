@@ -42,7 +42,7 @@ def registered_tests():
     """CTest name -> executable target, from add_test(NAME x COMMAND target ...) in Testing/."""
     tests = {}
     for f in sorted((ROOT / "Testing").glob("*.cmake")) + [ROOT / "Testing" / "CMakeLists.txt"]:
-        for name, target in re.findall(r"add_test\(NAME\s+(\S+)\s+COMMAND\s+(\S+)", f.read_text()):
+        for name, target in re.findall(r"add_test\(NAME\s+(\S+)\s+COMMAND\s+([^\s)]+)", f.read_text()):
             tests[name] = target
     return tests
 

@@ -11,6 +11,8 @@ GL = ["PsiVolumeRender"]
 GLSL = ["IntegrationGLSL"]
 DEGENERATE = ["PsiDegenerateProjections"]
 ORDER = ["PsiVisibilityOrder"]
+# Geometry: the degenerate-projection test (about 10 s) first, then the full image test.
+GEOMETRY = DEGENERATE + GL
 
 MUTATIONS = [
     # --- Integrators (Shaders/PsiIntegrate*.glsl): Moreland & Angel 2004; Moreland's dissertation.
@@ -65,20 +67,20 @@ MUTATIONS = [
     # PsiVolumeGS; Maximo et al. 2010 §3.2).
     Mutation("gs_test4_negated", "Shaders/PsiProjectionClassesGS.glsl",
              "int t4 = int(sign(cross2(ndc[1] - ndc[2], ndc[1] - ndc[3]))) + 1;",
-             "int t4 = int(sign(cross2(ndc[1] - ndc[3], ndc[1] - ndc[2]))) + 1;", GL),
+             "int t4 = int(sign(cross2(ndc[1] - ndc[3], ndc[1] - ndc[2]))) + 1;", GEOMETRY),
     Mutation("gs_unpack_p3", "Shaders/PsiProjectionClassesGS.glsl",
-             "p3 = (entry >> 10) & 3;", "p3 = (entry >> 8) & 3;", GL),
+             "p3 = (entry >> 10) & 3;", "p3 = (entry >> 8) & 3;", GEOMETRY),
     Mutation("gs_class1_fan_closes_wrong", "Shaders/PsiProjectionClassesGS.glsl",
              "setEdge(p1, p2); emitThin(p2); setEdge(p2, p0); emitThin(p0);",
-             "setEdge(p1, p2); emitThin(p2); setEdge(p2, p0); emitThin(p1);", GL),
+             "setEdge(p1, p2); emitThin(p2); setEdge(p2, p0); emitThin(p1);", GEOMETRY),
     Mutation("gs_class1_not_perspective_correct", "Shaders/PsiProjectionClassesGS.glsl",
-             "    l /= vec3(clipP[p0].w, clipP[p1].w, clipP[p2].w);\n", "", GL),
+             "    l /= vec3(clipP[p0].w, clipP[p1].w, clipP[p2].w);\n", "", GEOMETRY),
     Mutation("gs_class2_second_triangle", "Shaders/PsiProjectionClassesGS.glsl",
              "emitThin(p3); emitThin(p0); setEdge(p3, p0); emitThick();",
-             "emitThin(p3); emitThin(p1); setEdge(p3, p1); emitThick();", GL),
+             "emitThin(p3); emitThin(p1); setEdge(p3, p1); emitThick();", GEOMETRY),
     Mutation("gs_class2_crossing_parameter", "Shaders/PsiProjectionClassesGS.glsl",
              "alongEdge(p2, p3, clamp(u, 0.0, 1.0), pb, sb);",
-             "alongEdge(p2, p3, clamp(t, 0.0, 1.0), pb, sb);", GL),
+             "alongEdge(p2, p3, clamp(t, 0.0, 1.0), pb, sb);", GEOMETRY),
     Mutation("gs_class3_second_triangle_dropped", "Shaders/PsiProjectionClassesGS.glsl",
              "    setEdge(p2, p0); emitThin(p0);\n    EndPrimitive();\n  }\n  else if (cls == 4)",
              "    EndPrimitive();\n  }\n  else if (cls == 4)", DEGENERATE),
@@ -92,9 +94,9 @@ MUTATIONS = [
              "    emitThin(p0); emitThin(p1); setEdge(p0, p1); emitThick();\n    EndPrimitive();\n  }\n}",
              "  }\n}", DEGENERATE),
     Mutation("gs_thick_front_back_swapped", "Shaders/PsiVolumeGS.glsl",
-             "if (farness(pa) <= farness(pb))", "if (farness(pa) >= farness(pb))", GL),
+             "if (farness(pa) <= farness(pb))", "if (farness(pa) >= farness(pb))", GEOMETRY),
     Mutation("gs_edge_point_screen_linear", "Shaders/PsiVolumeGS.glsl",
-             "float tc = (t / wb) / ((1.0 - t) / wa + t / wb);", "float tc = t;", GL),
+             "float tc = (t / wb) / ((1.0 - t) / wa + t / wb);", "float tc = t;", GEOMETRY),
     Mutation("gs_edge_param_reversed", "Shaders/PsiVolumeGS.glsl",
              "return clamp(dot(ndc[m] - ndc[a], e) / max(dot(e, e), 1e-30), 0.0, 1.0);",
              "return 1.0 - clamp(dot(ndc[m] - ndc[a], e) / max(dot(e, e), 1e-30), 0.0, 1.0);",
@@ -102,19 +104,19 @@ MUTATIONS = [
     # --- Segment reconstruction in the fragment shader.
     Mutation("exact_segment_distance_to_plane", "Shaders/PsiExactSegmentsFS.glsl",
              "D = (backPlane.w - dot(backPlane.xyz, frontPoint.xyz)) / dot(backPlane.xyz, dir);",
-             "D = (backPlane.w - dot(backPlane.xyz, frontPoint.xyz)) / length(backPlane.xyz);", GL),
+             "D = (backPlane.w - dot(backPlane.xyz, frontPoint.xyz)) / length(backPlane.xyz);", GEOMETRY),
     Mutation("exact_segment_back_scalar_sign", "Shaders/PsiExactSegmentsFS.glsl",
              "sb = sf + D * dot(scalarGrad.xyz, dir);", "sb = sf - D * dot(scalarGrad.xyz, dir);",
-             GL),
+             GEOMETRY),
     Mutation("exact_segment_thickness_bound", "Shaders/PsiExactSegmentsFS.glsl",
-             "D = clamp(D, 0.0, scalarGrad.w);", "D = clamp(D, 0.0, 0.5 * scalarGrad.w);", GL),
+             "D = clamp(D, 0.0, scalarGrad.w);", "D = clamp(D, 0.0, 0.5 * scalarGrad.w);", GEOMETRY),
     Mutation("exact_segment_back_plane_choice", "Shaders/PsiExactSegmentsGS.glsl",
              "planeDistance(fd, thickFront) ? fd : fc;", "planeDistance(fd, thickFront) ? fc : fd;",
-             GL),
+             GEOMETRY),
     Mutation("hapt_segment_front_back_swapped", "Shaders/PsiHAPTSegmentsFS.glsl",
-             "  sf = segment.x;\n  sb = segment.y;", "  sf = segment.y;\n  sb = segment.x;", GL),
+             "  sf = segment.x;\n  sb = segment.y;", "  sf = segment.y;\n  sb = segment.x;", GEOMETRY),
     Mutation("hapt_segment_half_thickness", "Shaders/PsiHAPTSegmentsFS.glsl",
-             "D = segment.z;", "D = 0.5 * segment.z;", GL),
+             "D = segment.z;", "D = 0.5 * segment.z;", GEOMETRY),
     # --- Near-plane clipping, opaque clipping, scene depth.
     Mutation("near_cull_needs_two_in_front", "Shaders/PsiNearClipGS.glsl",
              "nearClipped = inFront > 0;", "nearClipped = inFront > 1;", GL),
