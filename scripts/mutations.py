@@ -61,8 +61,8 @@ MUTATIONS = [
              "    std::swap(p[15], p[16]); // class 3 (3 on edge 01) and class 4 (1 on 3)\n",
              DEGENERATE),
     Mutation("table_class4_roles", "Core/PsiProjectionClasses.cxx",
-             "r.p = { { o[0], o[1], pa, pb } };", "r.p = { { pa, o[0], o[1], pb } };",
-             ["PsiMath"]),
+             "r.p = { { o[0], o[1], pa, pb } };", "r.p = { { pa, pb, o[0], o[1] } };",
+             ["PsiMath"] + DEGENERATE),
     # --- Geometry shader: classification and emission per class (Shaders/PsiProjectionClassesGS,
     # PsiVolumeGS; Maximo et al. 2010 §3.2).
     Mutation("gs_test4_negated", "Shaders/PsiProjectionClassesGS.glsl",
