@@ -8,7 +8,9 @@
 //  - MPVONC (the default) on convex Kuhn and 5-tetrahedra grids, perspective and parallel: no
 //    violation (Williams 1992 §5: exact for acyclic convex meshes; Delaunay grids are acyclic).
 //  - The centroid sort (Maximo et al. 2010 §3.1) against its own definition: keys descending
-//    (distance to the eye, or depth along the view direction), equal keys by ascending id.
+//    (distance to the eye, or depth along the view direction), equal keys by ascending id; and
+//    MPVONC's equal depths by ascending id (Williams 1992 §6 leaves ties open; the id makes the
+//    order reproducible).
 // Needs an X server (run under xvfb-run).
 #include "PsiTestCheck.h"
 #include "PsiTetSort.h"
@@ -278,6 +280,40 @@ void CheckCentroidDefinition(vtkUnstructuredGrid* grid, const double eye[3], boo
   std::printf("centroid sort (%s): %zu cells by key, %zu equal-key neighbours by id\n",
     parallel ? "parallel" : "perspective", order.size(), ties);
 }
+
+// MPVONC's documented tie rule (PsiMPVONCSort.cxx DepthKey: farthest first, ties by id), which
+// makes the order reproducible: unconnected congruent tetrahedra side by side at one depth are
+// all ready at once with equal keys, and must come in id order, in both projections.
+void CheckMPVONCTies()
+{
+  psi::TetMesh mesh;
+  const int n = 12;
+  for (int t = 0; t < n; ++t)
+  {
+    const float x = 3.0f * static_cast<float>(t);
+    const float p[4][3] = { { x, 0, 0 }, { x + 1, 0, 0 }, { x, 1, 0 }, { x, 0, 1 } };
+    for (const auto& q : p)
+    {
+      mesh.Points4.insert(mesh.Points4.end(), { q[0], q[1], q[2], 0.0f });
+    }
+    for (uint32_t v = 0; v < 4; ++v)
+    {
+      mesh.Tets.push_back(4 * static_cast<uint32_t>(t) + v);
+    }
+  }
+  std::unique_ptr<psi::TetSort> sort = psi::NewMPVONCSort();
+  sort->SetMesh(&mesh, {});
+  const double dir[3] = { 0, 0, -1 };
+  std::vector<uint32_t> order;
+  sort->Sort(dir, true, order);
+  bool byId = order.size() == size_t(n);
+  for (size_t k = 0; byId && k < order.size(); ++k)
+  {
+    byId = order[k] == k;
+  }
+  PSI_CHECK(byId, "MPVONC: equal depths not in id order (first %u, last %u)",
+    order.empty() ? 0u : order.front(), order.empty() ? 0u : order.back());
+}
 } // namespace
 
 int main()
@@ -352,6 +388,7 @@ int main()
     CheckCentroidDefinition(grid, axis, true);
     CheckCentroidDefinition(grid, skew, true);
   }
+  CheckMPVONCTies();
   std::printf("%s\n", psitest::Failures() ? "TestPsiVisibilityOrder FAILED" : "TestPsiVisibilityOrder passed");
   return psitest::Failures() ? 1 : 0;
 }
