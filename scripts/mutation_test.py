@@ -24,6 +24,7 @@ import os
 import pathlib
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -134,6 +135,10 @@ def run_test(work, name, timeout, log):
 
 
 def main():
+    # Interrupted (Ctrl-C, kill), the mutated file is still restored (the finally below); the
+    # scratch tree is re-synchronized with the source tree at the next start anyway.
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(130))
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--list", action="store_true")
     ap.add_argument("--check", action="store_true")
