@@ -90,7 +90,9 @@ def sync_tree(src, dst):
             if d.is_file() and d.read_bytes() == s.read_bytes():
                 continue
             d.parent.mkdir(parents=True, exist_ok=True)
-            shutil.copy2(s, d)
+            # a fresh time stamp: newer than anything built from a mutated copy, so it rebuilds
+            shutil.copyfile(s, d)
+            shutil.copymode(s, d)
     for dirpath, dirnames, filenames in os.walk(dst):
         rel_dir = pathlib.Path(dirpath).relative_to(dst)
         dirnames[:] = [d for d in dirnames if not is_build_dir(rel_dir / d)]
