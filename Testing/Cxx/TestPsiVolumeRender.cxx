@@ -401,6 +401,15 @@ int main(int argc, char* argv[])
       avg.Max);
     PSI_CHECK(ppi.Max < 0.01 && ppi.Mean < 0.002, "coarse partial pre-integration error %g / %g",
       ppi.Mean, ppi.Max);
+    // The opaque plane through coarse cells: each cut segment ends at the plane with the scalar
+    // there (the scalar is linear along the ray, so it is interpolated to the cut).
+    vtkSmartPointer<vtkActor> cutPlane = psitest::MakeOpaquePlane(9);
+    ren->AddActor(cutPlane);
+    ren->ResetCameraClippingRange();
+    const Result cut = Compare("coarse_opaque", win, ren, vol, coarseRef, cutPlane, outDir);
+    ren->RemoveActor(cutPlane);
+    PSI_CHECK(cut.Max < 0.01 && cut.Mean < 0.002, "coarse cells cut by an opaque plane: %g / %g",
+      cut.Mean, cut.Max);
   }
 
   // HAPT §3.5 early discard: with zero opacity over the lower half of the scalar range, the
