@@ -396,11 +396,18 @@ int main(int argc, char* argv[])
     const Result avg = Compare("coarse_average", win, ren, vol, coarseRef, nullptr, outDir);
     mapper->SetIntegrationMethod(static_cast<int>(psi::Method::PartialPreIntegration));
     const Result ppi = Compare("coarse_partial", win, ren, vol, coarseRef, nullptr, outDir);
+    // Röttger et al. 2000 §4 with its table's sub-segments composited front to back: over
+    // coarse cells the color changes along each segment, and the order of the pieces shows.
+    mapper->SetIntegrationMethod(static_cast<int>(psi::Method::FullPreIntegration));
+    const Result full = Compare("coarse_full", win, ren, vol, coarseRef, nullptr, outDir);
+    mapper->SetIntegrationMethod(static_cast<int>(psi::Method::PartialPreIntegration));
     // Means sit near the 8-bit quantization floor (~0.001) for both; the worst pixel tells them apart.
     PSI_CHECK(ppi.Max < 0.5 * avg.Max, "partial pre-integration max %g vs average %g", ppi.Max,
       avg.Max);
     PSI_CHECK(ppi.Max < 0.01 && ppi.Mean < 0.002, "coarse partial pre-integration error %g / %g",
       ppi.Mean, ppi.Max);
+    PSI_CHECK(full.Max < 0.01 && full.Mean < 0.002, "coarse full pre-integration error %g / %g",
+      full.Mean, full.Max);
     // The opaque plane through coarse cells: each cut segment ends at the plane with the scalar
     // there (the scalar is linear along the ray, so it is interpolated to the cut).
     vtkSmartPointer<vtkActor> cutPlane = psitest::MakeOpaquePlane(9);
