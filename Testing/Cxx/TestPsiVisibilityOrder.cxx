@@ -1,16 +1,16 @@
 // The visibility order the mapper draws, checked against an exact criterion instead of an image:
 // compositing back to front is right exactly when, along every ray, each tetrahedron the ray
-// crosses is drawn before the ones in front of it (Williams 1992 §2; Maximo et al. 2010 §3.1).
+// crosses is drawn before the ones in front of it (Williams 1992; Maximo et al. 2010 §3.1).
 // Rays through a jittered grid of pixels are intersected exactly (double precision) with every
 // tetrahedron, and each pair of successive cells along a ray is checked in the drawn order. One
 // swapped pair of overlapping cells is one violation, so this sees a few misordered neighbours
 // that an 8-bit image of a smooth field would hide.
 //  - MPVONC (the default) on convex Kuhn and 5-tetrahedra grids, perspective and parallel: no
-//    violation (Williams 1992 §5: exact for acyclic convex meshes; Delaunay grids are acyclic).
+//    violation (Williams 1992 §4-5: exact for acyclic convex meshes; these grids are Delaunay,
+//    and Delaunay meshes are acyclic, Edelsbrunner 1990).
 //  - The centroid sort (Maximo et al. 2010 §3.1) against its own definition: keys descending
 //    (distance to the eye, or depth along the view direction), equal keys by ascending id; and
-//    MPVONC's equal depths by ascending id (Williams 1992 §6 leaves ties open; the id makes the
-//    order reproducible).
+//    MPVONC's equal depths by ascending id (the rule that makes its order reproducible).
 // Needs an X server (run under xvfb-run).
 #include "PsiTestCheck.h"
 #include "PsiTetSort.h"
