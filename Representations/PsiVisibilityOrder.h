@@ -45,6 +45,8 @@ public:
   unsigned int GetIndexBuffer() const { return this->IndexBuffer; }
   size_t GetSize() const { return this->Order.size(); }
   size_t GetLastCycles() const { return this->LastCycles; }
+  /// The order last uploaded, farthest first (what Draw draws).
+  const std::vector<uint32_t>& GetOrder() const { return this->Order; }
   double GetLastSortSeconds() const { return this->LastSortSeconds; }
 
 private:

@@ -479,6 +479,11 @@ void vtkPsiVolumeMapper::DeactivateTables(const psi::ShaderFeatures& f)
     MethodInfo(f.Method).NeedsPreIntegrationTable);
 }
 
+const std::vector<uint32_t>& vtkPsiVolumeMapper::GetLastDrawOrder() const
+{
+  return this->Impl->Order.GetOrder();
+}
+
 void vtkPsiVolumeMapper::ResetStatistics()
 {
   const double pre = this->Stats.LastPreIntegrationSeconds;

@@ -28,6 +28,7 @@
 #include "PsiFrameStats.h"
 #include "PsiIsosurfaceList.h"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -210,6 +211,9 @@ public:
   /// Cycles MPVONC had to break in the last sort.
   vtkIdType GetLastSortCycles() const { return this->Stats.LastSortCycles; }
   double GetLastRenderSeconds() const { return this->Stats.LastRenderSeconds; }
+  /// The tetrahedra in the order the last frame drew them (farthest first; ids of the gathered
+  /// mesh, which are the input's cell ids when every cell is a drawable tetrahedron).
+  const std::vector<uint32_t>& GetLastDrawOrder() const;
   /// Zeroes the read-outs above (no frame drawn, e.g. empty input).
   void ResetStatistics();
   /// Whether the last frame needed the near-plane path (camera inside or close to the mesh).

@@ -19,3 +19,20 @@ set_tests_properties(PsiPython.isosurfaces PROPERTIES
   ENVIRONMENT "PSI_PLUGIN=$<TARGET_FILE:PsiVolume>;PSI_TEST_OUTPUT=${CMAKE_BINARY_DIR}/Testing/Images"
   SKIP_RETURN_CODE 77
   TIMEOUT 600)
+
+# Degenerate projections (truth-table classes 3 and 4, exact in float) and the drawn visibility
+# order, both against exact references (PsiReferenceRaycaster; ray/tetrahedron intersection).
+add_executable(TestPsiDegenerateProjections Cxx/TestPsiDegenerateProjections.cxx)
+target_link_libraries(TestPsiDegenerateProjections PRIVATE PsiVolume::Representations PsiTestSupport
+  VTK::RenderingOpenGL2 VTK::FiltersGeneral VTK::ImagingCore VTK::IOImage VTK::RenderingCore)
+vtk_module_autoinit(TARGETS TestPsiDegenerateProjections MODULES VTK::RenderingOpenGL2)
+add_test(NAME PsiDegenerateProjections
+  COMMAND TestPsiDegenerateProjections "${CMAKE_BINARY_DIR}/Testing/Images")
+set_tests_properties(PsiDegenerateProjections PROPERTIES TIMEOUT 120)
+
+add_executable(TestPsiVisibilityOrder Cxx/TestPsiVisibilityOrder.cxx)
+target_link_libraries(TestPsiVisibilityOrder PRIVATE PsiVolume::Representations PsiVolume::Core
+  VTK::RenderingOpenGL2 VTK::FiltersGeneral VTK::RenderingCore)
+vtk_module_autoinit(TARGETS TestPsiVisibilityOrder MODULES VTK::RenderingOpenGL2)
+add_test(NAME PsiVisibilityOrder COMMAND TestPsiVisibilityOrder)
+set_tests_properties(PsiVisibilityOrder PROPERTIES TIMEOUT 120)

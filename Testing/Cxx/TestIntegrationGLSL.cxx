@@ -6,6 +6,7 @@
 // is run (the harness binds the Psi table only). Needs an X server (xvfb-run).
 #include "PsiHardCases.h"
 #include "PsiIntegrationMethods.h"
+#include "PsiIntegratorInputsFS.h"
 #include "PsiIntegratorSources.h"
 #include "PsiReferenceIntegrals.h"
 #include "PsiTable.h"
@@ -30,23 +31,18 @@
 
 namespace
 {
-// The harness: transfer() returns the front sample for s = 0 and the back sample for s = 1, the
-// Psi table coordinate is the mapper's (PsiVolumeFS.glsl psiCoord), then the method's function.
+// The harness: transfer() returns the front sample for s = 0 and the back sample for s = 1, then
+// the shipped integrator inputs (Shaders/PsiIntegratorInputsFS.glsl: the Psi table coordinate,
+// the unit distance), then the method's function.
 const char* HarnessFS = R"(//VTK::System::Dec
 //VTK::Output::Dec
 in vec2 texCoord;
 uniform sampler2D frontSamples; // rgb luminance, a tau
 uniform sampler2D backSamples;
 uniform sampler2D lengths;      // r: D
-uniform sampler2D psiTable;
-uniform vec2 psiScaleShift;
-uniform float unitDistance;
 vec4 gFront, gBack;
 vec4 transfer(float s) { return s < 0.5 ? gFront : gBack; }
-vec2 psiCoord(vec2 tauD)
-{
-  return (1.0 - inversesqrt(tauD + 1.0)) * psiScaleShift.x + psiScaleShift.y;
-}
+//PSI::Integrator::Inputs
 //PSI::Integrator::Impl
 void main()
 {
@@ -108,6 +104,7 @@ double GpuVsCpuBound(psi::Method m)
       return 2e-6;
   }
 }
+constexpr double UnitDistance = 1.5;
 } // namespace
 
 int main()
@@ -117,7 +114,13 @@ int main()
   rw->SetOffScreenRendering(1);
   rw->Render();
   vtkOpenGLRenderWindow* win = vtkOpenGLRenderWindow::SafeDownCast(rw);
-  const std::vector<Case> cases = MakeCases();
+  // A unit distance other than 1 (ScalarOpacityUnitDistance), so that each method's use of it
+  // is compared with the C++ version's.
+  std::vector<Case> cases = MakeCases();
+  for (Case& c : cases)
+  {
+    c.S.unit = UnitDistance;
+  }
   const int W = static_cast<int>(cases.size());
   std::vector<float> front(4 * W), back(4 * W), len(4 * W, 0.0f);
   for (int i = 0; i < W; ++i)
@@ -182,6 +185,7 @@ int main()
     }
     std::string fs = HarnessFS;
     fs.replace(fs.find("//PSI::Integrator::Impl"), 23, source);
+    fs.replace(fs.find("//PSI::Integrator::Inputs"), 25, PsiIntegratorInputsFS);
     vtkOpenGLQuadHelper quad(win, nullptr, fs.c_str(), "");
     PSI_CHECK(quad.Program != nullptr, "%s: GLSL does not compile", info.Name);
     if (!quad.Program)
@@ -206,7 +210,7 @@ int main()
     const float psiScaleShift[2] = { static_cast<float>((table.N - 1.0) / table.N),
       static_cast<float>(0.5 / table.N) };
     quad.Program->SetUniform2f("psiScaleShift", psiScaleShift);
-    quad.Program->SetUniformf("unitDistance", 1.0f);
+    quad.Program->SetUniformf("unitDistance", static_cast<float>(UnitDistance));
     quad.Render();
     std::vector<float> out(4 * W);
     fbo->ActivateReadBuffer(0);

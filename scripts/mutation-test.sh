@@ -1,0 +1,6 @@
+#!/bin/sh
+# Mutation testing of the fast tests: applies each mutation of scripts/mutations.py to a scratch
+# copy of the tree, rebuilds incrementally, runs the tests named for it, prints the table and the
+# score, exits non-zero below 95%. Options: --list, --check, --only NAME..., --jobs N,
+# --timeout S, --workdir DIR (see scripts/mutation_test.py).
+exec python3 "$(dirname "$0")/mutation_test.py" "$@"
