@@ -79,8 +79,7 @@ bool PsiComputeProjector::IsSupported(vtkOpenGLRenderWindow* renWin)
   return major > 4 || (major == 4 && minor >= 3);
 }
 
-bool PsiComputeProjector::Chosen(
-  int projector, vtkOpenGLRenderWindow* renWin, std::string& warning)
+bool PsiComputeProjector::Chosen(int projector, vtkOpenGLRenderWindow* renWin)
 {
   const char* site = std::getenv("PSI_PROJECTOR");
   if (projector == 2) // Auto
@@ -89,7 +88,8 @@ bool PsiComputeProjector::Chosen(
   }
   if (projector == 1 && !IsSupported(renWin))
   {
-    warning = "Psi Volume: the compute projector needs OpenGL 4.3; using the geometry shader.";
+    vtkGenericWarningMacro(
+      "Psi Volume: the compute projector needs OpenGL 4.3; using the geometry shader.");
     return false;
   }
   return projector == 1;

@@ -31,8 +31,8 @@ public:
   /// Whether this frame projects with compute shaders, for vtkPsiVolumeMapper's Projector
   /// (0 geometry shader, 1 compute shader, 2 Auto: the environment's PSI_PROJECTOR, "geometry"
   /// or "compute", else the geometry shader, measured the faster here; README, "Projectors").
-  /// The compute shader asked for where OpenGL 4.3 is missing gives false and a `warning`.
-  static bool Chosen(int projector, vtkOpenGLRenderWindow* renWin, std::string& warning);
+  /// The compute shader asked for where OpenGL 4.3 is missing gives false, with a warning.
+  static bool Chosen(int projector, vtkOpenGLRenderWindow* renWin);
   /// Composes and builds the programs for `f` (once per feature key: `built` tells) and leaves
   /// the compute program bound. Null, with `error` set, when a program does not build.
   vtkShaderProgram* ReadyComputeProgram(vtkOpenGLRenderWindow* renWin,

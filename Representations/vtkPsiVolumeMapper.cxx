@@ -260,12 +260,7 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
 {
   Internals& I = *this->Impl;
   const bool gradients = features.IsoCount > 0 && features.IsoSmooth;
-  std::string warning; // the compute projector asked for where it cannot run
-  const bool compute = PsiComputeProjector::Chosen(this->Projector, renWin, warning);
-  if (!warning.empty())
-  {
-    vtkWarningMacro(<< warning);
-  }
+  const bool compute = PsiComputeProjector::Chosen(this->Projector, renWin);
   this->LastUsedProjector = compute ? PROJECTOR_COMPUTE_SHADER : PROJECTOR_GEOMETRY_SHADER;
   vtkShaderProgram* program = this->ReadyProjection(renWin, features, compute);
   if (!program)

@@ -28,7 +28,11 @@ target_link_libraries(TestPsiDegenerateProjections PRIVATE PsiVolume::Representa
 vtk_module_autoinit(TARGETS TestPsiDegenerateProjections MODULES VTK::RenderingOpenGL2)
 add_test(NAME PsiDegenerateProjections
   COMMAND TestPsiDegenerateProjections "${CMAKE_BINARY_DIR}/Testing/Images")
-set_tests_properties(PsiDegenerateProjections PROPERTIES TIMEOUT 120)
+set_tests_properties(PsiDegenerateProjections PROPERTIES TIMEOUT 120
+  ENVIRONMENT "PSI_PROJECTOR=geometry")
+add_test(NAME PsiDegenerateProjections.compute COMMAND TestPsiDegenerateProjections)
+set_tests_properties(PsiDegenerateProjections.compute PROPERTIES TIMEOUT 120
+  ENVIRONMENT "PSI_PROJECTOR=compute")
 
 add_executable(TestPsiVisibilityOrder Cxx/TestPsiVisibilityOrder.cxx)
 target_link_libraries(TestPsiVisibilityOrder PRIVATE PsiVolume::Representations PsiVolume::Core

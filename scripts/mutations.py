@@ -160,8 +160,8 @@ MUTATIONS = [
              "acc = Over(acc, IntegrateWithPsi(seg, psiValue));",
              "acc = Over(IntegrateWithPsi(seg, psiValue), acc);", GL),
     Mutation("preintegration_piece_length", "Core/PsiPreIntegrationTable.cxx",
-             "const double d = t.MaxLength * k / (nd - 1) / pieces;",
-             "const double d = t.MaxLength * k / (nd - 1);", GL),
+             "const double d = t.Axis.Length(k) / pieces;",
+             "const double d = t.Axis.Length(k);", GL),
     # --- Visibility sorts (Maximo et al. 2010 §3.1; Williams 1992 §4-7) and their tie-breaks.
     Mutation("draw_order_adjacent_pairs_swapped", "Representations/PsiVisibilityOrder.cxx",
              "  this->LastCycles = this->Sort->Sort(eye, parallel, this->Order);\n",

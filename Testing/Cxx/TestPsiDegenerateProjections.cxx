@@ -400,6 +400,10 @@ int main(int argc, char* argv[])
     }
   }
 
+  PSI_CHECK(psitest::RequestedProjector() < 0 ||
+      mapper->GetLastUsedProjector() == psitest::RequestedProjector(),
+    "the last frame used projector %d, not the one asked for (PSI_PROJECTOR)",
+    mapper->GetLastUsedProjector());
   std::printf("%s\n",
     psitest::Failures() ? "TestPsiDegenerateProjections FAILED" : "TestPsiDegenerateProjections passed");
   return psitest::Failures() ? 1 : 0;
