@@ -35,7 +35,7 @@ set_tests_properties(PsiDegenerateProjections.compute PROPERTIES TIMEOUT 120
   ENVIRONMENT "PSI_PROJECTOR=compute")
 
 add_executable(TestPsiVisibilityOrder Cxx/TestPsiVisibilityOrder.cxx)
-target_link_libraries(TestPsiVisibilityOrder PRIVATE PsiVolume::Representations PsiVolume::Core
+target_link_libraries(TestPsiVisibilityOrder PRIVATE PsiVolume::Representations PsiVolume::Core PsiTestSupport
   VTK::RenderingOpenGL2 VTK::FiltersGeneral VTK::RenderingCore)
 vtk_module_autoinit(TARGETS TestPsiVisibilityOrder MODULES VTK::RenderingOpenGL2)
 add_test(NAME PsiVisibilityOrder COMMAND TestPsiVisibilityOrder)

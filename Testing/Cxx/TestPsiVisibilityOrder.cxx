@@ -13,6 +13,7 @@
 //    MPVONC's equal depths by ascending id (the rule that makes its order reproducible).
 // Needs an X server (run under xvfb-run).
 #include "PsiTestCheck.h"
+#include "PsiTestScene.h"
 #include "PsiTetSort.h"
 #include "vtkPsiVolumeMapper.h"
 
@@ -72,45 +73,7 @@ void MakeGridTets(vtkUnstructuredGrid* grid, int n, bool kuhn)
     s->InsertNextValue(std::sin(p[0] + 0.3 * p[1]) + 0.2 * p[2]);
   }
   image->GetPointData()->SetScalars(s);
-  if (!kuhn)
-  {
-    vtkNew<vtkDataSetTriangleFilter> tets;
-    tets->SetInputData(image);
-    tets->Update();
-    grid->ShallowCopy(tets->GetOutput());
-    return;
-  }
-  vtkNew<vtkPoints> pts;
-  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
-  {
-    pts->InsertNextPoint(image->GetPoint(i));
-  }
-  grid->SetPoints(pts);
-  grid->GetPointData()->SetScalars(s);
-  const int perms[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 },
-    { 2, 1, 0 } };
-  const int d = n + 1;
-  for (int k = 0; k < n; ++k)
-  {
-    for (int j = 0; j < n; ++j)
-    {
-      for (int i = 0; i < n; ++i)
-      {
-        for (const auto& perm : perms)
-        {
-          int c[3] = { i, j, k };
-          vtkIdType ids[4];
-          ids[0] = c[0] + d * (c[1] + d * c[2]);
-          for (int step = 0; step < 3; ++step)
-          {
-            ++c[perm[step]];
-            ids[step + 1] = c[0] + d * (c[1] + d * c[2]);
-          }
-          grid->InsertNextCell(VTK_TETRA, 4, ids);
-        }
-      }
-    }
-  }
+  psitest::TetrahedralizeImage(image, kuhn, grid);
 }
 
 struct Tet

@@ -104,9 +104,8 @@ psi::ReferenceScene MakeReference(Scene& s)
 using psitest::Compare;
 using psitest::Result;
 
-// The Wavelet on [-half, half]^3 with cells of `cell` units, each cube split into the 6 Kuhn
-// tetrahedra around its main diagonal (the split of vtkPsiConformingTetrahedralize): long thin
-// cells whose centroid order is wrong across many shared faces.
+// The Wavelet on [-half, half]^3 with cells of `cell` units, split into Kuhn tetrahedra
+// (psitest::AddKuhnTets).
 void MakeKuhnWavelet(vtkUnstructuredGrid* grid, int half, double cell)
 {
   vtkNew<vtkRTAnalyticSource> wavelet;
@@ -124,29 +123,7 @@ void MakeKuhnWavelet(vtkUnstructuredGrid* grid, int half, double cell)
   grid->SetPoints(points);
   grid->GetPointData()->SetScalars(image->GetPointData()->GetScalars());
   grid->Allocate(6 * (n - 1) * (n - 1) * (n - 1));
-  const int perms[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 },
-    { 2, 1, 0 } };
-  for (int k = 0; k + 1 < n; ++k)
-  {
-    for (int j = 0; j + 1 < n; ++j)
-    {
-      for (int i = 0; i + 1 < n; ++i)
-      {
-        for (const auto& perm : perms)
-        {
-          int c[3] = { i, j, k };
-          vtkIdType ids[4];
-          ids[0] = c[0] + n * (c[1] + n * c[2]);
-          for (int step = 0; step < 3; ++step)
-          {
-            ++c[perm[step]];
-            ids[step + 1] = c[0] + n * (c[1] + n * c[2]);
-          }
-          grid->InsertNextCell(VTK_TETRA, 4, ids);
-        }
-      }
-    }
-  }
+  psitest::AddKuhnTets(grid, n);
 }
 } // namespace
 
