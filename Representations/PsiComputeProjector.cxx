@@ -95,10 +95,9 @@ bool PsiComputeProjector::Chosen(int projector, vtkOpenGLRenderWindow* renWin)
   return projector == 1;
 }
 
-vtkShaderProgram* PsiComputeProjector::ReadyComputeProgram(vtkOpenGLRenderWindow* renWin,
+vtkShaderProgram* PsiComputeProjector::ReadyComputeProgram(
   const psi::ShaderFeatures& f, const char* integrator, std::string& error, bool& built)
 {
-  (void)renWin;
   const std::string key = f.Key();
   built = !this->Compute || key != this->Key;
   if (built)
@@ -131,7 +130,7 @@ vtkShaderProgram* PsiComputeProjector::ReadyDrawProgram(vtkOpenGLRenderWindow* r
   return this->DrawProgram;
 }
 
-void PsiComputeProjector::ReserveBuffers(vtkOpenGLRenderWindow* renWin, size_t tetsPerPass)
+void PsiComputeProjector::ReserveBuffers(size_t tetsPerPass)
 {
   const size_t vec4s = tetsPerPass * this->SlotVertices * this->Vec4sPerVertex;
   const size_t indices = tetsPerPass * this->SlotTriangles * 3;
@@ -147,7 +146,6 @@ void PsiComputeProjector::ReserveBuffers(vtkOpenGLRenderWindow* renWin, size_t t
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vec4s * 4 * sizeof(GLuint)), nullptr,
     GL_DYNAMIC_COPY);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
-  (void)renWin;
   if (!this->Indices)
   {
     glGenBuffers(1, &this->Indices);
@@ -169,7 +167,7 @@ void PsiComputeProjector::Draw(vtkOpenGLRenderWindow* renWin, unsigned int order
   const size_t perPass =
     std::min<size_t>({ size_t(1) << 16, std::max<size_t>(64, BufferBudget / bytesPerTet),
       std::max<size_t>(count, 1) });
-  this->ReserveBuffers(renWin, (perPass + 63) / 64 * 64);
+  this->ReserveBuffers((perPass + 63) / 64 * 64);
   const GLuint compute = static_cast<GLuint>(this->Compute->GetHandle());
   const GLuint draw = static_cast<GLuint>(this->DrawProgram->GetHandle());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, orderBuffer);

@@ -35,7 +35,7 @@ public:
   static bool Chosen(int projector, vtkOpenGLRenderWindow* renWin);
   /// Composes and builds the programs for `f` (once per feature key: `built` tells) and leaves
   /// the compute program bound. Null, with `error` set, when a program does not build.
-  vtkShaderProgram* ReadyComputeProgram(vtkOpenGLRenderWindow* renWin,
+  vtkShaderProgram* ReadyComputeProgram(
     const psi::ShaderFeatures& f, const char* integrator, std::string& error, bool& built);
   /// The draw program of the last ReadyComputeProgram, made ready (bound) by VTK's shader cache.
   vtkShaderProgram* ReadyDrawProgram(vtkOpenGLRenderWindow* renWin);
@@ -52,7 +52,7 @@ public:
 private:
   PsiComputeProjector(const PsiComputeProjector&) = delete;
   void operator=(const PsiComputeProjector&) = delete;
-  void ReserveBuffers(vtkOpenGLRenderWindow* renWin, size_t tetsPerPass);
+  void ReserveBuffers(size_t tetsPerPass);
 
   vtkSmartPointer<vtkShaderProgram> Compute;
   vtkShaderProgram* DrawProgram = nullptr; // owned by VTK's shader cache

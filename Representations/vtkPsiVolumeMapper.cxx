@@ -428,7 +428,7 @@ vtkShaderProgram* vtkPsiVolumeMapper::ReadyProjection(
   std::string error = "the shader program failed to compile (see above).";
   bool built = false;
   vtkShaderProgram* program = !integrator ? nullptr
-    : compute ? I.Compute.ReadyComputeProgram(renWin, features, integrator, error, built)
+    : compute ? I.Compute.ReadyComputeProgram(features, integrator, error, built)
               : I.Geometry.ReadyProgram(renWin, features, integrator, built);
   this->NumberOfProgramBuilds += built ? 1 : 0;
   if (!program)

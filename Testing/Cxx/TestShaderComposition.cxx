@@ -283,7 +283,7 @@ int main(int argc, char* argv[])
     std::string error;
     bool built = false;
     const bool project = projector.ReadyComputeProgram(
-                           win, f, psi::IntegratorSource(f.Method), error, built) != nullptr;
+                           f, psi::IntegratorSource(f.Method), error, built) != nullptr;
     PSI_CHECK(project && projector.ReadyDrawProgram(win) != nullptr,
       "the compute projector does not build: %s\n%s", error.c_str(), Describe(f).c_str());
     computeBuilt += project ? 1 : 0;
