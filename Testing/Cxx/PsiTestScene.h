@@ -31,6 +31,8 @@
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtkAbstractVolumeMapper.h"
 
 #include <cmath>
 #include <cstdio>
@@ -193,6 +195,60 @@ inline void WritePng(const std::string& file, const std::vector<double>& rgb, in
   writer->Write();
 }
 
+/// The GL tests' view: a w x h window without multisampling, one renderer on the dark background
+/// the references share, and (with a mapper) a volume drawn by `mapper` with `property`.
+struct VolumeView
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkVolume> Volume;
+
+  VolumeView(int w, int h, vtkAbstractVolumeMapper* mapper, vtkVolumeProperty* property)
+  {
+    this->Window->SetSize(w, h);
+    this->Window->SetMultiSamples(0);
+    this->Renderer->SetBackground(0.1, 0.1, 0.15);
+    this->Window->AddRenderer(this->Renderer);
+    if (mapper)
+    {
+      this->Volume->SetMapper(mapper);
+      this->Volume->SetProperty(property);
+      this->Renderer->AddVolume(this->Volume);
+    }
+  }
+};
+
+/// Renders `win` and reads its pixels back as RGB in [0, 1], row by row from the bottom.
+inline std::vector<double> GrabRGB(vtkRenderWindow* win)
+{
+  const int W = win->GetSize()[0], H = win->GetSize()[1];
+  win->Render();
+  vtkNew<vtkUnsignedCharArray> px;
+  win->GetPixelData(0, 0, W - 1, H - 1, 0, px);
+  std::vector<double> rgb(3 * W * H);
+  for (int i = 0; i < 3 * W * H; ++i)
+  {
+    rgb[i] = px->GetValue(i) / 255.0;
+  }
+  return rgb;
+}
+
+/// The reference ray caster's camera for `ren`'s active camera at w x h pixels, with its
+/// background.
+inline psi::ReferenceCamera ReferenceCameraOf(vtkRenderer* ren, int w, int h)
+{
+  psi::ReferenceCamera cam;
+  cam.Width = w;
+  cam.Height = h;
+  vtkNew<vtkMatrix4x4> m;
+  m->DeepCopy(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(double(w) / h, -1, 1));
+  m->Invert();
+  std::copy(m->GetData(), m->GetData() + 16, cam.NdcToWorld.begin());
+  const double* bg = ren->GetBackground();
+  cam.Background = { { bg[0], bg[1], bg[2] } };
+  return cam;
+}
+
 struct Result
 {
   double Mean = 0, Max = 0;
@@ -206,9 +262,8 @@ inline Result Compare(const std::string& name, vtkRenderWindow* win, vtkRenderer
   const psi::ReferenceScene& refScene, vtkActor* opaque, const std::string& outDir)
 {
   const int W = win->GetSize()[0], H = win->GetSize()[1];
-  psi::ReferenceCamera cam;
-  cam.Width = W;
-  cam.Height = H;
+  psi::ReferenceCamera cam = ReferenceCameraOf(ren, W, H);
+  const double* bg = ren->GetBackground();
   // Opaque geometry as drawn by GL (its depth and flat color), without the volume.
   if (opaque)
   {
@@ -229,24 +284,7 @@ inline Result Compare(const std::string& name, vtkRenderWindow* win, vtkRenderer
     }
     vol->VisibilityOn();
   }
-  win->Render();
-  vtkNew<vtkUnsignedCharArray> px;
-  win->GetPixelData(0, 0, W - 1, H - 1, 0, px);
-  std::vector<double> gpu(3 * W * H);
-  for (int i = 0; i < W * H; ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      gpu[3 * i + k] = px->GetValue(3 * i + k) / 255.0;
-    }
-  }
-  vtkCamera* c = ren->GetActiveCamera();
-  vtkNew<vtkMatrix4x4> m;
-  m->DeepCopy(c->GetCompositeProjectionTransformMatrix(double(W) / H, -1, 1));
-  m->Invert();
-  std::copy(m->GetData(), m->GetData() + 16, cam.NdcToWorld.begin());
-  const double* bg = ren->GetBackground();
-  cam.Background = { { bg[0], bg[1], bg[2] } };
+  const std::vector<double> gpu = GrabRGB(win);
   const std::vector<double> ref = psi::RenderReference(refScene, cam);
 
   Result r;

@@ -197,18 +197,12 @@ void TestGradedSlabImage(const std::string& outDir)
   property->SetScalarOpacityUnitDistance(0.005);
   const psi::ReferenceScene ref = psitest::MakeReferenceScene(grid, color, opacity, 0.005);
 
-  vtkNew<vtkRenderWindow> win;
-  win->SetSize(W, H);
-  win->SetMultiSamples(0);
-  vtkNew<vtkRenderer> ren;
-  ren->SetBackground(0.1, 0.1, 0.15);
-  win->AddRenderer(ren);
   vtkNew<vtkPsiVolumeMapper> mapper;
   mapper->SetInputData(grid);
-  vtkNew<vtkVolume> vol;
-  vol->SetMapper(mapper);
-  vol->SetProperty(property);
-  ren->AddVolume(vol);
+  psitest::VolumeView view(W, H, mapper, property);
+  vtkRenderWindow* win = view.Window;
+  vtkRenderer* ren = view.Renderer;
+  vtkVolume* vol = view.Volume;
   vtkCamera* cam = ren->GetActiveCamera();
   cam->SetFocalPoint(4, 4, 0);
   cam->SetPosition(1.5, 2.5, -14);

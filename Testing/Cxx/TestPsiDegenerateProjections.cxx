@@ -61,25 +61,10 @@ Errors Compare(const std::string& name, vtkRenderWindow* win, vtkRenderer* ren,
   vtkUnstructuredGrid* grid, vtkColorTransferFunction* color, vtkPiecewiseFunction* opacity,
   double unit, const std::string& outDir)
 {
-  win->Render();
-  vtkNew<vtkUnsignedCharArray> px;
-  win->GetPixelData(0, 0, W - 1, H - 1, 0, px);
-  std::vector<double> gpu(3 * W * H);
-  for (int i = 0; i < 3 * W * H; ++i)
-  {
-    gpu[i] = px->GetValue(i) / 255.0;
-  }
-  psi::ReferenceCamera cam;
-  cam.Width = W;
-  cam.Height = H;
-  vtkNew<vtkMatrix4x4> m;
-  m->DeepCopy(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(double(W) / H, -1, 1));
-  m->Invert();
-  std::copy(m->GetData(), m->GetData() + 16, cam.NdcToWorld.begin());
+  const std::vector<double> gpu = psitest::GrabRGB(win);
   const double* bg = ren->GetBackground();
-  cam.Background = { { bg[0], bg[1], bg[2] } };
-  const std::vector<double> ref =
-    psi::RenderReference(psitest::MakeReferenceScene(grid, color, opacity, unit), cam);
+  const std::vector<double> ref = psi::RenderReference(
+    psitest::MakeReferenceScene(grid, color, opacity, unit), psitest::ReferenceCameraOf(ren, W, H));
   Errors r;
   r.E.assign(W * H, 0.0);
   std::vector<double> diff(ref.size());
@@ -264,12 +249,9 @@ void MakeGridTets(vtkUnstructuredGrid* grid, int n, bool kuhn)
 int main(int argc, char* argv[])
 {
   const std::string outDir = argc > 1 ? argv[1] : "";
-  vtkNew<vtkRenderWindow> win;
-  win->SetSize(W, H);
-  win->SetMultiSamples(0);
-  vtkNew<vtkRenderer> ren;
-  ren->SetBackground(0.1, 0.1, 0.15);
-  win->AddRenderer(ren);
+  psitest::VolumeView view(W, H, nullptr, nullptr); // the volume is added below
+  vtkRenderWindow* win = view.Window;
+  vtkRenderer* ren = view.Renderer;
   vtkNew<vtkColorTransferFunction> color;
   color->SetColorSpaceToRGB();
   color->AddRGBPoint(0.0, 0.1, 0.3, 1.0);

@@ -49,29 +49,12 @@ constexpr int W = 96, H = 96;
 
 std::vector<double> Grab(vtkRenderWindow* win)
 {
-  win->Render();
-  vtkNew<vtkUnsignedCharArray> px;
-  win->GetPixelData(0, 0, W - 1, H - 1, 0, px);
-  std::vector<double> img(3 * W * H);
-  for (int i = 0; i < 3 * W * H; ++i)
-  {
-    img[i] = px->GetValue(i) / 255.0;
-  }
-  return img;
+  return psitest::GrabRGB(win);
 }
 
 std::vector<double> Reference(vtkRenderer* ren, const psi::ReferenceScene& scene)
 {
-  psi::ReferenceCamera cam;
-  cam.Width = W;
-  cam.Height = H;
-  vtkNew<vtkMatrix4x4> m;
-  m->DeepCopy(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(double(W) / H, -1, 1));
-  m->Invert();
-  std::copy(m->GetData(), m->GetData() + 16, cam.NdcToWorld.begin());
-  const double* bg = ren->GetBackground();
-  cam.Background = { { bg[0], bg[1], bg[2] } };
-  return psi::RenderReference(scene, cam);
+  return psi::RenderReference(scene, psitest::ReferenceCameraOf(ren, W, H));
 }
 
 struct Diff
@@ -119,18 +102,12 @@ int main(int argc, char* argv[])
   property->SetScalarOpacity(linear);
   property->SetScalarOpacityUnitDistance(2.0);
 
-  vtkNew<vtkRenderWindow> win;
-  win->SetSize(W, H);
-  win->SetMultiSamples(0);
-  vtkNew<vtkRenderer> ren;
-  ren->SetBackground(0.1, 0.1, 0.15);
-  win->AddRenderer(ren);
   vtkNew<vtkPsiVolumeMapper> mapper;
   mapper->SetInputData(grid);
-  vtkNew<vtkVolume> vol;
-  vol->SetMapper(mapper);
-  vol->SetProperty(property);
-  ren->AddVolume(vol);
+  psitest::VolumeView view(W, H, mapper, property);
+  vtkRenderWindow* win = view.Window;
+  vtkRenderer* ren = view.Renderer;
+  vtkVolume* vol = view.Volume;
   vtkCamera* cam = ren->GetActiveCamera();
   auto outside = [&] {
     cam->SetFocalPoint(0, 0, 0);

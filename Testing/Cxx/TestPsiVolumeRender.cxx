@@ -134,18 +134,12 @@ int main(int argc, char* argv[])
   MakeScene(s, 6, 1.0, 1.5);
   const psi::ReferenceScene refScene = MakeReference(s);
 
-  vtkNew<vtkRenderWindow> win;
-  win->SetSize(W, H);
-  win->SetMultiSamples(0);
-  vtkNew<vtkRenderer> ren;
-  ren->SetBackground(0.1, 0.1, 0.15);
-  win->AddRenderer(ren);
   vtkNew<vtkPsiVolumeMapper> mapper;
   mapper->SetInputData(s.Grid);
-  vtkNew<vtkVolume> vol;
-  vol->SetMapper(mapper);
-  vol->SetProperty(s.Property);
-  ren->AddVolume(vol);
+  psitest::VolumeView view(W, H, mapper, s.Property);
+  vtkRenderWindow* win = view.Window;
+  vtkRenderer* ren = view.Renderer;
+  vtkVolume* vol = view.Volume;
 
   vtkCamera* cam = ren->GetActiveCamera();
   auto outside = [&] {
