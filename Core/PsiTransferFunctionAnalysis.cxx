@@ -12,7 +12,10 @@
 
 namespace psi
 {
-// The transfer function (color and opacity of component 0) at scalar s: rgb, opacity.
+// The transfer function (color and opacity of component 0) at scalar s: rgb, opacity. The color
+// map is the continuous one: ParaView's color maps (vtkDiscretizableColorTransferFunction)
+// answer GetColor from a 256-entry table by default (Discretize), while its volume mappers sample
+// the continuous function (GetTable), as 'Psi Volume' does.
 void EvaluateTransferFunction(vtkVolumeProperty* property, double s, double out[4])
 {
   out[0] = out[1] = out[2] = 1.0;
@@ -25,96 +28,10 @@ void EvaluateTransferFunction(vtkVolumeProperty* property, double s, double out[
   }
   else if (vtkColorTransferFunction* rgb = property->GetRGBTransferFunction(0))
   {
-    rgb->GetColor(s, out);
+    rgb->vtkColorTransferFunction::GetColor(s, out);
   }
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
   out[3] = opacity ? opacity->GetValue(s) : 1.0;
-}
-
-// Control points of the color and opacity functions strictly inside the scalar range where the
-// transfer function bends (not collinear with its neighbouring nodes): the scalars where a
-// segment must be split for color and attenuation to be linear on each piece (Moreland §4.3).
-std::vector<float> TransferFunctionKinks(
-  vtkVolumeProperty* property, const double range[2], int maxNodes)
-{
-  std::vector<double> nodes;
-  auto add = [&](double x) {
-    if (x > range[0] && x < range[1])
-    {
-      nodes.push_back(x);
-    }
-  };
-  if (property->GetColorChannels(0) == 1)
-  {
-    if (vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(0))
-    {
-      for (int i = 0; i < gray->GetSize(); ++i)
-      {
-        double n[4];
-        gray->GetNodeValue(i, n);
-        add(n[0]);
-      }
-    }
-  }
-  else if (vtkColorTransferFunction* rgb = property->GetRGBTransferFunction(0))
-  {
-    for (int i = 0; i < rgb->GetSize(); ++i)
-    {
-      double n[6];
-      rgb->GetNodeValue(i, n);
-      add(n[0]);
-    }
-  }
-  if (vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0))
-  {
-    for (int i = 0; i < opacity->GetSize(); ++i)
-    {
-      double n[4];
-      opacity->GetNodeValue(i, n);
-      add(n[0]);
-    }
-  }
-  std::sort(nodes.begin(), nodes.end());
-  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-  std::vector<float> kinks;
-  const double span = range[1] - range[0];
-  for (size_t k = 0; k < nodes.size(); ++k)
-  {
-    const double a = k > 0 ? nodes[k - 1] : range[0];
-    const double b = k + 1 < nodes.size() ? nodes[k + 1] : range[1];
-    const double x = nodes[k];
-    // sampled just around the node, so that a step (two nodes at one scalar) counts too
-    const double h = 1e-6 * span;
-    double fa[4], fb[4], fx[4], fl[4], fr[4];
-    EvaluateTransferFunction(property, a, fa);
-    EvaluateTransferFunction(property, b, fb);
-    EvaluateTransferFunction(property, x, fx);
-    EvaluateTransferFunction(property, std::max(a, x - h), fl);
-    EvaluateTransferFunction(property, std::min(b, x + h), fr);
-    const double w = (x - a) / std::max(b - a, 1e-300);
-    double bend = 0;
-    for (int c = 0; c < 4; ++c)
-    {
-      bend = std::max(bend, std::abs(fx[c] - (fa[c] + w * (fb[c] - fa[c]))));
-      bend = std::max(bend, std::abs(fl[c] - fr[c]) - 1e-3);
-    }
-    if (bend > 1e-4)
-    {
-      kinks.push_back(static_cast<float>(x));
-    }
-  }
-  if (kinks.size() > static_cast<size_t>(maxNodes))
-  {
-    // evenly thinned: a transfer function this detailed is better served by the table anyway
-    std::vector<float> thin;
-    const size_t n = static_cast<size_t>(maxNodes);
-    for (size_t i = 0; i < n; ++i)
-    {
-      thin.push_back(kinks[i * (kinks.size() - 1) / (n - 1)]);
-    }
-    kinks.swap(thin);
-  }
-  return kinks;
 }
 
 ScalarComponent ColorMapComponent(vtkVolumeProperty* property, int numberOfComponents)
@@ -140,13 +57,34 @@ std::string UnitDistanceProblem(vtkVolumeProperty* property)
     std::to_string(unit) + "; opacity per unit distance needs a positive distance.";
 }
 
-std::vector<float> OpacityPrefixCounts(const TransferFunctionTable& table, bool& hasZeroOpacity)
+std::vector<float> OpacityPrefixCounts(
+  const TransferFunctionTable& table, vtkVolumeProperty* property, bool& hasZeroOpacity)
 {
+  std::vector<char> visible(table.Size);
+  for (int i = 0; i < table.Size; ++i)
+  {
+    visible[i] = table.Rgba[4 * static_cast<size_t>(i) + 3] > 0;
+  }
+  // A control point with non-zero opacity between two samples that are both zero (a spike
+  // narrower than the sample spacing) marks the sample below it: a cell whose range meets the
+  // spike meets that sample's interval too.
+  vtkPiecewiseFunction* opacity = property ? property->GetScalarOpacity(0) : nullptr;
+  const double span = table.Range[1] - table.Range[0];
+  for (int k = 0; opacity && span > 0 && k < opacity->GetSize(); ++k)
+  {
+    double n[4];
+    opacity->GetNodeValue(k, n);
+    const double x = (n[0] - table.Range[0]) / span * (table.Size - 1);
+    if (n[1] > 0 && x >= 0 && x <= table.Size - 1)
+    {
+      visible[std::min(static_cast<int>(x), table.Size - 1)] = 1;
+    }
+  }
   std::vector<float> prefix(table.Size);
   float count = 0;
   for (int i = 0; i < table.Size; ++i)
   {
-    count += table.Rgba[4 * static_cast<size_t>(i) + 3] > 0 ? 1.0f : 0.0f;
+    count += visible[i] ? 1.0f : 0.0f;
     prefix[i] = count;
   }
   hasZeroOpacity = count < table.Size - 1;

@@ -1,7 +1,6 @@
 // PsiTransferFunctionAnalysis: what the renderer needs to know about a transfer function beyond
-// its sampled table (GL-free): its exact value at a scalar, the control points where it bends
-// (adaptive sampling splits segments there, Moreland's dissertation §4.3), and where its opacity
-// is zero (early discard, Maximo et al. 2010 §3.5).
+// its sampled table (GL-free): its exact value at a scalar and where its opacity is zero (early
+// discard, Maximo et al. 2010 §3.5); its nodes for adaptive sampling are PsiTransferFunctionNodes.
 #ifndef PsiTransferFunctionAnalysis_h
 #define PsiTransferFunctionAnalysis_h
 
@@ -22,13 +21,6 @@ struct TransferFunctionTable;
 PSIVOLUMECORE_EXPORT void EvaluateTransferFunction(
   vtkVolumeProperty* property, double s, double rgba[4]);
 
-/// Control points of the color and opacity functions strictly inside `range` where the transfer
-/// function bends (not collinear with its neighbouring nodes, or a step): the scalars at which a
-/// segment must be split for color and attenuation to be linear on each piece. Ascending; evenly
-/// thinned to at most `maxNodes`.
-PSIVOLUMECORE_EXPORT std::vector<float> TransferFunctionKinks(
-  vtkVolumeProperty* property, const double range[2], int maxNodes);
-
 /// The scalar of a tuple of `numberOfComponents` that the color map's vector mode selects, as
 /// ParaView's 'Volume' maps it (vtkScalarsToColors: VectorMode Component selects
 /// VectorComponent, any other mode the magnitude); component 0 of a one-component array.
@@ -41,9 +33,11 @@ PSIVOLUMECORE_EXPORT std::string UnitDistanceProblem(vtkVolumeProperty* property
 
 /// Prefix counts of the table's samples with non-zero opacity: entry i counts samples 0..i. A
 /// scalar interval meets only zero-opacity samples when the counts at its ends are equal
-/// (Maximo et al. 2010 §3.5). `hasZeroOpacity` tells whether the table has a zero region at all.
+/// (Maximo et al. 2010 §3.5). With `property`, a sample also counts when an opacity control
+/// point above zero lies between it and the next one, so that a spike narrower than the sample
+/// spacing is not discarded. `hasZeroOpacity` tells whether there is a zero region at all.
 PSIVOLUMECORE_EXPORT std::vector<float> OpacityPrefixCounts(
-  const TransferFunctionTable& table, bool& hasZeroOpacity);
+  const TransferFunctionTable& table, vtkVolumeProperty* property, bool& hasZeroOpacity);
 } // namespace psi
 
 #endif

@@ -43,7 +43,7 @@ TransferFunctionTable SampleTransferFunction(
     double c[3] = { 1, 1, 1 };
     if (rgb)
     {
-      rgb->GetColor(s, c);
+      rgb->vtkColorTransferFunction::GetColor(s, c);
     }
     else if (grayFn)
     {

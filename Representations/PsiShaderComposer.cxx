@@ -26,6 +26,8 @@
 #include "PsiProjectionClassesGS.h"
 #include "PsiSceneDepthFS.h"
 #include "PsiSegmentSplitFS.h"
+#include "PsiTransferNodesFS.h"
+#include "PsiTransferTableFS.h"
 #include "PsiVolumeFS.h"
 #include "PsiVolumeGS.h"
 #include "PsiVolumeVS.h"
@@ -439,6 +441,7 @@ ShaderSources ComposeShaders(const ShaderFeatures& f, const char* integratorSour
   {
     throw std::logic_error("PsiShaderComposer: no tag //PSI::Integrator::Impl");
   }
+  Apply(fs, f.Adaptive ? PsiTransferNodesFS : PsiTransferTableFS);
   Apply(fs, f.ExactSegments ? PsiExactSegmentsFS : PsiHAPTSegmentsFS);
   if (f.NearClip)
   {

@@ -161,13 +161,3 @@ void SetIsosurfaceShaderParameters(vtkShaderProgram* program, const psi::Isosurf
     SetNormalMatrix(program, camera.MCVC);
   }
 }
-
-void SetAdaptiveShaderParameters(vtkShaderProgram* program, const std::vector<float>& nodes)
-{
-  const int n = static_cast<int>(nodes.size());
-  program->SetUniformi("tfNodeCount", n);
-  if (n > 0)
-  {
-    program->SetUniform1fv("tfNodes", n, nodes.data());
-  }
-}

@@ -49,6 +49,5 @@ void SetIsosurfaceShaderParameters(vtkShaderProgram* program, const psi::Isosurf
   const PsiFrameCamera& camera);
 
 /// tfNodes, tfNodeCount: where adaptive sampling splits segments.
-void SetAdaptiveShaderParameters(vtkShaderProgram* program, const std::vector<float>& nodes);
 
 #endif

@@ -44,13 +44,17 @@ void PsiTransferFunctionTexture::Update(vtkOpenGLRenderWindow* renWin,
   vtkVolumeProperty* property, const double range[2], int samples)
 {
   psi::TransferFunctionTable tf = psi::SampleTransferFunction(property, range, samples);
-  if (tf.Rgba != this->Table.Rgba || !this->Texture->GetHandle())
+  // the prefix also sees control points between samples, which the table may not show
+  bool zero = false;
+  std::vector<float> prefix = psi::OpacityPrefixCounts(tf, property, zero);
+  if (tf.Rgba != this->Table.Rgba || prefix != this->OpacityPrefix || !this->Texture->GetHandle())
   {
     this->Texture->SetContext(renWin);
     this->Texture->Create2DFromRaw(tf.Size, 1, 4, VTK_FLOAT, tf.Rgba.data());
     SetLinearClamped(this->Texture);
     this->Table = std::move(tf);
-    this->OpacityPrefix = psi::OpacityPrefixCounts(this->Table, this->ZeroOpacity);
+    this->OpacityPrefix = std::move(prefix);
+    this->ZeroOpacity = zero;
     ++this->Version;
   }
   this->Time = property->GetMTime();

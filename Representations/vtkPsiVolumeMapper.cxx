@@ -1,5 +1,6 @@
 #include "vtkPsiVolumeMapper.h"
 
+#include "PsiAdaptiveNodes.h"
 #include "PsiComputeProjector.h"
 #include "PsiGeometryProjector.h"
 #include "PsiIntegrationMethods.h"
@@ -55,9 +56,7 @@ struct vtkPsiVolumeMapper::Internals
   PsiComputeProjector Compute;
 
   // Transfer-function nodes for adaptive sampling, for the property and range they came from.
-  std::vector<float> Kinks;
-  vtkMTimeType KinksTime = 0;
-  std::array<double, 2> KinksRange{ { 0, 0 } };
+  PsiAdaptiveNodes AdaptiveNodes;
 
   std::string LastWarning;
   vtkWindow* Context = nullptr;
@@ -367,12 +366,10 @@ void vtkPsiVolumeMapper::UpdateTables(vtkOpenGLRenderWindow* renWin, vtkVolume* 
     I.Mesh.UpdateGradients(renWin);
   }
   if (this->AdaptiveSampling != ADAPTIVE_OFF &&
-    (property->GetMTime() != I.KinksTime || I.KinksRange[0] != mesh.ScalarRange[0] ||
-      I.KinksRange[1] != mesh.ScalarRange[1]))
+    I.AdaptiveNodes.NeedsUpdate(property, mesh.ScalarRange))
   {
-    I.Kinks = psi::TransferFunctionKinks(property, mesh.ScalarRange, MaxAdaptiveNodes);
-    I.KinksTime = property->GetMTime();
-    I.KinksRange = { { mesh.ScalarRange[0], mesh.ScalarRange[1] } };
+    I.AdaptiveNodes.Update(property, mesh.ScalarRange, I.Tables.Transfer.GetTable(),
+      MaxAdaptiveNodes, AdaptiveNodeTolerance);
   }
 }
 
@@ -405,7 +402,7 @@ psi::ShaderFeatures vtkPsiVolumeMapper::ChooseFeatures(
   // surfaces of a cell whose volume pieces are dropped).
   f.EarlyDiscard = this->EarlyDiscard && zeroOpacity && (f.IsoCount == 0 || f.IsoTriangles);
   f.Adaptive = this->AdaptiveSampling == ADAPTIVE_ON ||
-    (this->AdaptiveSampling == ADAPTIVE_AUTO && !I.Kinks.empty());
+    (this->AdaptiveSampling == ADAPTIVE_AUTO && I.AdaptiveNodes.GetTableDeviation() > AdaptiveAutoDeviation);
   f.MaxAdaptiveNodes = MaxAdaptiveNodes;
   this->LastUsedNearPlaneClipping = f.NearClip;
   this->LastUsedOpaqueClipping = f.OpaqueClip;
@@ -413,7 +410,7 @@ psi::ShaderFeatures vtkPsiVolumeMapper::ChooseFeatures(
     f.IsoCount == 0 ? -1 : f.IsoTriangles ? ISO_MARCHING_TETRAHEDRA : ISO_PER_FRAGMENT;
   this->LastUsedEarlyDiscard = f.EarlyDiscard;
   this->LastUsedAdaptiveSampling = f.Adaptive;
-  this->LastNumberOfAdaptiveNodes = f.Adaptive ? static_cast<int>(I.Kinks.size()) : 0;
+  this->LastNumberOfAdaptiveNodes = f.Adaptive ? I.AdaptiveNodes.Size() : 0;
   return f;
 }
 
@@ -464,7 +461,7 @@ void vtkPsiVolumeMapper::SetShaderParameters(vtkShaderProgram* program, vtkRende
   }
   if (f.Adaptive)
   {
-    SetAdaptiveShaderParameters(program, I.Kinks);
+    I.AdaptiveNodes.Activate(program);
   }
 }
 

@@ -192,6 +192,12 @@ public:
 
   /// Largest number of transfer-function nodes used for adaptive sampling (more are thinned).
   static constexpr int MaxAdaptiveNodes = 64;
+  /// Adaptive sampling adds nodes where a color map bends farther than this from linear
+  /// interpolation between its nodes (psi::SampleTransferFunctionNodes).
+  static constexpr double AdaptiveNodeTolerance = 1.0 / 512;
+  /// 'Auto' samples adaptively when the sampled table misses the transfer function by more
+  /// than this at a node (psi::TableDeviation): a feature narrower than the table resolves.
+  static constexpr double AdaptiveAutoDeviation = 1.0 / 255;
   /// Largest number of isosurfaces (more are ignored with a warning).
   static constexpr int MaxIsosurfaces = psi::IsosurfaceList::MaxCount;
 
@@ -254,7 +260,7 @@ protected:
   int IsosurfaceMethod = ISO_AUTO;
   int IsosurfaceShading = ISO_SMOOTH;
   int LastUsedIsosurfaceMethod = -1;
-  int AdaptiveSampling = ADAPTIVE_OFF;
+  int AdaptiveSampling = ADAPTIVE_AUTO;
   bool LastUsedAdaptiveSampling = false;
   int LastNumberOfAdaptiveNodes = 0;
   std::string LastFeatureDefines;

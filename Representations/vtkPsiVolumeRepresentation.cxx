@@ -252,6 +252,11 @@ int vtkPsiVolumeRepresentation::GetLastUsedIsosurfaceMethod()
   return this->PsiMapper->GetLastUsedIsosurfaceMethod();
 }
 
+int vtkPsiVolumeRepresentation::GetLastNumberOfAdaptiveNodes()
+{
+  return this->PsiMapper->GetLastNumberOfAdaptiveNodes();
+}
+
 void vtkPsiVolumeRepresentation::SetAdaptiveSampling(int mode)
 {
   mode = InRange(this, "AdaptiveSampling", mode, vtkPsiVolumeMapper::ADAPTIVE_OFF,

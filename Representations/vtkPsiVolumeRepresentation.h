@@ -77,6 +77,8 @@ public:
   int GetLastUsedIsosurfaceMethod();
   void SetAdaptiveSampling(int mode);
   int GetAdaptiveSampling();
+  /// Nodes adaptive sampling used in the last frame (0: it was not used).
+  int GetLastNumberOfAdaptiveNodes();
   ///@}
 
   ///@{

@@ -1,19 +1,23 @@
-//PSI::Adaptive::Dec
-// Adaptive sampling (Moreland 2004, dissertation, §4.3): the segment is split at the transfer
-// function's nodes (PsiSegmentSplitFS.glsl), so that color and attenuation are linear on each
-// piece.
-uniform float tfNodes[PSI_TF_NODES_MAX]; // ascending, strictly inside the scalar range
-uniform int tfNodeCount;
-
 //PSI::Adaptive::SplitInit
+// Adaptive sampling (Moreland 2004, dissertation, §4.3): the segment is split at the transfer
+// function's nodes (tfNodes, PsiTransferNodesFS.glsl; the split loop is PsiSegmentSplitFS.glsl),
+// and each piece's transfer() reads the node interval tfPiece it lies in.
+  // ni: the first node beyond sf along the segment. Ascending, the first node above sf; descending,
+  // the last node below it. Binary search for the first node above sf (at or above it, descending).
   int nStep = ds >= 0.0 ? 1 : -1;
-  int ni = ds >= 0.0 ? 0 : tfNodeCount - 1;
-  while (ni >= 0 && ni < tfNodeCount && dirS * (tfNodes[ni] - sf) <= 0.0)
+  int lo = 0, hi = tfNodeCount;
+  while (lo < hi)
   {
-    ni += nStep;
+    int mid = (lo + hi) / 2;
+    bool below = ds >= 0.0 ? tfNodes[mid] <= sf : tfNodes[mid] < sf;
+    lo = below ? mid + 1 : lo;
+    hi = below ? hi : mid;
   }
+  int ni = ds >= 0.0 ? lo : lo - 1;
 
 //PSI::Adaptive::SplitNext
+    // ascending, the piece lies below node ni; descending, above it
+    tfPiece = nStep > 0 ? ni - 1 : ni;
     if (ni >= 0 && ni < tfNodeCount && dirS * (sb - tfNodes[ni]) > 0.0)
     {
       next = tfNodes[ni];

@@ -12,16 +12,13 @@
 // integration method (Shaders/PsiIntegrate*.glsl), which defines
 // vec4 integrateSegment(float sf, float sb, float D).
 
-uniform sampler2D transferFunction; // N x 1, rgb = luminance, a = attenuation (1/length)
-uniform vec2 tfScaleShift;          // texcoord = s * scale + shift (texel centers)
 uniform mat4 DCVCMatrix;            // inverse projection: window depth -> view distance
 uniform vec2 viewportSize;
 uniform int parallelProjection;
 
-vec4 transfer(float s)
-{
-  return texture(transferFunction, vec2(s * tfScaleShift.x + tfScaleShift.y, 0.5));
-}
+// vec4 transfer(float s): luminance and attenuation at scalar s, from the sampled table
+// (PsiTransferTableFS.glsl) or, with adaptive sampling, from the nodes (PsiTransferNodesFS.glsl).
+//PSI::Transfer::Impl
 
 // The view-space point of this pixel at window depth `depth`.
 vec3 viewPointAt(float depth)

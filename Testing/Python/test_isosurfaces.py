@@ -46,7 +46,7 @@ t.check(d.GetProperty("IsosurfaceValues") is not None, "IsosurfaceValues is a pr
 t.check(len(d.GetProperty("IsosurfaceValues")) == 0, "no isosurface by default")
 t.check(abs(d.IsosurfaceOpacity - 1.0) < 1e-12, "IsosurfaceOpacity defaults to 1")
 t.check(d.IsosurfaceUseColorMap == 1, "IsosurfaceUseColorMap defaults to on")
-t.check(d.AdaptiveSampling == "Off", "AdaptiveSampling defaults to Off")
+t.check(d.AdaptiveSampling == "Auto", "AdaptiveSampling defaults to Auto")
 dom = d.GetProperty("IsosurfaceValues").SMProperty.GetDomain("scalar_range")
 t.check(dom is not None and abs(dom.GetMinimum(0) - lo) < 1e-6 and abs(dom.GetMaximum(0) - hi) < 1e-6,
         "IsosurfaceValues has the colored array's range as its domain (value-list range helpers)")

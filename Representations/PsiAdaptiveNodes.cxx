@@ -1,0 +1,35 @@
+#include "PsiAdaptiveNodes.h"
+
+#include "vtkShaderProgram.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+
+bool PsiAdaptiveNodes::NeedsUpdate(vtkVolumeProperty* property, const double range[2]) const
+{
+  return property->GetMTime() != this->Time || this->Range[0] != range[0] ||
+    this->Range[1] != range[1];
+}
+
+void PsiAdaptiveNodes::Update(vtkVolumeProperty* property, const double range[2],
+  const psi::TransferFunctionTable& table, int maxNodes, double tolerance)
+{
+  this->Nodes = psi::SampleTransferFunctionNodes(property, range, maxNodes, tolerance);
+  this->TableDeviation = psi::TableDeviation(
+    table, this->Nodes, std::max(property->GetScalarOpacityUnitDistance(0), 1e-30));
+  this->Time = property->GetMTime();
+  this->Range[0] = range[0];
+  this->Range[1] = range[1];
+}
+
+void PsiAdaptiveNodes::Activate(vtkShaderProgram* program) const
+{
+  const int n = this->Nodes.Size();
+  program->SetUniformi("tfNodeCount", n);
+  if (n > 0)
+  {
+    program->SetUniform1fv("tfNodes", n, this->Nodes.Scalars.data());
+    program->SetUniform4fv(
+      "tfNodeValues", n, reinterpret_cast<const float(*)[4]>(this->Nodes.Rgba.data()));
+  }
+}
