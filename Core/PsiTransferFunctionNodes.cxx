@@ -122,7 +122,7 @@ double ChordDeviation(vtkVolumeProperty* property, const Node& a, const Node& b)
 // Bisects the intervals farthest from their chords first, until all are within tolerance or the
 // budget of nodes is spent.
 std::vector<Node> Refine(vtkVolumeProperty* property, std::vector<Node> nodes, size_t maxNodes,
-  double tolerance, double minWidth)
+  double tolerance, double minWidth, double& maxDeviation)
 {
   struct Gap
   {
@@ -156,6 +156,7 @@ std::vector<Node> Refine(vtkVolumeProperty* property, std::vector<Node> nodes, s
     consider(g.A, mid);
     consider(mid, g.B);
   }
+  maxDeviation = gaps.empty() ? 0.0 : gaps.top().Deviation; // the gaps left are above tolerance
   nodes.insert(nodes.end(), added.begin(), added.end());
   std::stable_sort(
     nodes.begin(), nodes.end(), [](const Node& x, const Node& y) { return x.S < y.S; });
@@ -198,9 +199,9 @@ TransferFunctionNodes SampleTransferFunctionNodes(
     }
     nodes.swap(thin);
   }
-  nodes = Refine(property, nodes, budget, tolerance, 1e-6 * (range[1] - range[0]));
-  const double unit = std::max(property->GetScalarOpacityUnitDistance(0), 1e-30);
   TransferFunctionNodes out;
+  nodes = Refine(property, nodes, budget, tolerance, 1e-6 * (range[1] - range[0]), out.MaxDeviation);
+  const double unit = std::max(property->GetScalarOpacityUnitDistance(0), 1e-30);
   for (const Node& n : nodes)
   {
     out.Scalars.push_back(static_cast<float>(n.S));

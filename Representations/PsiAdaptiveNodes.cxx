@@ -1,5 +1,6 @@
 #include "PsiAdaptiveNodes.h"
 
+#include "vtkObject.h"
 #include "vtkShaderProgram.h"
 #include "vtkVolumeProperty.h"
 
@@ -17,6 +18,13 @@ void PsiAdaptiveNodes::Update(vtkVolumeProperty* property, const double range[2]
   this->Nodes = psi::SampleTransferFunctionNodes(property, range, maxNodes, tolerance);
   this->TableDeviation = psi::TableDeviation(
     table, this->Nodes, std::max(property->GetScalarOpacityUnitDistance(0), 1e-30));
+  this->Faithful = this->Nodes.MaxDeviation <= tolerance;
+  if (!this->Faithful)
+  {
+    vtkGenericWarningMacro("Psi Volume: the transfer function needs more than "
+      << maxNodes << " nodes to be followed within " << tolerance << " (off by "
+      << this->Nodes.MaxDeviation << "); adaptive sampling is not used, the sampled table is.");
+  }
   this->Time = property->GetMTime();
   this->Range[0] = range[0];
   this->Range[1] = range[1];

@@ -29,12 +29,16 @@ public:
   void Activate(vtkShaderProgram* program) const;
 
   int Size() const { return this->Nodes.Size(); }
+  /// Whether the nodes follow the transfer function within the tolerance given to Update (a
+  /// function with more bends than the node budget is drawn from the table instead).
+  bool IsFaithful() const { return this->Faithful; }
   /// psi::TableDeviation of the table given to Update.
   double GetTableDeviation() const { return this->TableDeviation; }
 
 private:
   psi::TransferFunctionNodes Nodes;
   double TableDeviation = 0;
+  bool Faithful = true;
   vtkMTimeType Time = 0;
   double Range[2] = { 0, 0 };
 };

@@ -50,7 +50,7 @@ void PsiTransferFunctionTexture::Update(vtkOpenGLRenderWindow* renWin,
   if (tf.Rgba != this->Table.Rgba || prefix != this->OpacityPrefix || !this->Texture->GetHandle())
   {
     this->Texture->SetContext(renWin);
-    this->Texture->Create2DFromRaw(tf.Size, 1, 4, VTK_FLOAT, tf.Rgba.data());
+    this->Texture->Create1DFromRaw(tf.Size, 4, VTK_FLOAT, tf.Rgba.data());
     SetLinearClamped(this->Texture);
     this->Table = std::move(tf);
     this->OpacityPrefix = std::move(prefix);

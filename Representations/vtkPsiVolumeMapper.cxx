@@ -401,8 +401,10 @@ psi::ShaderFeatures vtkPsiVolumeMapper::ChooseFeatures(
   // isosurfaces (visible where the volume is transparent; marching tetrahedra still emit the
   // surfaces of a cell whose volume pieces are dropped).
   f.EarlyDiscard = this->EarlyDiscard && zeroOpacity && (f.IsoCount == 0 || f.IsoTriangles);
-  f.Adaptive = this->AdaptiveSampling == ADAPTIVE_ON ||
-    (this->AdaptiveSampling == ADAPTIVE_AUTO && I.AdaptiveNodes.GetTableDeviation() > AdaptiveAutoDeviation);
+  f.Adaptive = I.AdaptiveNodes.IsFaithful() &&
+    (this->AdaptiveSampling == ADAPTIVE_ON ||
+      (this->AdaptiveSampling == ADAPTIVE_AUTO &&
+        I.AdaptiveNodes.GetTableDeviation() > AdaptiveAutoDeviation));
   f.MaxAdaptiveNodes = MaxAdaptiveNodes;
   this->LastUsedNearPlaneClipping = f.NearClip;
   this->LastUsedOpaqueClipping = f.OpaqueClip;

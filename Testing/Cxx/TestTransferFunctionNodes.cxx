@@ -137,16 +137,37 @@ void TestBendingColorMap()
   const double fine = NodesError(sc.Property, nodes);
   PSI_CHECK(fine < 1.5 / 512, "refined nodes miss the map by %g (%d nodes)", fine, nodes.Size());
   PSI_CHECK(nodes.Size() < 64, "refinement stops at the tolerance: %d nodes", nodes.Size());
+  PSI_CHECK(nodes.MaxDeviation <= 1.0 / 512, "within tolerance: %g", nodes.MaxDeviation);
+  PSI_CHECK(corners.MaxDeviation > 0.02, "3 nodes do not follow it: %g", corners.MaxDeviation);
   PSI_CHECK(std::is_sorted(nodes.Scalars.begin(), nodes.Scalars.end()), "nodes ascending");
   const psi::TransferFunctionTable table = psi::SampleTransferFunction(sc.Property, Range, 1024);
   PSI_CHECK(psi::TableDeviation(table, nodes, 2.0) < 1.0 / 255,
     "a smooth map is resolved by the table ('Auto' stays off): %g",
     psi::TableDeviation(table, nodes, 2.0));
 }
+
+// More bends than the budget: the nodes say they do not follow the function.
+void TestOverBudget()
+{
+  Scene sc;
+  for (int i = 0; i <= 200; ++i)
+  {
+    const double x = i / 200.0;
+    sc.Color->AddRGBPoint(x, (i % 2) ? 1.0 : 0.0, (i % 3) ? 0.5 : 0.0, (i % 5) ? 0.2 : 0.9);
+  }
+  sc.Opacity->AddPoint(0, 0.5);
+  sc.Opacity->AddPoint(1, 0.5);
+  const psi::TransferFunctionNodes nodes =
+    psi::SampleTransferFunctionNodes(sc.Property, Range, 64, 1.0 / 512);
+  PSI_CHECK(nodes.Size() <= 64, "budget kept: %d nodes", nodes.Size());
+  PSI_CHECK(nodes.MaxDeviation > 0.1, "201 control points in 64 nodes: deviation %g reported",
+    nodes.MaxDeviation);
+}
 } // namespace
 
 int main()
 {
+  TestOverBudget();
   TestSpike();
   TestStep();
   TestBendingColorMap();
