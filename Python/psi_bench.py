@@ -61,9 +61,30 @@ def time_frames(view, frames, jitter=0.5, budget=30.0):
     return sum(times) / len(times) if times else float("nan")
 
 
+def align_color_points(lut, pwf):
+    """Adds a color point at every opacity point (colors interpolated in RGB, so the map does not
+    change). VTK 9.2's vtkUnstructuredGridLinearRayIntegrator, the reference of these benchmarks,
+    takes the opacity function's control points only where the color map has one too (its loop
+    over the opacity points ends at the first), so Bunyk + linear is exact only with aligned
+    points and a color map interpolating in RGB."""
+    rgb = list(lut.RGBPoints)
+    xs = rgb[0::4]
+    for x in list(pwf.Points)[0::4]:
+        if any(abs(x - c) <= 1e-12 * max(1.0, abs(x)) for c in xs):
+            continue
+        k = max(i for i in range(len(xs)) if xs[i] < x) if xs[0] < x else -1
+        if k < 0 or k + 1 >= len(xs):
+            continue  # outside the color map: clamped, constant there
+        w = (x - xs[k]) / (xs[k + 1] - xs[k])
+        c = [rgb[4 * k + j] + w * (rgb[4 * (k + 1) + j] - rgb[4 * k + j]) for j in (1, 2, 3)]
+        rgb[4 * (k + 1):4 * (k + 1)] = [x] + c
+        xs = rgb[0::4]
+    lut.RGBPoints = rgb
+
+
 class Scene:
-    """One view orbiting a volume; the color map is in RGB space so that the linear integrator
-    (linear between control points) is exact for it."""
+    """One view orbiting a volume; the color map is in RGB space, with a point at every opacity
+    point, so that the linear integrator (linear between control points) is exact for it."""
 
     def __init__(self, src, array, size=512, frames=12, unit_distance=None, transparent_below=0.0):
         self.frames = frames
@@ -82,6 +103,8 @@ class Scene:
             lo, hi = pwf.Points[0], pwf.Points[-4]
             cut = lo + transparent_below * (hi - lo)
             pwf.Points = [lo, 0.0, 0.5, 0.0, cut, 0.0, 0.5, 0.0, hi, 1.0, 0.5, 0.0]
+        align_color_points(simple.GetColorTransferFunction(array),
+                           simple.GetOpacityTransferFunction(array))
         simple.Render(self.view)
         self.view.ResetCamera()
         cam = self.view.GetActiveCamera()

@@ -34,6 +34,18 @@ def exit_now(code):
     os._exit(code)
 
 
+def black_view(size):
+    """A size x size render view on a black background, without orientation axes: premultiplied
+    volume colors read back as they are."""
+    from paraview import simple
+    view = simple.CreateRenderView()
+    view.ViewSize = [size, size]
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = [0.0, 0.0, 0.0]
+    return view
+
+
 def grab(view):
     """The view's current image as float RGB in [0, 255], rows from the bottom."""
     w2i = vtkWindowToImageFilter()

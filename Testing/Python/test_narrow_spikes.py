@@ -20,11 +20,7 @@ psi_data.load_plugin(globals())
 grid = simple.Wavelet(WholeExtent=[0, 6, 0, 6, 0, 40])
 calc = simple.Calculator(Input=grid, ResultArrayName="s", Function="coordsZ/40")
 slab = simple.Tetrahedralize(Input=calc)
-view = simple.CreateRenderView()
-view.ViewSize = [120, 120]
-view.OrientationAxesVisibility = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [0.0, 0.0, 0.0]
+view = psi_testing.black_view(120)
 d = simple.Show(slab, view)
 simple.ColorBy(d, ("POINTS", "s"))
 d.SetRepresentationType("Psi Volume")

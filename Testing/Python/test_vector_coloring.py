@@ -22,11 +22,7 @@ mag = simple.Calculator(Input=calc, ResultArrayName="Vmag", Function="mag(V)")
 vz = simple.Calculator(Input=mag, ResultArrayName="Vz", Function="V_Z")
 vx = simple.Calculator(Input=vz, ResultArrayName="Vx", Function="V_X")
 cells = simple.PointDatatoCellData(Input=vx)
-view = simple.CreateRenderView()
-view.ViewSize = [160, 160]
-view.OrientationAxesVisibility = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [0.0, 0.0, 0.0]
+view = psi_testing.black_view(160)
 
 
 def image(source, assoc, array, component=None, rng=None, representation="Psi Volume"):
