@@ -56,6 +56,7 @@ CONFIGS = [
     ("isosurfaces 4", iso(4), "Off", MT, False),
     ("isosurfaces 1 per fragment", iso(1), "Off", PF, False),
     ("isosurfaces 4 per fragment", iso(4), "Off", PF, False),
+    ("adaptive Auto (default)", [], "Auto", MT, False),
     ("adaptive sampling", [], "On", MT, False),
     ("isosurfaces 1 + adaptive", iso(1), "On", MT, False),
     ("isosurfaces 4 + adaptive", iso(4), "On", MT, False),
