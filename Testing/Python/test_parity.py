@@ -1,0 +1,130 @@
+"""Parity walk: what ParaView 5.11's 'Volume' representation honours, 'Psi Volume' honours too.
+Each step changes one thing (the array, a vector component, point or cell data, the color map,
+the opacity function, log scale, the unit distance, the scalar bar, visibility, a second view,
+DepthPeelingForVolumes) and renders 'Volume' ('Projected tetra') and 'Psi Volume' of the same
+mesh in the same view. Each must react as 'Volume' does: its image changes exactly when
+'Volume's' changes, and after the change the two images agree as well as they did before
+(Projected tetra is not exact, so 'agree' is within a bound measured on the baseline).
+UseSeparateOpacityArray is not honoured yet and not in the walk (README, Known limitations):
+'Psi Volume' warns when drawn with it."""
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
+import numpy as np  # noqa: E402
+import psi_data  # noqa: E402
+import psi_testing  # noqa: E402
+from paraview import simple  # noqa: E402
+
+t = psi_testing.Checks("test_parity")
+psi_data.load_plugin(globals())
+src, array = psi_data.wavelet(6)
+calc = simple.Calculator(Input=src, ResultArrayName="V",
+                         Function="coordsX*iHat + RTData/40*jHat + (coordsZ + 10)*kHat")
+calc2 = simple.Calculator(Input=calc, ResultArrayName="Other", Function="RTData*0.5 + 40*sin(coordsX)")
+cells = simple.PointDatatoCellData(Input=calc2)
+view = psi_testing.black_view(120)
+CHANGED = 0.5  # mean |difference| on 0..255 that counts as a change
+
+
+def show(source, rep):
+    d = simple.Show(source, view)
+    d.SetRepresentationType(rep)
+    if rep == "Volume":
+        d.SelectMapper = "Projected tetra"
+    return d
+
+
+def pair(source, setup):
+    """Images of 'Volume' and 'Psi Volume' of `source` after `setup(display)`."""
+    out = []
+    for rep in ("Volume", "Psi Volume"):
+        d = show(source, rep)
+        setup(d)
+        simple.Render(view)
+        out.append(psi_testing.grab(view))
+        simple.Hide(source, view)
+    return out
+
+
+def color(d, assoc="POINTS", name=array, comp=None, unit=3.0):
+    simple.ColorBy(d, (assoc, name) if comp is None else (assoc, name, comp))
+    d.ScalarOpacityUnitDistance = unit
+
+
+def diff(a, b):
+    return float(np.abs(a - b).mean())
+
+
+base_setup = lambda d: color(d)  # noqa: E731
+simple.Render(view)
+vol0, psi0 = pair(calc2, base_setup)
+view.ResetCamera()
+view.GetActiveCamera().Elevation(20)
+vol0, psi0 = pair(calc2, base_setup)
+agree0 = diff(vol0, psi0)
+t.check(psi_testing.covered(psi0, [0, 0, 0]) > 2000, "baseline is not empty")
+print("baseline: 'Volume' vs 'Psi Volume' mean difference %.2f/255" % agree0)
+bound = max(4.0 * agree0, 3.0)
+
+
+def step(name, source, setup, undo=None, expect_change=True):
+    vol, psi = pair(source, setup)
+    dv, dp, agree = diff(vol, vol0), diff(psi, psi0), diff(vol, psi)
+    print("%-32s 'Volume' %6.2f  'Psi Volume' %6.2f  between %6.2f" % (name, dv, dp, agree))
+    t.check((dv > CHANGED) == expect_change, "%s: 'Volume' %s (%.2f)"
+            % (name, "changes" if expect_change else "is unchanged", dv))
+    t.check((dp > CHANGED) == (dv > CHANGED), "%s: 'Psi Volume' reacts as 'Volume' (%.2f vs %.2f)"
+            % (name, dp, dv))
+    t.check(agree < bound, "%s: the two still agree (%.2f, bound %.2f)" % (name, agree, bound))
+    if undo:
+        undo()
+
+
+lut = simple.GetColorTransferFunction(array)
+pwf = simple.GetOpacityTransferFunction(array)
+lo, hi = calc2.PointData[array].GetRange()
+step("another array", calc2, lambda d: color(d, name="Other"))
+step("vector magnitude", calc2, lambda d: color(d, name="V", comp="Magnitude"))
+step("vector component Z", calc2, lambda d: color(d, name="V", comp="Z"))
+step("cell data", cells, lambda d: color(d, assoc="CELLS"))
+step("color map preset", calc2, lambda d: (color(d), lut.ApplyPreset("Viridis (matplotlib)", True)),
+     undo=lambda: lut.ApplyPreset("Cool to Warm", True))
+saved = list(pwf.Points)
+step("opacity function", calc2,
+     lambda d: (color(d), setattr(pwf, "Points", [lo, 0.0, 0.5, 0.0, 0.5 * (lo + hi), 0.0, 0.5, 0.0,
+                                                   hi, 1.0, 0.5, 0.0])),
+     undo=lambda: setattr(pwf, "Points", saved))
+step("color map log scale", calc2, lambda d: (color(d), setattr(lut, "UseLogScale", 1)),
+     undo=lambda: setattr(lut, "UseLogScale", 0))
+step("unit distance", calc2, lambda d: color(d, unit=1.0))
+step("scalar bar", calc2, lambda d: (color(d), d.SetScalarBarVisibility(view, True)),
+     undo=lambda: simple.GetScalarBar(lut, view).__setattr__("Visibility", 0))
+step("DepthPeelingForVolumes off", calc2,
+     lambda d: (color(d), setattr(view, "DepthPeelingForVolumes", 0)),
+     undo=lambda: setattr(view, "DepthPeelingForVolumes", 1), expect_change=False)
+step("hidden", calc2, lambda d: (color(d), setattr(d, "Visibility", 0)))
+
+# A second view of the same representation type: each view draws the mesh at its own camera.
+view2 = psi_testing.black_view(120)
+imgs = {}
+for rep in ("Volume", "Psi Volume"):
+    for v in (view, view2):
+        d = simple.Show(calc2, v)
+        d.SetRepresentationType(rep)
+        color(d)
+    simple.Render(view2)
+    view2.ResetCamera()
+    view2.GetActiveCamera().Azimuth(90)
+    simple.Render(view2)
+    simple.Render(view)
+    imgs[rep] = (psi_testing.grab(view), psi_testing.grab(view2))
+    simple.Hide(calc2, view)
+    simple.Hide(calc2, view2)
+for rep, (a, b) in imgs.items():
+    t.check(diff(a, vol0 if rep == "Volume" else psi0) < CHANGED,
+            "%s: the first view is unchanged by a second one" % rep)
+    t.check(diff(a, b) > CHANGED and psi_testing.covered(b, [0, 0, 0]) > 2000,
+            "%s: the second view draws its own camera" % rep)
+t.check(diff(imgs["Volume"][1], imgs["Psi Volume"][1]) < bound, "second view: the two agree")
+t.finish()
