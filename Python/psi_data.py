@@ -42,6 +42,13 @@ def wavelet(half=20):
     return simple.Tetrahedralize(Input=w), "RTData"
 
 
+def with_vector(src):
+    """`src` (a Wavelet) with the point vector V = (x, RTData / 40, z + 10), whose components and
+    magnitude all differ from each other."""
+    return simple.Calculator(Input=src, ResultArrayName="V",
+                             Function="coordsX*iHat + RTData/40*jHat + (coordsZ + 10)*kHat")
+
+
 def plot3d(name, data_dir=SHARED_DATA):
     xyz, q, iblank, array = PLOT3D[name]
     reader = simple.PLOT3DReader(FileName=os.path.join(data_dir, xyz),

@@ -19,8 +19,7 @@ from paraview import simple  # noqa: E402
 t = psi_testing.Checks("test_parity")
 psi_data.load_plugin(globals())
 src, array = psi_data.wavelet(6)
-calc = simple.Calculator(Input=src, ResultArrayName="V",
-                         Function="coordsX*iHat + RTData/40*jHat + (coordsZ + 10)*kHat")
+calc = psi_data.with_vector(src)
 calc2 = simple.Calculator(Input=calc, ResultArrayName="Other", Function="RTData*0.5 + 40*sin(coordsX)")
 cells = simple.PointDatatoCellData(Input=calc2)
 view = psi_testing.black_view(120)

@@ -15,9 +15,7 @@ from paraview import simple  # noqa: E402
 t = psi_testing.Checks("test_vector_coloring")
 psi_data.load_plugin(globals())
 src, _ = psi_data.wavelet(8)
-# V = (x, RTData / 40, z + 10): its components and its magnitude all differ from each other
-calc = simple.Calculator(Input=src, ResultArrayName="V",
-                         Function="coordsX*iHat + RTData/40*jHat + (coordsZ + 10)*kHat")
+calc = psi_data.with_vector(src)
 mag = simple.Calculator(Input=calc, ResultArrayName="Vmag", Function="mag(V)")
 vz = simple.Calculator(Input=mag, ResultArrayName="Vz", Function="V_Z")
 vx = simple.Calculator(Input=vz, ResultArrayName="Vx", Function="V_X")
