@@ -6,15 +6,17 @@
 
 #include <algorithm>
 
-bool PsiAdaptiveNodes::NeedsUpdate(vtkVolumeProperty* property, const double range[2]) const
+bool PsiAdaptiveNodes::NeedsUpdate(
+  vtkVolumeProperty* property, const double range[2], int tableVersion) const
 {
   return property->GetMTime() != this->Time || this->Range[0] != range[0] ||
-    this->Range[1] != range[1];
+    this->Range[1] != range[1] || tableVersion != this->TableVersion;
 }
 
 void PsiAdaptiveNodes::Update(vtkVolumeProperty* property, const double range[2],
-  const psi::TransferFunctionTable& table, int maxNodes, double tolerance)
+  const psi::TransferFunctionTable& table, int tableVersion, int maxNodes, double tolerance)
 {
+  this->TableVersion = tableVersion;
   this->Nodes = psi::SampleTransferFunctionNodes(property, range, maxNodes, tolerance);
   this->TableDeviation = psi::TableDeviation(
     table, this->Nodes, std::max(property->GetScalarOpacityUnitDistance(0), 1e-30));

@@ -20,11 +20,12 @@ struct TransferFunctionTable;
 class PsiAdaptiveNodes
 {
 public:
-  bool NeedsUpdate(vtkVolumeProperty* property, const double range[2]) const;
+  /// When the property, the range or the sampled table (its version) changed.
+  bool NeedsUpdate(vtkVolumeProperty* property, const double range[2], int tableVersion) const;
   /// Samples the nodes of `property` over `range` (at most `maxNodes`, refined to
-  /// `tolerance`) and measures `table` against them.
+  /// `tolerance`) and measures `table` (of version `tableVersion`) against them.
   void Update(vtkVolumeProperty* property, const double range[2],
-    const psi::TransferFunctionTable& table, int maxNodes, double tolerance);
+    const psi::TransferFunctionTable& table, int tableVersion, int maxNodes, double tolerance);
   /// Sets tfNodes, tfNodeValues and tfNodeCount.
   void Activate(vtkShaderProgram* program) const;
 
@@ -41,6 +42,7 @@ private:
   bool Faithful = true;
   vtkMTimeType Time = 0;
   double Range[2] = { 0, 0 };
+  int TableVersion = -1;
 };
 
 #endif

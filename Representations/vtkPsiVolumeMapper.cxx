@@ -366,10 +366,10 @@ void vtkPsiVolumeMapper::UpdateTables(vtkOpenGLRenderWindow* renWin, vtkVolume* 
     I.Mesh.UpdateGradients(renWin);
   }
   if (this->AdaptiveSampling != ADAPTIVE_OFF &&
-    I.AdaptiveNodes.NeedsUpdate(property, mesh.ScalarRange))
+    I.AdaptiveNodes.NeedsUpdate(property, mesh.ScalarRange, I.Tables.Transfer.GetVersion()))
   {
     I.AdaptiveNodes.Update(property, mesh.ScalarRange, I.Tables.Transfer.GetTable(),
-      MaxAdaptiveNodes, AdaptiveNodeTolerance);
+      I.Tables.Transfer.GetVersion(), MaxAdaptiveNodes, AdaptiveNodeTolerance);
   }
 }
 

@@ -223,4 +223,22 @@ MUTATIONS = [
     Mutation("off_record_extra_values_accepted", "Readers/PsiOFFParser.cxx",
              "  if (n != 4)\n  {\n    std::ostringstream msg;",
              "  if (n < 4)\n  {\n    std::ostringstream msg;", ["OFFReader"]),
+    # --- Exact adaptive sampling: the nodes (Core/PsiTransferFunctionNodes), the early-discard
+    # prefix that sees spikes between samples, and the piece's node interval in the shader.
+    Mutation("adaptive_piece_interval_off_by_one", "Shaders/PsiAdaptiveFS.glsl",
+             "tfPiece = nStep > 0 ? ni - 1 : ni;", "tfPiece = nStep > 0 ? ni : ni;",
+             ["PsiIsosurfaces"]),
+    Mutation("adaptive_search_descending_bound", "Shaders/PsiAdaptiveFS.glsl",
+             "int ni = ds >= 0.0 ? lo : lo - 1;", "int ni = ds >= 0.0 ? lo : lo;",
+             ["PsiIsosurfaces"]),
+    Mutation("nodes_step_not_split", "Core/PsiTransferFunctionNodes.cxx",
+             "if (Distance(left, right) > 1e-6)", "if (Distance(left, right) > 1e6)",
+             ["TransferFunctionNodes"]),
+    Mutation("nodes_refinement_too_coarse", "Core/PsiTransferFunctionNodes.cxx",
+             "      if (d > tolerance)", "      if (d > 100 * tolerance)",
+             ["TransferFunctionNodes"]),
+    Mutation("prefix_spike_between_samples_ignored", "Core/PsiTransferFunctionAnalysis.cxx",
+             "if (n[1] > 0 && x >= 0 && x <= table.Size - 1)",
+             "if (n[1] > 1 && x >= 0 && x <= table.Size - 1)",
+             ["TransferFunctionNodes"]),
 ]
