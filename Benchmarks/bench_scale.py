@@ -2,7 +2,8 @@
 mesh grows, each mapper in its own pvpython process so that peak memory is its own.
 
 pvpython Benchmarks/bench_scale.py [--sizes 20 40 60] [--bluntfin] [--size 512] [--frames 4]
-                                   [--mappers "Psi Volume GS" "Psi Volume CS" "Projected tetra"
+                                   [--mappers "Psi Volume GS" "Psi Volume GS fan" "Psi Volume CS"
+                                              "Projected tetra"
                                               "Bunyk ray cast"]
                                    [--bunyk-max-tets 400000] [--threads 1 2]
 
@@ -18,7 +19,8 @@ pvpython Benchmarks/bench_scale.py [--sizes 20 40 60] [--bluntfin] [--size 512] 
     rendered at a fixed view, over a plain frame at that view.
 'Psi Volume' runs with its defaults (partial pre-integration, MPVONC), once with each projector:
 "Psi Volume GS" the geometry shader, "Psi Volume CS" the compute shader ("Psi Volume": Auto).
-Bunyk runs only up to
+"Psi Volume GS fan" draws the geometry shader's Shirley-Tuchman fan instead of the silhouettes
+(the two give the same image). Bunyk runs only up to
 --bunyk-max-tets. Ratios are taken within one run; absolute times vary with the machine."""
 import argparse
 import json
@@ -46,6 +48,8 @@ out.GetPointData().AddArray(a)
 
 
 # 'Psi Volume' with each projector (vtkPsiVolumeMapper::Projectors); plain 'Psi Volume' is Auto.
+# A " fan" suffix draws Shirley and Tuchman's fan instead of the default silhouettes
+# (vtkPsiVolumeMapper::Decompositions).
 PROJECTORS = {"Psi Volume GS": "Geometry Shader", "Psi Volume CS": "Compute Shader"}
 
 
@@ -72,7 +76,9 @@ def worker(args):
     rep = psi_data.show_volume(prog, "step", view, representation="Volume")
     if args.mapper.startswith("Psi Volume"):
         rep.SetRepresentationType("Psi Volume")
-        rep.Projector = PROJECTORS.get(args.mapper, "Auto")
+        base = args.mapper[:-len(" fan")] if args.mapper.endswith(" fan") else args.mapper
+        rep.Projector = PROJECTORS.get(base, "Auto")
+        rep.Decomposition = "Fan" if args.mapper.endswith(" fan") else "Silhouette"
     else:
         rep.SelectMapper = args.mapper
     view.ResetCamera()
@@ -138,8 +144,8 @@ def main():
     p.add_argument("--frames", type=int, default=4)
     p.add_argument("--threads", nargs=2, type=int, default=[1, 2])
     p.add_argument("--mappers", nargs="*",
-                   default=["Psi Volume GS", "Psi Volume CS", "Projected tetra",
-                            "Bunyk ray cast"])
+                   default=["Psi Volume GS", "Psi Volume GS fan", "Psi Volume CS",
+                            "Projected tetra", "Bunyk ray cast"])
     p.add_argument("--bunyk-max-tets", type=int, default=400000)
     p.add_argument("--timeout", type=float, default=3000)
     args = p.parse_args()
@@ -147,7 +153,7 @@ def main():
         worker(args)
         return
     datasets = [str(s) for s in args.sizes] + (["bluntfin"] if args.bluntfin else [])
-    print("%-10s %-18s %11s %9s %9s %9s %9s %8s %12s" % (
+    print("%-10s %-20s %11s %9s %9s %9s %9s %8s %12s" % (
         "tets", "mapper", "first (s)", "s/frame", "speed/PT", "RSS (MB)", "RSS/PT",
         "%d->%d thr" % tuple(args.threads), "step/frame"))
     for data in datasets:
@@ -162,7 +168,7 @@ def main():
                 rows[mapper] = (fast, slow)
         pt = rows.get("Projected tetra", (None, None))[0]
         for mapper, (r, slow) in rows.items():
-            print("%-10d %-18s %11.3f %9.3f %8.2fx %9.0f %8.2fx %7.2fx %11.2fx" % (
+            print("%-10d %-20s %11.3f %9.3f %8.2fx %9.0f %8.2fx %7.2fx %11.2fx" % (
                 r["cells"], mapper, r["first"], r["spf"],
                 pt["spf"] / r["spf"] if pt else float("nan"), r["rss"],
                 r["rss"] / pt["rss"] if pt else float("nan"),

@@ -39,6 +39,21 @@ bool PsiRenderTarget::OpaqueGeometryOverlaps(vtkRenderer* ren, vtkVolume* vol)
   return false;
 }
 
+bool PsiRenderTarget::SceneHasOpaqueGeometry(vtkRenderer* ren)
+{
+  vtkPropCollection* props = ren->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* p = props->GetNextProp(it))
+  {
+    if (p->GetVisibility() && !p->IsA("vtkVolume") && p->HasOpaqueGeometry())
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 PsiRenderTarget::~PsiRenderTarget() = default;
 
 bool PsiRenderTarget::CaptureDepthTexture(
@@ -73,10 +88,15 @@ bool PsiRenderTarget::CaptureDepthTexture(
   }
   this->Origin[0] = x0;
   this->Origin[1] = y0;
-  // the scene's depth, read from the framebuffer bound for reading (the one being rendered)
-  this->DepthTexture->Activate();
-  this->DepthTexture->CopyFromFrameBuffer(x0, y0, 0, 0, w, h);
-  this->DepthTexture->Deactivate();
+  // the scene's depth, read from the framebuffer bound for reading (the one being rendered);
+  // without opaque geometry it is the far plane everywhere, and the depth test is skipped
+  this->DepthTest = sampleDepth || SceneHasOpaqueGeometry(ren);
+  if (this->DepthTest)
+  {
+    this->DepthTexture->Activate();
+    this->DepthTexture->CopyFromFrameBuffer(x0, y0, 0, 0, w, h);
+    this->DepthTexture->Deactivate();
+  }
   this->SampleDepth = sampleDepth;
   if (sampleDepth)
   {
@@ -119,7 +139,14 @@ void PsiRenderTarget::DrawAndComposite(
     ostate->vtkglDisable(GL_SCISSOR_TEST);
     ostate->vtkglClearColor(0, 0, 0, 0);
     ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-    ostate->vtkglEnable(GL_DEPTH_TEST); // against the scene's opaque geometry
+    if (this->DepthTest) // against the scene's opaque geometry
+    {
+      ostate->vtkglEnable(GL_DEPTH_TEST);
+    }
+    else
+    {
+      ostate->vtkglDisable(GL_DEPTH_TEST);
+    }
     ostate->vtkglDepthFunc(GL_LESS);
     ostate->vtkglDepthMask(GL_FALSE);
     ostate->vtkglDisable(GL_CULL_FACE);

@@ -30,8 +30,12 @@ public:
   /// Whether a visible opaque prop other than `vol` overlaps the volume's bounds: only then can
   /// opaque geometry cut through cells, which needs the scene depth in the fragment shader.
   static bool OpaqueGeometryOverlaps(vtkRenderer* ren, vtkVolume* vol);
+  /// Whether any visible prop other than volumes has opaque geometry (else the scene depth is
+  /// the cleared far plane everywhere, and the depth test would reject nothing).
+  static bool SceneHasOpaqueGeometry(vtkRenderer* ren);
   /// Sizes the target to the renderer's tile and copies the scene depth from the framebuffer
-  /// being rendered; with `sampleDepth` also the copy the shaders read. False for an empty tile.
+  /// being rendered, for the depth test, when the scene has opaque geometry; with `sampleDepth`
+  /// also the copy the shaders read. False for an empty tile.
   bool CaptureDepthTexture(vtkRenderer* ren, vtkOpenGLRenderWindow* renWin, bool sampleDepth);
   /// Sets the shaders' `sceneDepth` sampler and `viewportSize` (after CaptureDepthTexture).
   void SetShaderParameters(vtkShaderProgram* program);
@@ -52,6 +56,7 @@ private:
   int Size[2] = { 0, 0 };
   int Origin[2] = { 0, 0 };
   bool SampleDepth = false;
+  bool DepthTest = true; // the scene has opaque geometry to hide cells behind
 };
 
 #endif

@@ -10,6 +10,8 @@
 #include "PsiExactSegmentsGS.h"
 #include "PsiHAPTSegmentsFS.h"
 #include "PsiHAPTSegmentsGS.h"
+#include "PsiRaySegmentsFS.h"
+#include "PsiRaySegmentsGS.h"
 #include "PsiIntegratorInputsFS.h"
 #include "PsiIsoFlatNormalsGS.h"
 #include "PsiIsoPerFragmentFS.h"
@@ -33,6 +35,7 @@
 #include "PsiVolumeVS.h"
 
 #include <cctype>
+#include <cstdlib>
 #include <map>
 #include <set>
 #include <sstream>
@@ -215,6 +218,14 @@ bool Uses(const char* source, const char* name)
   return std::string(source).find(name) != std::string::npos;
 }
 
+// The segment feature's file: ray segments through the silhouette, or the fan's exact
+// perspective segments or screen-linear triple.
+const char* SegmentsSource(const ShaderFeatures& f, const char* ray, const char* exact,
+  const char* screenLinear)
+{
+  return f.Silhouette ? ray : f.ExactSegments ? exact : screenLinear;
+}
+
 std::string ComposeGeometry(const ShaderFeatures& f)
 {
   const bool iso = f.IsoCount > 0;
@@ -231,11 +242,11 @@ std::string ComposeGeometry(const ShaderFeatures& f)
   {
     Apply(gs, PsiPointIdsGS);
   }
-  if (f.ExactSegments || iso)
+  if (f.Silhouette || f.ExactSegments || iso)
   {
     Apply(gs, PsiCellGradientGS);
   }
-  Apply(gs, f.ExactSegments ? PsiExactSegmentsGS : PsiHAPTSegmentsGS);
+  Apply(gs, SegmentsSource(f, PsiRaySegmentsGS, PsiExactSegmentsGS, PsiHAPTSegmentsGS));
   if (f.NearClip)
   {
     Apply(gs, PsiNearClipGS);
@@ -289,7 +300,8 @@ std::vector<ShaderVariable> DeclaredOutputs(const std::string& src)
 
 bool ShaderFeatures::operator==(const ShaderFeatures& o) const
 {
-  return Method == o.Method && ExactSegments == o.ExactSegments && NearClip == o.NearClip &&
+  return Method == o.Method && ExactSegments == o.ExactSegments && Silhouette == o.Silhouette &&
+    NearClip == o.NearClip &&
     OpaqueClip == o.OpaqueClip && EarlyDiscard == o.EarlyDiscard && IsoCount == o.IsoCount &&
     IsoSmooth == o.IsoSmooth && IsoTriangles == o.IsoTriangles && Adaptive == o.Adaptive &&
     MaxAdaptiveNodes == o.MaxAdaptiveNodes && MaxLights == o.MaxLights;
@@ -302,7 +314,11 @@ std::string ShaderFeatures::Defines() const
   {
     d += "#define PSI_OPAQUE_CLIP\n";
   }
-  if (ExactSegments)
+  if (Silhouette)
+  {
+    d += "#define PSI_SILHOUETTE\n";
+  }
+  else if (ExactSegments)
   {
     d += "#define PSI_EXACT_SEGMENTS\n";
   }
@@ -337,9 +353,16 @@ std::string ShaderFeatures::Key() const
   return this->Defines() + "method " + std::to_string(Method) + "\n";
 }
 
+bool SilhouetteChosen(int decomposition)
+{
+  const char* site = std::getenv("PSI_DECOMPOSITION");
+  return decomposition == 2 ? !(site && std::string(site) == "fan") : decomposition == 0;
+}
+
 int GeometryOutputVertices(const ShaderFeatures& f)
 {
-  const int projection = 8; // PsiProjectionClassesGS.glsl: class 2, strips of 5 and 3
+  // PsiProjectionClassesGS.glsl: the fan of class 2, strips of 5 and 3; a silhouette quad
+  const int projection = f.Silhouette ? 4 : 8;
   const int surface = 4;    // PsiIsoTrianglesGS.glsl emitSurface: a strip of at most 4
   if (f.IsoCount > 0 && f.IsoTriangles)
   {
@@ -350,7 +373,8 @@ int GeometryOutputVertices(const ShaderFeatures& f)
 
 int ProjectedTrianglesMax(const ShaderFeatures& f)
 {
-  const int projection = 4; // class 2: four triangles (Shirley & Tuchman's largest split)
+  // class 2: four triangles (Shirley & Tuchman's largest split); a silhouette quad has two
+  const int projection = f.Silhouette ? 2 : 4;
   const int surface = 2;    // a marching-tetrahedra quad
   if (f.IsoCount > 0 && f.IsoTriangles)
   {
@@ -442,7 +466,7 @@ ShaderSources ComposeShaders(const ShaderFeatures& f, const char* integratorSour
     throw std::logic_error("PsiShaderComposer: no tag //PSI::Integrator::Impl");
   }
   Apply(fs, f.Adaptive ? PsiTransferNodesFS : PsiTransferTableFS);
-  Apply(fs, f.ExactSegments ? PsiExactSegmentsFS : PsiHAPTSegmentsFS);
+  Apply(fs, SegmentsSource(f, PsiRaySegmentsFS, PsiExactSegmentsFS, PsiHAPTSegmentsFS));
   if (f.NearClip)
   {
     Apply(fs, PsiNearClipFS);

@@ -30,6 +30,10 @@ struct PSIVOLUMEREPRESENTATIONS_EXPORT ShaderFeatures
   /// Perspective: exact segments from the front point and the back plane (PsiExactSegments*.glsl)
   /// instead of the screen-linear (s_f, s_b, l) triple (PsiHAPTSegments*.glsl).
   bool ExactSegments = false;
+  /// Each projection drawn as its silhouette (1-2 triangles) whose fragments intersect their ray
+  /// with the face planes (PsiRaySegments*.glsl), exact in both projections, instead of the 1-4
+  /// triangles of the fan (ExactSegments or the screen-linear triple).
+  bool Silhouette = false;
   /// The near plane cuts the mesh: cut cells are intersected per fragment (PsiNearClip*.glsl).
   bool NearClip = false;
   /// Opaque geometry inside the volume: cut cells are integrated up to it (PsiOpaqueClipFS.glsl).
@@ -63,11 +67,18 @@ struct PSIVOLUMEREPRESENTATIONS_EXPORT ShaderFeatures
   std::string Key() const;
 };
 
-/// Geometry-shader output vertices: the largest projected decomposition (8 vertices: class 2,
-/// a strip of 5 and one of 3; the near-plane screen box has 4), and with marching tetrahedra
-/// that once per volume piece (IsoCount + 1) plus a 4-vertex strip per surface.
+/// Whether a mapper's Decomposition setting (0 silhouette, 1 fan, 2 auto) draws silhouettes:
+/// auto follows the environment's PSI_DECOMPOSITION ("fan" or "silhouette", a site's choice),
+/// else the silhouette.
+PSIVOLUMEREPRESENTATIONS_EXPORT bool SilhouetteChosen(int decomposition);
+
+/// Geometry-shader output vertices: the largest projected decomposition (the fan's 8 vertices:
+/// class 2, a strip of 5 and one of 3; the silhouette and the near-plane screen box have 4), and
+/// with marching tetrahedra that once per volume piece (IsoCount + 1) plus a 4-vertex strip per
+/// surface.
 PSIVOLUMEREPRESENTATIONS_EXPORT int GeometryOutputVertices(const ShaderFeatures& f);
-/// Triangles one tetrahedron emits at most: 4 for its projection (class 2), and with marching
+/// Triangles one tetrahedron emits at most: 4 for its fan (class 2; 2 for its silhouette or the
+/// near-plane screen box), and with marching
 /// tetrahedra 4 per volume piece plus 2 per surface. The compute-shader projector sizes its
 /// slots with it.
 PSIVOLUMEREPRESENTATIONS_EXPORT int ProjectedTrianglesMax(const ShaderFeatures& f);

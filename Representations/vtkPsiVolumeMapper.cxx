@@ -381,6 +381,7 @@ psi::ShaderFeatures vtkPsiVolumeMapper::ChooseFeatures(
   psi::ShaderFeatures f;
   f.Method = this->IntegrationMethod;
   f.ExactSegments = !cam.Parallel && this->ExactPerspectiveSegments;
+  f.Silhouette = psi::SilhouetteChosen(this->Decomposition);
   f.NearClip = cam.NearPlaneCuts(I.Mesh.GetMesh().Bounds);
   f.OpaqueClip = PsiRenderTarget::OpaqueGeometryOverlaps(ren, vol);
   f.IsoCount = this->Isosurfaces.Count();

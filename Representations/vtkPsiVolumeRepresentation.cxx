@@ -165,6 +165,22 @@ int vtkPsiVolumeRepresentation::GetProjector()
   return this->PsiMapper->GetProjector();
 }
 
+void vtkPsiVolumeRepresentation::SetDecomposition(int decomposition)
+{
+  decomposition = InRange(this, "Decomposition", decomposition,
+    vtkPsiVolumeMapper::DECOMPOSITION_SILHOUETTE, vtkPsiVolumeMapper::DECOMPOSITION_AUTO);
+  if (decomposition != this->PsiMapper->GetDecomposition())
+  {
+    this->PsiMapper->SetDecomposition(decomposition);
+    this->Modified();
+  }
+}
+
+int vtkPsiVolumeRepresentation::GetDecomposition()
+{
+  return this->PsiMapper->GetDecomposition();
+}
+
 void vtkPsiVolumeRepresentation::SetNumberOfIsosurfaces(int n)
 {
   if (n != this->PsiMapper->GetNumberOfIsosurfaces())

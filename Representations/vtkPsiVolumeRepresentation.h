@@ -60,6 +60,9 @@ public:
   /// See vtkPsiVolumeMapper::Projectors.
   void SetProjector(int projector);
   int GetProjector();
+  /// See vtkPsiVolumeMapper::Decompositions.
+  void SetDecomposition(int decomposition);
+  int GetDecomposition();
   ///@}
 
   ///@{

@@ -11,6 +11,7 @@ vec3 gradient;
     float scale = max(max(dot(e1, e1), dot(e2, e2)), dot(e3, e3));
     bool degenerate = abs(det) <= 1e-7 * scale * sqrt(scale);
 //PSI::ExactSegments::Degenerate
+//PSI::RaySegments::Degenerate
 //PSI::IsoTriangles::Degenerate
     gradient = degenerate ? vec3(0.0)
                           : ((scalar[1] - scalar[0]) * c23 + (scalar[2] - scalar[0]) * c31 +

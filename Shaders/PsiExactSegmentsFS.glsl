@@ -26,3 +26,9 @@ vec3 surfaceNormal()
 {
   return frontPoint.xyz;
 }
+
+// Window depth of the segment's front point: the fan triangle lies in the front face.
+float segmentFrontDepth()
+{
+  return gl_FragCoord.z;
+}

@@ -54,3 +54,10 @@ void setEdge(int a, int b)
     {
       return; // a zero-volume tetrahedron has no interior to integrate
     }
+
+//PSI::ExactSegments::Emit
+// The projection as Shirley and Tuchman's fan around the thick vertex (Maximo et al. 2010 §3.2).
+void emitProjection()
+{
+  emitFan();
+}

@@ -22,3 +22,9 @@ vec3 surfaceNormal()
 {
   return segment;
 }
+
+// Window depth of the segment's front point: the fan triangle lies in the front face.
+float segmentFrontDepth()
+{
+  return gl_FragCoord.z;
+}

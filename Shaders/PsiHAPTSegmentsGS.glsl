@@ -19,3 +19,10 @@ void setVertexNormal(vec3 n)
 void setEdge(int a, int b)
 {
 }
+
+//PSI::HAPTSegments::Emit
+// The projection as Shirley and Tuchman's fan around the thick vertex (Maximo et al. 2010 §3.2).
+void emitProjection()
+{
+  emitFan();
+}

@@ -4,7 +4,6 @@
 flat in ivec4 clipTet; // point ids of a cell cut by the near plane, x = -1 otherwise
 uniform samplerBuffer points; // xyz: model coordinates (shifted), w: scalar
 uniform mat4 MCVCMatrix;
-uniform mat4 VCDCMatrix;
 
 vec4 clipVertex(int id)
 {

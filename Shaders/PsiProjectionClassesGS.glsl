@@ -65,8 +65,8 @@ void classify()
   }
 }
 
-// Emits the Shirley-Tuchman decomposition of the classified projection.
-void emitProjection()
+// Emits the Shirley-Tuchman decomposition of the classified projection (HAPT's fan).
+void emitFan()
 {
   if (cls == 1)
   {
@@ -94,4 +94,21 @@ void emitProjection()
     emitThin(p0); emitThin(p1); setEdge(p0, p1); emitThick();
     EndPrimitive();
   }
+}
+
+// Emits the silhouette of the classified projection, the convex hull of the four projected
+// vertices, with the fewest triangles: class 1 (p3 inside), 3 (p3 on edge p0p1) and 4 (p2 and p3
+// coincide) are the triangle p0 p1 p2, class 2 the quad p0 p2 p1 p3 (a strip of 4). Every
+// fragment then finds its own segment (PsiRaySegments*.glsl).
+void emitSilhouette()
+{
+  if (cls == 2)
+  {
+    emitThin(p0); emitThin(p2); emitThin(p3); emitThin(p1); // the strip of quad p0 p2 p1 p3
+  }
+  else
+  {
+    emitThin(p0); emitThin(p1); emitThin(p2);
+  }
+  EndPrimitive();
 }

@@ -13,6 +13,7 @@
 // vec4 integrateSegment(float sf, float sb, float D).
 
 uniform mat4 DCVCMatrix;            // inverse projection: window depth -> view distance
+uniform mat4 VCDCMatrix;            // projection
 uniform vec2 viewportSize;
 uniform int parallelProjection;
 
@@ -35,6 +36,7 @@ vec3 viewPointAt(float depth)
 
 //PSI::HAPTSegments::Dec
 //PSI::ExactSegments::Dec
+//PSI::RaySegments::Dec
 //PSI::NearClip::Dec
 //PSI::SceneDepth::Dec
 //PSI::IsoShade::Dec
@@ -58,7 +60,7 @@ void main()
 //PSI::IsoTriangles::Surface
   float sf, sb, D;
   readSegment(sf, sb, D);
-  float frontDepth = gl_FragCoord.z;
+  float frontDepth = segmentFrontDepth();
   vec3 pFront = vec3(0.0), rayDir = vec3(0.0, 0.0, -1.0);
 //PSI::IsoPerFragment::Impl
 //PSI::NearClip::Impl

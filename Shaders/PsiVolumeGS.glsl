@@ -35,6 +35,7 @@ vec3 thickSeg;
 //PSI::CellGradient::Dec
 //PSI::HAPTSegments::Dec
 //PSI::ExactSegments::Dec
+//PSI::RaySegments::Dec
 //PSI::EarlyDiscard::Dec
 //PSI::NearClip::Dec
 //PSI::IsoFlatNormals::Dec
@@ -113,6 +114,9 @@ void setThick(vec3 pa, float sa, vec3 pb, float sb)
 
 //PSI::NearClip::Impl
 //PSI::ProjectionClasses::Impl
+//PSI::HAPTSegments::Emit
+//PSI::ExactSegments::Emit
+//PSI::RaySegments::Emit
 
 // The cell's volume: projected, or as a screen box when the near plane cuts it.
 void emitVolume(bool nearClipped)

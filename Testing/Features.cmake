@@ -10,6 +10,8 @@ add_test(NAME PsiIsosurfaces COMMAND TestPsiIsosurfaces "${CMAKE_BINARY_DIR}/Tes
 set_tests_properties(PsiIsosurfaces PROPERTIES ENVIRONMENT "PSI_PROJECTOR=geometry")
 add_test(NAME PsiIsosurfaces.compute COMMAND TestPsiIsosurfaces)
 set_tests_properties(PsiIsosurfaces.compute PROPERTIES ENVIRONMENT "PSI_PROJECTOR=compute")
+add_test(NAME PsiIsosurfaces.fan COMMAND TestPsiIsosurfaces)
+set_tests_properties(PsiIsosurfaces.fan PROPERTIES ENVIRONMENT "PSI_DECOMPOSITION=fan")
 
 find_program(PVPYTHON_EXECUTABLE NAMES pvpython REQUIRED)
 add_test(NAME PsiPython.isosurfaces
@@ -33,6 +35,9 @@ set_tests_properties(PsiDegenerateProjections PROPERTIES TIMEOUT 120
 add_test(NAME PsiDegenerateProjections.compute COMMAND TestPsiDegenerateProjections)
 set_tests_properties(PsiDegenerateProjections.compute PROPERTIES TIMEOUT 120
   ENVIRONMENT "PSI_PROJECTOR=compute")
+add_test(NAME PsiDegenerateProjections.fan COMMAND TestPsiDegenerateProjections)
+set_tests_properties(PsiDegenerateProjections.fan PROPERTIES TIMEOUT 120
+  ENVIRONMENT "PSI_DECOMPOSITION=fan")
 
 add_executable(TestPsiVisibilityOrder Cxx/TestPsiVisibilityOrder.cxx)
 target_link_libraries(TestPsiVisibilityOrder PRIVATE PsiVolume::Representations PsiVolume::Core PsiTestSupport

@@ -50,13 +50,16 @@ int Leftovers(const std::string& src)
   return n;
 }
 
-// Iso modes: 0 none, 1 per fragment flat, 2 per fragment smooth, 3 triangles flat, 4 smooth.
-psi::ShaderFeatures Make(int method, bool exact, bool nearClip, bool opaque, bool early, int iso,
+// Segments: 0 the fan's screen-linear triple, 1 the fan's exact segments, 2 silhouettes (ray
+// segments). Iso modes: 0 none, 1 per fragment flat, 2 per fragment smooth, 3 triangles flat,
+// 4 smooth.
+psi::ShaderFeatures Make(int method, int segments, bool nearClip, bool opaque, bool early, int iso,
   bool adaptive, int isoCount = 3)
 {
   psi::ShaderFeatures f;
   f.Method = method;
-  f.ExactSegments = exact;
+  f.ExactSegments = segments == 1;
+  f.Silhouette = segments == 2;
   f.NearClip = nearClip;
   f.OpaqueClip = opaque;
   f.Adaptive = adaptive;
@@ -79,6 +82,7 @@ void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
   const bool iso = f.IsoCount > 0;
   const bool tri = iso && f.IsoTriangles;
   const bool perFragment = iso && !f.IsoTriangles;
+  const bool exact = f.ExactSegments && !f.Silhouette, sil = f.Silhouette;
   const std::string& vs = s.Vertex;
   const std::string& gs = s.Geometry;
   const std::string& fs = s.Fragment;
@@ -95,11 +99,15 @@ void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
     { &vs, "flat out uvec4 vsIds;", iso || f.NearClip },
     { &gs, "flat in uvec4 vsIds[];", iso || f.NearClip },
     { &gs, "uniform int classTable[81];", true },
-    { &gs, "vec3 gradient;", f.ExactSegments || iso },
-    { &gs, "noperspective out vec3 segment;", !f.ExactSegments },
-    { &fs, "noperspective in vec3 segment;", !f.ExactSegments },
-    { &gs, "flat out vec4 backPlane;", f.ExactSegments },
-    { &fs, "flat in vec4 backPlane;", f.ExactSegments },
+    { &gs, "vec3 gradient;", exact || sil || iso },
+    { &gs, "noperspective out vec3 segment;", !exact && !sil },
+    { &fs, "noperspective in vec3 segment;", !exact && !sil },
+    { &gs, "flat out vec4 backPlane;", exact },
+    { &fs, "flat in vec4 backPlane;", exact },
+    { &gs, "flat out vec4 facePlane0;", sil },
+    { &fs, "flat in vec4 facePlane0;", sil },
+    { &gs, "emitSilhouette();", sil },
+    { &gs, "emitFan();", !sil },
     { &gs, "uniform float nearZ;", f.NearClip },
     { &gs, "flat out ivec4 clipTet;", f.NearClip },
     { &fs, "flat in ivec4 clipTet;", f.NearClip },
@@ -140,12 +148,14 @@ void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
   PSI_CHECK(found && std::stoi(m[1]) == vertices, "max_vertices %s != %d:\n%s",
     found ? m[1].str().c_str() : "?", vertices, what.c_str());
   const int niso = f.IsoCount;
-  PSI_CHECK(vertices == (tri ? 8 * (niso + 1) + 4 * niso : 8), "vertices %d:\n%s", vertices,
-    what.c_str());
-  // Per-vertex components: gl_Position, the segment (frontPoint + backPlane + scalarGrad, or
-  // segment), the flat data of the features (piece, clipTet, isoG0 + isoJ + isoV0).
+  const int projection = sil ? 4 : 8; // a silhouette quad; the fan's strips of 5 and 3
+  PSI_CHECK(vertices == (tri ? projection * (niso + 1) + 4 * niso : projection),
+    "vertices %d:\n%s", vertices, what.c_str());
+  // Per-vertex components: gl_Position, the segment (four face planes + scalar plane + surface
+  // normal, frontPoint + backPlane + scalarGrad, or segment), the flat data of the features
+  // (piece, clipTet, isoG0 + isoJ + isoV0).
   const int components = psi::GeometryOutputComponentsPerVertex(f);
-  const int expected = 4 + (f.ExactSegments ? 12 : 3) + (tri ? 1 : 0) + (f.NearClip ? 4 : 0) +
+  const int expected = 4 + (sil ? 23 : exact ? 12 : 3) + (tri ? 1 : 0) + (f.NearClip ? 4 : 0) +
     (perFragment ? 15 : 0);
   PSI_CHECK(components == expected, "components %d, expected %d:\n%s", components, expected,
     what.c_str());
@@ -164,11 +174,12 @@ int main(int argc, char* argv[])
   std::vector<psi::ShaderFeatures> all;
   for (int method = 0; method < 7; ++method)
   {
-    for (int bits = 0; bits < 32; ++bits)
+    for (int bits = 0; bits < 64; ++bits)
     {
       for (int iso = 0; iso < 5; ++iso)
       {
-        all.push_back(Make(method, bits & 1, bits & 2, bits & 4, bits & 8, iso, bits & 16));
+        const int segments = bits & 32 ? 2 : bits & 1;
+        all.push_back(Make(method, segments, bits & 2, bits & 4, bits & 8, iso, bits & 16));
       }
     }
   }
@@ -245,6 +256,18 @@ int main(int argc, char* argv[])
   compile.push_back(Make(1, false, false, false, true, 0, false));
   compile.push_back(Make(1, false, false, false, false, 0, true));
   compile.push_back(Make(1, true, true, true, true, 3, true, 1));
+  // Silhouettes (the default): every method plain and with every feature on, each isosurface
+  // mode with and without the other features.
+  for (int method = 0; method < 7; ++method)
+  {
+    compile.push_back(Make(method, 2, false, false, false, 0, false));
+    compile.push_back(Make(method, 2, true, true, true, method % 2 ? 4 : 2, true));
+  }
+  for (int iso = 1; iso < 5; ++iso)
+  {
+    compile.push_back(Make(1, 2, false, false, false, iso, false));
+    compile.push_back(Make(1, 2, true, true, true, iso, iso % 2));
+  }
 
   vtkNew<vtkRenderWindow> rw;
   rw->SetSize(8, 8);
