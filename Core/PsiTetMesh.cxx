@@ -32,11 +32,24 @@ void CellPoints(vtkUnstructuredGridBase* input, vtkIdType c, vtkIdList* ids, vtk
   }
 }
 
-void AppendPoint(TetMesh& m, const double p[3], float s)
+// Color and, with a separate opacity array, opacity scalar of tuple i; false if either is not
+// finite.
+bool TupleScalars(vtkDataArray* scalars, vtkIdType i, ScalarComponent c, double& s, double& o)
+{
+  s = ScalarValue(scalars, i, c);
+  o = c.Opacity >= 0 ? scalars->GetComponent(i, c.Opacity) : 0.0;
+  return FiniteScalar(s) && FiniteScalar(o);
+}
+
+void AppendPoint(TetMesh& m, const double p[3], float s, float o, ScalarComponent c)
 {
   m.Points4.insert(m.Points4.end(),
     { static_cast<float>(p[0] - m.Shift[0]), static_cast<float>(p[1] - m.Shift[1]),
       static_cast<float>(p[2] - m.Shift[2]), s });
+  if (c.Opacity >= 0)
+  {
+    m.Opacity.push_back(o);
+  }
 }
 
 // Point data: every input point once, with its scalar (0 where it is not finite).
@@ -48,24 +61,25 @@ void GatherPoints(vtkUnstructuredGridBase* input, vtkDataArray* scalars,
   m.Points4.reserve(4 * static_cast<size_t>(np));
   for (vtkIdType i = 0; i < np; ++i)
   {
-    const double s = ScalarValue(scalars, i, component);
-    finite[i] = FiniteScalar(s);
+    double s, o;
+    finite[i] = TupleScalars(scalars, i, component, s, o);
     double p[3];
     input->GetPoint(i, p);
-    AppendPoint(m, p, finite[i] ? static_cast<float>(s) : 0.0f);
+    AppendPoint(m, p, finite[i] ? static_cast<float>(s) : 0.0f,
+      finite[i] ? static_cast<float>(o) : 0.0f, component);
   }
 }
 
-// Cell data: the tetrahedron's own four points, all carrying the cell's scalar.
+// Cell data: the tetrahedron's own four points, all carrying the cell's scalars.
 void AppendCellScalarTet(vtkUnstructuredGridBase* input, const vtkIdType pts[4], double s,
-  TetMesh& m)
+  double o, ScalarComponent c, TetMesh& m)
 {
   const uint32_t base = static_cast<uint32_t>(m.NumberOfPoints());
   for (int v = 0; v < 4; ++v)
   {
     double p[3];
     input->GetPoint(pts[v], p);
-    AppendPoint(m, p, static_cast<float>(s));
+    AppendPoint(m, p, static_cast<float>(s), static_cast<float>(o), c);
     m.Tets.push_back(base + v);
   }
 }
@@ -85,10 +99,10 @@ void GatherTets(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cell
     }
     vtkIdType pts[4];
     CellPoints(input, c, ids, pts);
-    const double cellScalar = cellScalars ? ScalarValue(scalars, c, component) : 0.0;
-    const bool finite = cellScalars ? FiniteScalar(cellScalar)
-                                    : pointFinite[pts[0]] && pointFinite[pts[1]] &&
-        pointFinite[pts[2]] && pointFinite[pts[3]];
+    double cellScalar = 0.0, cellOpacity = 0.0;
+    const bool finite = cellScalars
+      ? TupleScalars(scalars, c, component, cellScalar, cellOpacity)
+      : pointFinite[pts[0]] && pointFinite[pts[1]] && pointFinite[pts[2]] && pointFinite[pts[3]];
     if (!finite)
     {
       ++m.NonFiniteTets;
@@ -108,7 +122,7 @@ void GatherTets(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cell
     }
     if (cellScalars)
     {
-      AppendCellScalarTet(input, pts, cellScalar, m);
+      AppendCellScalarTet(input, pts, cellScalar, cellOpacity, component, m);
       continue;
     }
     for (int v = 0; v < 4; ++v)
@@ -116,6 +130,34 @@ void GatherTets(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cell
       m.Tets.push_back(static_cast<uint32_t>(pts[v]));
     }
   }
+}
+
+// [lo, hi] made a non-empty range (0..1 when nothing was seen).
+void SetRange(double lo, double hi, double range[2])
+{
+  if (!(lo <= hi))
+  {
+    lo = 0;
+    hi = 1;
+  }
+  if (hi <= lo)
+  {
+    hi = lo + std::max(1e-6 * std::abs(lo), 1e-12);
+  }
+  range[0] = lo;
+  range[1] = hi;
+}
+
+// Range of the separate opacity scalars over the drawn tetrahedra.
+void MeasureOpacity(TetMesh& m)
+{
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (size_t k = 0; k < m.Tets.size() && !m.Opacity.empty(); ++k)
+  {
+    lo = std::min<double>(lo, m.Opacity[m.Tets[k]]);
+    hi = std::max<double>(hi, m.Opacity[m.Tets[k]]);
+  }
+  SetRange(lo, hi, m.OpacityRange);
 }
 
 // Scalar range of the drawn tetrahedra (never empty) and, when `edges`, the longest and shortest
@@ -146,17 +188,8 @@ void MeasureTets(TetMesh& m, bool edges = true)
     m.MaxEdgeLength = std::sqrt(maxEdge2);
     m.MinEdgeLength = std::isfinite(minEdge2) ? std::sqrt(minEdge2) : 0;
   }
-  if (!(lo <= hi))
-  {
-    lo = 0;
-    hi = 1;
-  }
-  if (hi <= lo)
-  {
-    hi = lo + std::max(1e-6 * std::abs(lo), 1e-12);
-  }
-  m.ScalarRange[0] = lo;
-  m.ScalarRange[1] = hi;
+  SetRange(lo, hi, m.ScalarRange);
+  MeasureOpacity(m);
 }
 } // namespace
 
@@ -207,20 +240,29 @@ bool UpdateTetMeshScalars(TetMesh& m, vtkDataArray* scalars, ScalarComponent com
   {
     return false;
   }
-  std::vector<float> values(np);
+  if ((component.Opacity >= 0) != !m.Opacity.empty())
+  {
+    return false; // a separate opacity array came or went: gather again
+  }
+  std::vector<float> values(np), opacities(m.Opacity.size());
   for (size_t i = 0; i < np; ++i)
   {
-    const double s = ScalarValue(scalars, static_cast<int64_t>(i), component);
-    if (!FiniteScalar(s))
+    double s, o;
+    if (!TupleScalars(scalars, static_cast<vtkIdType>(i), component, s, o))
     {
       return false;
     }
     values[i] = static_cast<float>(s);
+    if (!opacities.empty())
+    {
+      opacities[i] = static_cast<float>(o);
+    }
   }
   for (size_t i = 0; i < np; ++i)
   {
     m.Points4[4 * i + 3] = values[i];
   }
+  m.Opacity.swap(opacities);
   MeasureTets(m, false);
   return true;
 }

@@ -28,6 +28,10 @@ struct PSIVOLUMECORE_EXPORT TetMesh
   double Shift[3] = { 0, 0, 0 };           ///< subtracted from every input point
   double ScalarRange[2] = { 0, 1 };        ///< of the drawn tetrahedra (never empty)
   std::vector<float> Points4;              ///< x, y, z, scalar per point
+  /// The opacity scalar per point, with a separate opacity array (ScalarComponent::Opacity);
+  /// empty otherwise.
+  std::vector<float> Opacity;
+  double OpacityRange[2] = { 0, 1 }; ///< of Opacity over the drawn tetrahedra (never empty)
   std::vector<uint32_t> Tets;              ///< 4 point ids per tetrahedron
   /// Input cell of each tetrahedron; empty when tetrahedron i is input cell i for every i.
   std::vector<uint32_t> SourceCells;
@@ -53,18 +57,24 @@ inline bool FiniteScalar(double s)
 struct ScalarComponent
 {
   static constexpr int Magnitude = -1;
+  static constexpr int NoOpacity = -2;
   int Index = 0;
+  /// The component that holds a separate opacity scalar (ParaView's combined color + opacity
+  /// array, UseSeparateOpacityArray: component 1), or NoOpacity.
+  int Opacity = NoOpacity;
 };
 
-/// The scalar of tuple i of `array` (component or magnitude, see ScalarComponent).
+/// The scalar of tuple i of `array` (component or magnitude, see ScalarComponent; the color
+/// scalar, not the separate opacity).
 PSIVOLUMECORE_EXPORT double ScalarValue(vtkDataArray* array, int64_t i, ScalarComponent c);
 
 /// Gathers the tetrahedra of `input` with the scalars of `scalars` (point or cell data).
 PSIVOLUMECORE_EXPORT TetMesh GatherTetMesh(vtkUnstructuredGridBase* input, vtkDataArray* scalars,
   bool cellScalars, ScalarComponent component = ScalarComponent());
 
-/// A new time step on the same mesh: replaces the point scalars of a mesh gathered with point
-/// data by component 0 of `scalars` (one value per input point) and recomputes the scalar range,
+/// A new time step on the same mesh: replaces the point scalars (and separate opacity scalars) of
+/// a mesh gathered with point data by those of `scalars` (one tuple per input point) and
+/// recomputes the scalar ranges,
 /// without gathering points and cells again. Returns false, leaving the mesh unchanged, when
 /// that would change which tetrahedra are drawn (a non-finite scalar now or before, or a
 /// mesh gathered with cell scalars): gather the mesh again then.

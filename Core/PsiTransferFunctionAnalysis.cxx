@@ -38,7 +38,14 @@ ScalarComponent ColorMapComponent(vtkVolumeProperty* property, int numberOfCompo
 {
   ScalarComponent c;
   vtkColorTransferFunction* ctf = property->GetRGBTransferFunction(0);
-  if (numberOfComponents > 1 && ctf)
+  if (numberOfComponents == 2 && !property->GetIndependentComponents())
+  {
+    // ParaView's separate opacity array (UseSeparateOpacityArray): color from component 0
+    // through the color map, opacity from component 1 through the opacity function, as VTK's
+    // vtkProjectedTetrahedraMapper maps two dependent components.
+    c.Opacity = 1;
+  }
+  else if (numberOfComponents > 1 && ctf)
   {
     c.Index = ctf->GetVectorMode() == vtkScalarsToColors::COMPONENT ? ctf->GetVectorComponent()
                                                                    : ScalarComponent::Magnitude;
@@ -69,12 +76,12 @@ std::vector<float> OpacityPrefixCounts(
   // narrower than the sample spacing) marks the sample below it: a cell whose range meets the
   // spike meets that sample's interval too.
   vtkPiecewiseFunction* opacity = property ? property->GetScalarOpacity(0) : nullptr;
-  const double span = table.Range[1] - table.Range[0];
+  const double span = table.OpacityRange[1] - table.OpacityRange[0];
   for (int k = 0; opacity && span > 0 && k < opacity->GetSize(); ++k)
   {
     double n[4];
     opacity->GetNodeValue(k, n);
-    const double x = (n[0] - table.Range[0]) / span * (table.Size - 1);
+    const double x = (n[0] - table.OpacityRange[0]) / span * (table.Size - 1);
     if (n[1] > 0 && x >= 0 && x <= table.Size - 1)
     {
       visible[std::min(static_cast<int>(x), table.Size - 1)] = 1;

@@ -23,7 +23,9 @@ PSIVOLUMECORE_EXPORT void EvaluateTransferFunction(
 
 /// The scalar of a tuple of `numberOfComponents` that the color map's vector mode selects, as
 /// ParaView's 'Volume' maps it (vtkScalarsToColors: VectorMode Component selects
-/// VectorComponent, any other mode the magnitude); component 0 of a one-component array.
+/// VectorComponent, any other mode the magnitude); component 0 of a one-component array. Two
+/// dependent components (IndependentComponents off: ParaView's combined color + opacity array
+/// of UseSeparateOpacityArray) are a color scalar and a separate opacity scalar (Opacity = 1).
 PSIVOLUMECORE_EXPORT ScalarComponent ColorMapComponent(
   vtkVolumeProperty* property, int numberOfComponents);
 

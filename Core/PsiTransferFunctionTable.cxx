@@ -24,13 +24,16 @@ void TransferFunctionTable::Lookup(double s, double out[4]) const
   }
 }
 
-TransferFunctionTable SampleTransferFunction(
-  vtkVolumeProperty* property, const double range[2], int size)
+TransferFunctionTable SampleTransferFunction(vtkVolumeProperty* property,
+  const double range[2], int size, const double* opacityRange)
 {
   TransferFunctionTable t;
   t.Size = std::max(size, 2);
   t.Range[0] = range[0];
   t.Range[1] = range[1] > range[0] ? range[1] : range[0];
+  const double* orange = opacityRange ? opacityRange : t.Range;
+  t.OpacityRange[0] = orange[0];
+  t.OpacityRange[1] = orange[1] > orange[0] ? orange[1] : orange[0];
   t.Rgba.resize(4 * static_cast<size_t>(t.Size));
   const double unit = std::max(property->GetScalarOpacityUnitDistance(0), 1e-30);
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
@@ -49,7 +52,9 @@ TransferFunctionTable SampleTransferFunction(
     {
       c[0] = c[1] = c[2] = grayFn->GetValue(s);
     }
-    const double a = opacity ? opacity->GetValue(s) : 1.0;
+    const double so =
+      t.OpacityRange[0] + (t.OpacityRange[1] - t.OpacityRange[0]) * i / (t.Size - 1);
+    const double a = opacity ? opacity->GetValue(so) : 1.0;
     float* o = &t.Rgba[4 * static_cast<size_t>(i)];
     o[0] = static_cast<float>(c[0]);
     o[1] = static_cast<float>(c[1]);

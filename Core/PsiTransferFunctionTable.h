@@ -19,6 +19,9 @@ namespace psi
 struct PSIVOLUMECORE_EXPORT TransferFunctionTable
 {
   double Range[2] = { 0, 1 }; ///< scalar at the first and the last sample
+  /// Opacity scalar at the first and the last sample of the attenuation (a): Range, or with a
+  /// separate opacity array the range of the opacity scalars.
+  double OpacityRange[2] = { 0, 1 };
   int Size = 0;
   std::vector<float> Rgba; ///< Size * 4 values: L.r, L.g, L.b, tau
 
@@ -26,9 +29,10 @@ struct PSIVOLUMECORE_EXPORT TransferFunctionTable
   void Lookup(double s, double out[4]) const;
 };
 
-/// Samples component 0 of `property` at `size` evenly spaced scalars over `range`.
-PSIVOLUMECORE_EXPORT TransferFunctionTable SampleTransferFunction(
-  vtkVolumeProperty* property, const double range[2], int size);
+/// Samples component 0 of `property` at `size` evenly spaced scalars over `range`; with
+/// `opacityRange` (a separate opacity array) the attenuation over that range instead.
+PSIVOLUMECORE_EXPORT TransferFunctionTable SampleTransferFunction(vtkVolumeProperty* property,
+  const double range[2], int size, const double* opacityRange = nullptr);
 
 } // namespace psi
 

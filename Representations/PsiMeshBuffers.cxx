@@ -67,6 +67,13 @@ void PsiMeshBuffers::UploadPoints(vtkOpenGLRenderWindow* renWin)
   this->PointsTexture->CreateTextureBuffer(
     static_cast<unsigned int>(std::max<size_t>(this->Mesh.NumberOfPoints(), 1)), 4, VTK_FLOAT,
     this->PointsBuffer);
+  if (!this->Mesh.Opacity.empty())
+  {
+    this->OpacityBuffer->Upload(this->Mesh.Opacity, vtkOpenGLBufferObject::TextureBuffer);
+    this->OpacityTexture->SetContext(renWin);
+    this->OpacityTexture->CreateTextureBuffer(
+      static_cast<unsigned int>(this->Mesh.Opacity.size()), 1, VTK_FLOAT, this->OpacityBuffer);
+  }
 }
 
 bool PsiMeshBuffers::Update(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBase* input,
@@ -126,6 +133,11 @@ void PsiMeshBuffers::Activate(vtkShaderProgram* program, bool gradients)
 {
   this->PointsTexture->Activate();
   program->SetUniformi("points", this->PointsTexture->GetTextureUnit());
+  if (!this->Mesh.Opacity.empty())
+  {
+    this->OpacityTexture->Activate();
+    program->SetUniformi("opacityScalars", this->OpacityTexture->GetTextureUnit());
+  }
   this->GradientsActive = gradients && this->GradientsOnGPU;
   if (this->GradientsActive)
   {
@@ -147,6 +159,10 @@ void PsiMeshBuffers::Deactivate()
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   this->PointsTexture->Deactivate();
+  if (!this->Mesh.Opacity.empty())
+  {
+    this->OpacityTexture->Deactivate();
+  }
   if (this->GradientsActive)
   {
     this->GradientTexture->Deactivate();
@@ -164,6 +180,8 @@ void PsiMeshBuffers::ReleaseGraphicsResources(vtkWindow* win)
   this->TetBuffer = this->VAO = 0;
   this->PointsBuffer->ReleaseGraphicsResources();
   this->PointsTexture->ReleaseGraphicsResources(win);
+  this->OpacityBuffer->ReleaseGraphicsResources();
+  this->OpacityTexture->ReleaseGraphicsResources(win);
   this->GradientBuffer->ReleaseGraphicsResources();
   this->GradientTexture->ReleaseGraphicsResources(win);
   this->GradientsOnGPU = false;

@@ -2,7 +2,8 @@
 // once and each tetrahedron streamed as one point). Points (x, y, z, scalar) are a texture
 // buffer the geometry shader fetches by id; each tetrahedron is one uvec4 vertex attribute of
 // its four point ids; the smoothed point gradients (isosurface normals) a second texture buffer,
-// uploaded only when smooth isosurfaces ask for them.
+// uploaded only when smooth isosurfaces ask for them; a separate opacity array's scalars a third
+// (`opacityScalars`), only when there is one.
 #ifndef PsiMeshBuffers_h
 #define PsiMeshBuffers_h
 
@@ -75,6 +76,8 @@ private:
   std::string ArrayKey;
   vtkNew<vtkOpenGLBufferObject> PointsBuffer;
   vtkNew<vtkTextureObject> PointsTexture;
+  vtkNew<vtkOpenGLBufferObject> OpacityBuffer;
+  vtkNew<vtkTextureObject> OpacityTexture;
   vtkNew<vtkOpenGLBufferObject> GradientBuffer;
   vtkNew<vtkTextureObject> GradientTexture;
   bool GradientsOnGPU = false;

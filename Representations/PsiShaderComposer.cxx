@@ -28,6 +28,9 @@
 #include "PsiProjectionClassesGS.h"
 #include "PsiSceneDepthFS.h"
 #include "PsiSegmentSplitFS.h"
+#include "PsiSeparateOpacityFS.h"
+#include "PsiSeparateOpacityGS.h"
+#include "PsiSeparateOpacityVS.h"
 #include "PsiTransferNodesFS.h"
 #include "PsiTransferTableFS.h"
 #include "PsiVolumeFS.h"
@@ -226,6 +229,37 @@ const char* SegmentsSource(const ShaderFeatures& f, const char* ray, const char*
   return f.Silhouette ? ray : f.ExactSegments ? exact : screenLinear;
 }
 
+// A separate opacity array is drawn with silhouettes and without adaptive sampling (the mapper
+// chooses so); another feature set ignores it.
+bool SeparateOpacityOn(const ShaderFeatures& f)
+{
+  return f.SeparateOpacity && f.Silhouette && !f.Adaptive;
+}
+
+// The sections of PsiSeparateOpacityFS.glsl whose sites the other features of `f` leave out.
+std::set<std::string> SeparateOpacitySkips(const ShaderFeatures& f, bool split)
+{
+  std::set<std::string> skip;
+  if (!f.OpaqueClip)
+  {
+    skip.insert("//PSI::SeparateOpacity::OpaqueClip");
+  }
+  if (!(f.IsoCount > 0 && f.IsoTriangles))
+  {
+    skip.insert("//PSI::SeparateOpacity::Piece");
+  }
+  if (!split)
+  {
+    skip.insert("//PSI::SeparateOpacity::SplitInit");
+    skip.insert("//PSI::SeparateOpacity::SplitPiece");
+  }
+  if (!f.NearClip)
+  {
+    skip.insert("//PSI::SeparateOpacity::NearClip");
+  }
+  return skip;
+}
+
 std::string ComposeGeometry(const ShaderFeatures& f)
 {
   const bool iso = f.IsoCount > 0;
@@ -261,6 +295,10 @@ std::string ComposeGeometry(const ShaderFeatures& f)
     // Marching tetrahedra test each volume piece; otherwise the whole cell is tested.
     Apply(gs, PsiEarlyDiscardGS,
       { isoTriangles ? "//PSI::EarlyDiscard::Cell" : "//PSI::EarlyDiscard::Piece" });
+  }
+  if (SeparateOpacityOn(f))
+  {
+    Apply(gs, PsiSeparateOpacityGS);
   }
   RemoveTags(gs);
   return gs;
@@ -304,6 +342,7 @@ bool ShaderFeatures::operator==(const ShaderFeatures& o) const
     NearClip == o.NearClip &&
     OpaqueClip == o.OpaqueClip && EarlyDiscard == o.EarlyDiscard && IsoCount == o.IsoCount &&
     IsoSmooth == o.IsoSmooth && IsoTriangles == o.IsoTriangles && Adaptive == o.Adaptive &&
+    SeparateOpacity == o.SeparateOpacity &&
     MaxAdaptiveNodes == o.MaxAdaptiveNodes && MaxLights == o.MaxLights;
 }
 
@@ -340,6 +379,10 @@ std::string ShaderFeatures::Defines() const
   if (EarlyDiscard)
   {
     d += "#define PSI_EARLY_DISCARD\n";
+  }
+  if (SeparateOpacityOn(*this))
+  {
+    d += "#define PSI_SEPARATE_OPACITY\n";
   }
   if (Adaptive)
   {
@@ -421,6 +464,10 @@ ShaderSources ComposeShaders(const ShaderFeatures& f, const char* integratorSour
   {
     Apply(out.Vertex, PsiPointIdsVS);
   }
+  if (SeparateOpacityOn(f))
+  {
+    Apply(out.Vertex, PsiSeparateOpacityVS);
+  }
   RemoveTags(out.Vertex);
 
   out.Geometry = ComposeGeometry(f);
@@ -498,6 +545,10 @@ ShaderSources ComposeShaders(const ShaderFeatures& f, const char* integratorSour
   if (f.Adaptive)
   {
     Apply(fs, PsiAdaptiveFS);
+  }
+  if (SeparateOpacityOn(f))
+  {
+    Apply(fs, PsiSeparateOpacityFS, SeparateOpacitySkips(f, split)); // after the sites' features
   }
   RemoveTags(fs);
   return out;

@@ -50,6 +50,9 @@ struct PSIVOLUMEREPRESENTATIONS_EXPORT ShaderFeatures
   bool IsoTriangles = false;
   /// Segments split at transfer-function nodes (PsiAdaptiveFS.glsl).
   bool Adaptive = false;
+  /// Opacity from a second scalar per point (ParaView's separate opacity array,
+  /// PsiSeparateOpacity*.glsl); needs Silhouette, and not Adaptive.
+  bool SeparateOpacity = false;
   int MaxAdaptiveNodes = 64;
   int MaxLights = 8;
 

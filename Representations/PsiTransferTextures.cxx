@@ -33,17 +33,20 @@ void SetUniform2(vtkShaderProgram* p, const char* name, double a, double b)
 PsiTransferFunctionTexture::PsiTransferFunctionTexture() = default;
 PsiTransferFunctionTexture::~PsiTransferFunctionTexture() = default;
 
-bool PsiTransferFunctionTexture::NeedsUpdate(
-  vtkVolumeProperty* property, const double range[2], int samples) const
+bool PsiTransferFunctionTexture::NeedsUpdate(vtkVolumeProperty* property, const double range[2],
+  int samples, const double* opacityRange) const
 {
+  const double* orange = opacityRange ? opacityRange : range;
   return property->GetMTime() > this->Time || this->Range[0] != range[0] ||
-    this->Range[1] != range[1] || this->Samples != samples;
+    this->Range[1] != range[1] || this->OpacityRange[0] != orange[0] ||
+    this->OpacityRange[1] != orange[1] || this->Samples != samples;
 }
 
 void PsiTransferFunctionTexture::Update(vtkOpenGLRenderWindow* renWin,
-  vtkVolumeProperty* property, const double range[2], int samples)
+  vtkVolumeProperty* property, const double range[2], int samples, const double* opacityRange)
 {
-  psi::TransferFunctionTable tf = psi::SampleTransferFunction(property, range, samples);
+  psi::TransferFunctionTable tf =
+    psi::SampleTransferFunction(property, range, samples, opacityRange);
   // the prefix also sees control points between samples, which the table may not show
   bool zero = false;
   std::vector<float> prefix = psi::OpacityPrefixCounts(tf, property, zero);
@@ -60,6 +63,8 @@ void PsiTransferFunctionTexture::Update(vtkOpenGLRenderWindow* renWin,
   this->Time = property->GetMTime();
   this->Range[0] = range[0];
   this->Range[1] = range[1];
+  this->OpacityRange[0] = (opacityRange ? opacityRange : range)[0];
+  this->OpacityRange[1] = (opacityRange ? opacityRange : range)[1];
   this->Samples = samples;
 }
 
@@ -71,6 +76,10 @@ void PsiTransferFunctionTexture::Activate(vtkShaderProgram* program)
   const double n = this->Table.Size, r0 = this->Table.Range[0], r1 = this->Table.Range[1];
   const double scale = (n - 1) / (n * (r1 - r0));
   SetUniform2(program, "tfScaleShift", scale, 0.5 / n - r0 * scale);
+  // the same for a separate opacity array's scalars, over the attenuation's range
+  const double o0 = this->Table.OpacityRange[0], o1 = this->Table.OpacityRange[1];
+  const double oscale = (n - 1) / (n * (o1 - o0));
+  SetUniform2(program, "tfOpacityScaleShift", oscale, 0.5 / n - o0 * oscale);
 }
 
 void PsiTransferFunctionTexture::Deactivate()
@@ -104,8 +113,8 @@ void PsiOpacityPrefixTexture::Activate(
 {
   this->Texture->Activate();
   program->SetUniformi("opacityPrefix", this->Texture->GetTextureUnit());
-  // scalar -> sample index: (s - r0) (N - 1) / (r1 - r0)
-  const double n = table.Size, r0 = table.Range[0], r1 = table.Range[1];
+  // opacity scalar -> sample index: (s - r0) (N - 1) / (r1 - r0)
+  const double n = table.Size, r0 = table.OpacityRange[0], r1 = table.OpacityRange[1];
   SetUniform2(program, "tfIndexScaleShift", (n - 1) / (r1 - r0), -r0 * (n - 1) / (r1 - r0));
   program->SetUniformi("tfSamples", table.Size);
 }

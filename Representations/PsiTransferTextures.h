@@ -31,11 +31,14 @@ class PsiTransferFunctionTexture
 public:
   PsiTransferFunctionTexture();
   ~PsiTransferFunctionTexture();
-  bool NeedsUpdate(vtkVolumeProperty* property, const double range[2], int samples) const;
+  /// `opacityRange`: the range of a separate opacity array's scalars, over which the attenuation
+  /// is sampled (nullptr: `range`, the color scalars').
+  bool NeedsUpdate(vtkVolumeProperty* property, const double range[2], int samples,
+    const double* opacityRange = nullptr) const;
   /// Samples the property; uploads (and bumps the version) only when the samples changed:
   /// ParaView touches the property's MTime for unrelated edits.
   void Update(vtkOpenGLRenderWindow* renWin, vtkVolumeProperty* property, const double range[2],
-    int samples);
+    int samples, const double* opacityRange = nullptr);
   void Activate(vtkShaderProgram* program);
   void Deactivate();
   void ReleaseGraphicsResources(vtkWindow* win);
@@ -54,6 +57,7 @@ private:
   std::vector<float> OpacityPrefix;
   vtkMTimeType Time = 0;
   double Range[2] = { 0, 0 };
+  double OpacityRange[2] = { 0, 0 };
   int Samples = 0;
   int Version = 0;
   bool ZeroOpacity = false;

@@ -59,6 +59,7 @@ struct vtkPsiVolumeMapper::Internals
   PsiAdaptiveNodes AdaptiveNodes;
 
   std::string LastWarning;
+  std::string LastFeatureNote; // what a separate opacity array changed, said once
   vtkWindow* Context = nullptr;
 
   void Release(vtkWindow* win)
@@ -84,95 +85,6 @@ vtkPsiVolumeMapper::vtkPsiVolumeMapper()
 }
 
 vtkPsiVolumeMapper::~vtkPsiVolumeMapper() = default;
-
-void vtkPsiVolumeMapper::SetIsosurfaceOpacity(double opacity)
-{
-  opacity = std::min(1.0, std::max(0.0, opacity));
-  if (opacity != this->IsosurfaceOpacity)
-  {
-    this->IsosurfaceOpacity = opacity;
-    this->UpdateIsosurfaceList();
-    this->Modified();
-  }
-}
-
-void vtkPsiVolumeMapper::UpdateIsosurfaceList()
-{
-  this->Isosurfaces = psi::IsosurfaceList::Normalize(
-    this->IsosurfaceValues, this->IsosurfaceOpacities, this->IsosurfaceOpacity);
-  if (this->Isosurfaces.Dropped)
-  {
-    vtkWarningMacro("Psi Volume draws at most " << MaxIsosurfaces << " isosurfaces; "
-                                                << this->Isosurfaces.Dropped << " ignored.");
-  }
-}
-
-// Isosurface settings: the raw values are kept for the getters; the list drawn is normalized
-// here, once per change (psi::IsosurfaceList).
-void vtkPsiVolumeMapper::SetIsosurfaceVector(std::vector<double>& member, std::vector<double> v)
-{
-  if (v != member)
-  {
-    member = std::move(v);
-    this->UpdateIsosurfaceList();
-    this->Modified();
-  }
-}
-
-void vtkPsiVolumeMapper::SetNumberOfIsosurfaces(int n)
-{
-  std::vector<double> v = this->IsosurfaceValues;
-  v.resize(std::max(n, 0), 0.0);
-  this->SetIsosurfaceVector(this->IsosurfaceValues, std::move(v));
-}
-
-void vtkPsiVolumeMapper::SetIsosurfaceValue(int i, double value)
-{
-  if (i < 0)
-  {
-    return;
-  }
-  std::vector<double> v = this->IsosurfaceValues;
-  v.resize(std::max<size_t>(v.size(), i + 1), 0.0);
-  v[i] = value;
-  this->SetIsosurfaceVector(this->IsosurfaceValues, std::move(v));
-}
-
-void vtkPsiVolumeMapper::SetIsosurfaceValues(const std::vector<double>& values)
-{
-  this->SetIsosurfaceVector(this->IsosurfaceValues, values);
-}
-
-double vtkPsiVolumeMapper::GetIsosurfaceValue(int i) const
-{
-  return i >= 0 && static_cast<size_t>(i) < this->IsosurfaceValues.size()
-    ? this->IsosurfaceValues[i]
-    : 0.0;
-}
-
-void vtkPsiVolumeMapper::SetNumberOfIsosurfaceOpacities(int n)
-{
-  std::vector<double> v = this->IsosurfaceOpacities;
-  v.resize(std::max(n, 0), this->IsosurfaceOpacity);
-  this->SetIsosurfaceVector(this->IsosurfaceOpacities, std::move(v));
-}
-
-void vtkPsiVolumeMapper::SetIsosurfaceOpacityValue(int i, double opacity)
-{
-  if (i < 0)
-  {
-    return;
-  }
-  std::vector<double> v = this->IsosurfaceOpacities;
-  v.resize(std::max<size_t>(v.size(), i + 1), this->IsosurfaceOpacity);
-  v[i] = opacity;
-  this->SetIsosurfaceVector(this->IsosurfaceOpacities, std::move(v));
-}
-
-void vtkPsiVolumeMapper::SetIsosurfaceOpacities(const std::vector<double>& opacities)
-{
-  this->SetIsosurfaceVector(this->IsosurfaceOpacities, opacities);
-}
 
 void vtkPsiVolumeMapper::SetIntegrationMethod(int method)
 {
@@ -309,7 +221,7 @@ bool vtkPsiVolumeMapper::UpdateMesh(
     psi::ColorMapComponent(vol->GetProperty(), scalars->GetNumberOfComponents());
   const std::string arrayKey = std::string(scalars->GetName() ? scalars->GetName() : "") + "|" +
     std::to_string(cellFlag) + "|" + std::to_string(this->ScalarMode) + "|" +
-    std::to_string(component.Index);
+    std::to_string(component.Index) + "|" + std::to_string(component.Opacity);
   const PsiMeshBuffers::Change change = I.Mesh.NeedsUpdate(input, scalars, arrayKey);
   if (change == PsiMeshBuffers::Change::None ||
     (change == PsiMeshBuffers::Change::Scalars &&
@@ -339,22 +251,28 @@ void vtkPsiVolumeMapper::UpdateTables(vtkOpenGLRenderWindow* renWin, vtkVolume* 
   Internals& I = *this->Impl;
   vtkVolumeProperty* property = vol->GetProperty();
   const psi::TetMesh& mesh = I.Mesh.GetMesh();
-  if (I.Tables.Transfer.NeedsUpdate(property, mesh.ScalarRange, this->TransferFunctionSamples))
+  // with a separate opacity array the attenuation is sampled over the opacity scalars' range
+  const double* opacityRange = mesh.Opacity.empty() ? nullptr : mesh.OpacityRange;
+  const int samples = this->TransferFunctionSamples;
+  if (I.Tables.Transfer.NeedsUpdate(property, mesh.ScalarRange, samples, opacityRange))
   {
-    I.Tables.Transfer.Update(renWin, property, mesh.ScalarRange, this->TransferFunctionSamples);
+    I.Tables.Transfer.Update(renWin, property, mesh.ScalarRange, samples, opacityRange);
   }
   if (this->EarlyDiscard && I.Tables.Transfer.HasZeroOpacity() &&
     I.Tables.OpacityPrefix.NeedsUpdate(I.Tables.Transfer.GetVersion()))
   {
     I.Tables.OpacityPrefix.Update(renWin, I.Tables.Transfer);
   }
-  if (MethodInfo(this->IntegrationMethod).NeedsPsiTable && I.Tables.PsiTable.NeedsUpdate())
+  // (a separate opacity array draws full pre-integration as partial: ChooseSeparateOpacity)
+  const bool separate = opacityRange != nullptr;
+  if ((MethodInfo(this->IntegrationMethod).NeedsPsiTable || separate) &&
+    I.Tables.PsiTable.NeedsUpdate())
   {
     I.Tables.PsiTable.Update(renWin);
   }
   const psi::PreIntegrationLengthAxis axis =
     psi::MakePreIntegrationLengthAxis(mesh.MinEdgeLength, mesh.MaxEdgeLength);
-  if (MethodInfo(this->IntegrationMethod).NeedsPreIntegrationTable &&
+  if (MethodInfo(this->IntegrationMethod).NeedsPreIntegrationTable && !separate &&
     I.Tables.PreIntegration.NeedsUpdate(I.Tables.Transfer.GetVersion(), axis))
   {
     // Röttger's table belongs to one transfer function: rebuilt on every edit (timed).
@@ -407,6 +325,7 @@ psi::ShaderFeatures vtkPsiVolumeMapper::ChooseFeatures(
       (this->AdaptiveSampling == ADAPTIVE_AUTO &&
         I.AdaptiveNodes.GetTableDeviation() > AdaptiveAutoDeviation));
   f.MaxAdaptiveNodes = MaxAdaptiveNodes;
+  this->ChooseSeparateOpacity(f);
   this->LastUsedNearPlaneClipping = f.NearClip;
   this->LastUsedOpaqueClipping = f.OpaqueClip;
   this->LastUsedIsosurfaceMethod =
@@ -415,6 +334,33 @@ psi::ShaderFeatures vtkPsiVolumeMapper::ChooseFeatures(
   this->LastUsedAdaptiveSampling = f.Adaptive;
   this->LastNumberOfAdaptiveNodes = f.Adaptive ? I.AdaptiveNodes.Size() : 0;
   return f;
+}
+
+// A separate opacity array: drawn with silhouettes, whose fragments carry both scalars; not with
+// adaptive sampling (nodes of one scalar), nor Röttger's table (one scalar for color and
+// opacity): partial pre-integration then; early discard judged on the opacity scalar, per cell.
+void vtkPsiVolumeMapper::ChooseSeparateOpacity(psi::ShaderFeatures& f)
+{
+  Internals& I = *this->Impl;
+  f.SeparateOpacity = !I.Mesh.GetMesh().Opacity.empty();
+  std::string note;
+  if (f.SeparateOpacity)
+  {
+    f.Silhouette = true;
+    f.Adaptive = false;
+    f.EarlyDiscard = f.EarlyDiscard && !f.IsoTriangles;
+    if (MethodInfo(f.Method).NeedsPreIntegrationTable)
+    {
+      f.Method = static_cast<int>(psi::Method::PartialPreIntegration);
+      note = "Psi Volume: full pre-integration tabulates one scalar for color and opacity; with "
+             "a separate opacity array it draws with partial pre-integration.";
+    }
+  }
+  if (!note.empty() && note != I.LastFeatureNote)
+  {
+    vtkWarningMacro(<< note);
+  }
+  I.LastFeatureNote = note;
 }
 
 // The projection program of this frame's projector for these features (each projector composes

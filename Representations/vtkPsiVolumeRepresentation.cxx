@@ -75,12 +75,6 @@ int vtkPsiVolumeRepresentation::RequestData(
 {
   vtkDataSet* input = vtkDataSet::GetData(inputVector[0], 0);
   this->TetrahedralizeInput = input && HasNonTetrahedra(input); // see GetInternalOutputPort
-  if (this->SeparateOpacityRequested && !this->SeparateOpacityWarned)
-  {
-    vtkWarningMacro("Psi Volume does not honour UseSeparateOpacityArray yet: the colored array "
-                    "is drawn with the opacity function alone, not with the opacity array.");
-    this->SeparateOpacityWarned = true;
-  }
   const int ok = this->Superclass::RequestData(request, inputVector, outputVector);
   vtkDataSet* data = vtkDataSet::SafeDownCast(this->Preprocessor->GetOutputDataObject(0));
   if (!data || data->GetNumberOfCells() == 0)
@@ -272,16 +266,6 @@ void vtkPsiVolumeRepresentation::SetIsosurfaceMethod(int method)
 int vtkPsiVolumeRepresentation::GetLastUsedIsosurfaceMethod()
 {
   return this->PsiMapper->GetLastUsedIsosurfaceMethod();
-}
-
-void vtkPsiVolumeRepresentation::SetUseSeparateOpacityArray(bool use)
-{
-  if (use != this->SeparateOpacityRequested)
-  {
-    this->SeparateOpacityRequested = use;
-    this->SeparateOpacityWarned = false;
-    this->MarkModified();
-  }
 }
 
 int vtkPsiVolumeRepresentation::GetLastNumberOfAdaptiveNodes()

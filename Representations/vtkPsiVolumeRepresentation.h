@@ -79,11 +79,6 @@ public:
   void SetIsosurfaceMethod(int method);
   int GetLastUsedIsosurfaceMethod();
   void SetAdaptiveSampling(int mode);
-  /// 'Psi Volume' does not honour a separate opacity array yet. This hides the superclass's
-  /// setter, so that the mesh is not given the superclass's combined color + opacity array (which
-  /// would be drawn as a vector's magnitude): when drawn with it set, a warning says so once, and
-  /// the colored array is drawn with the opacity function the view gives it.
-  void SetUseSeparateOpacityArray(bool use);
   int GetAdaptiveSampling();
   /// Nodes adaptive sampling used in the last frame (0: it was not used).
   int GetLastNumberOfAdaptiveNodes();
@@ -114,8 +109,6 @@ protected:
   vtkNew<vtkPsiVolumeMapper> PsiMapper;
   vtkNew<vtkPsiConformingTetrahedralize> Conforming;
   bool TetrahedralizeInput = false;
-  bool SeparateOpacityRequested = false;
-  bool SeparateOpacityWarned = false;
 
 private:
   vtkPsiVolumeRepresentation(const vtkPsiVolumeRepresentation&) = delete;

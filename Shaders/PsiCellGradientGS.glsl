@@ -16,4 +16,5 @@ vec3 gradient;
     gradient = degenerate ? vec3(0.0)
                           : ((scalar[1] - scalar[0]) * c23 + (scalar[2] - scalar[0]) * c31 +
                               (scalar[3] - scalar[0]) * c12) / det;
+//PSI::SeparateOpacity::Gradient
   }

@@ -15,8 +15,9 @@ bool transparentRange(float smin, float smax)
 }
 
 //PSI::EarlyDiscard::Cell
-  // The whole cell (without marching-tetrahedra isosurfaces, whose pieces are tested one by one).
-  if (transparentRange(smin, smax))
+  // The whole cell (without marching-tetrahedra isosurfaces, whose pieces are tested one by one);
+  // with a separate opacity array, its range of the opacity scalar.
+  if (transparentRange(dmin, dmax))
   {
     return;
   }

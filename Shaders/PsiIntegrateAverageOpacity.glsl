@@ -3,8 +3,8 @@
 // (Eq. 5.12), color = mean L alpha.
 vec4 integrateSegment(float sf, float sb, float D)
 {
-  vec4 f = transfer(sf);
-  vec4 b = transfer(sb);
+  vec4 f = transferFront(sf);
+  vec4 b = transferBack(sb);
   // mean opacity through the mean transmittance 1 - alpha (exact in float near alpha = 1)
   float transUnit = 0.5 * (max(1.0 - f.a * unitDistance, 0.0) + max(1.0 - b.a * unitDistance, 0.0));
   float tauD = -log(transUnit) * D / unitDistance;

@@ -69,8 +69,8 @@ float psiClosedForm(float taubD, float taufD)
 
 vec4 integrateSegment(float sf, float sb, float D)
 {
-  vec4 f = transfer(sf);
-  vec4 b = transfer(sb);
+  vec4 f = transferFront(sf);
+  vec4 b = transferBack(sb);
   vec2 tauD = vec2(b.a, f.a) * D;
   float psi = psiClosedForm(tauD.x, tauD.y);
   float zeta = exp(-0.5 * (tauD.x + tauD.y));

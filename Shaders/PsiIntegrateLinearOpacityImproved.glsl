@@ -3,8 +3,8 @@
 // 0.27/0.73-weighted opacity (Eq. 5.14), both of one unit distance.
 vec4 integrateSegment(float sf, float sb, float D)
 {
-  vec4 f = transfer(sf);
-  vec4 b = transfer(sb);
+  vec4 f = transferFront(sf);
+  vec4 b = transferBack(sb);
   // Written in the transmittances tf = 1 - alpha_f, tb = 1 - alpha_b, which are exact in float
   // near alpha = 1: 1 - (mean alpha + 0.108165 d^2) = mean t - 0.108165 d^2, and
   // 1 - (0.27 alpha_b + 0.73 alpha_f) = 0.27 tb + 0.73 tf.

@@ -3,8 +3,8 @@
 //   color = Lb (Psi - zeta) + Lf (1 - Psi),  alpha = 1 - zeta.
 vec4 integrateSegment(float sf, float sb, float D)
 {
-  vec4 f = transfer(sf);
-  vec4 b = transfer(sb);
+  vec4 f = transferFront(sf);
+  vec4 b = transferBack(sb);
   vec2 tauD = vec2(b.a, f.a) * D;
   float psi = texture(psiTable, psiCoord(tauD)).r;
   float zeta = exp(-0.5 * (tauD.x + tauD.y));

@@ -27,6 +27,7 @@ bool clipToPiece(inout float sf, inout float sb, inout float D)
     return false;
   }
   float s0 = sf + t0 * ds, s1 = sf + t1 * ds;
+//PSI::SeparateOpacity::Piece
   sf = s0;
   sb = s1;
   D *= t1 - t0;

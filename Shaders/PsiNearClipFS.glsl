@@ -61,6 +61,7 @@ bool clipSegment(out float sf, out float sb, out float D, out float frontDepth, 
   vec3 pf = o + tin * dir, pb = o + tout * dir;
   sf = tetV0.w + dot(g, pf - V[0]);
   sb = tetV0.w + dot(g, pb - V[0]);
+//PSI::SeparateOpacity::NearClip
   D = tout - tin;
   pFront = pf;
   rayDir = dir;

@@ -6,6 +6,7 @@
     float toOpaque = distance(viewPointAt(frontDepth), viewPointAt(opaque));
     if (toOpaque < D)
     {
+//PSI::SeparateOpacity::OpaqueClip
       sb = mix(sf, sb, toOpaque / max(D, 1e-30));
       D = toOpaque;
     }

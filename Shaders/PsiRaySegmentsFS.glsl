@@ -35,6 +35,7 @@ void readSegment(out float sf, out float sb, out float D)
   float s0 = dot(scalarPlane.xyz, rayOrigin) + scalarPlane.w, ds = dot(scalarPlane.xyz, rayStep);
   sf = s0 + rayEntry * ds;
   sb = s0 + rayExit * ds;
+//PSI::SeparateOpacity::Segment
 }
 
 // The view-space front point of the segment and the unit ray direction.

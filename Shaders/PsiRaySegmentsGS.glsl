@@ -33,6 +33,7 @@ void setVertexSegment(vec3 p, vec3 seg)
   facePlane2 = facePlanes[2];
   facePlane3 = facePlanes[3];
   scalarPlane = vec4(gradient, scalar[0] - dot(gradient, viewP[0]));
+//PSI::SeparateOpacity::Vertex
 }
 
 // A marching-tetrahedra surface vertex carries its normal (interpolated across the surface).

@@ -19,6 +19,7 @@ vec4 integrateSplit(float sf, float sb, float D, vec3 p0, vec3 dir)
   float ds = sb - sf;
   float dirS = ds >= 0.0 ? 1.0 : -1.0;
   float sPrev = sf, tPrev = 0.0;
+//PSI::SeparateOpacity::SplitInit
 //PSI::Adaptive::SplitInit
 //PSI::IsoPerFragment::SplitInit
   for (int guard = 0; guard <= PSI_MAX_SPLITS; ++guard)
@@ -29,6 +30,7 @@ vec4 integrateSplit(float sf, float sb, float D, vec3 p0, vec3 dir)
 //PSI::IsoPerFragment::SplitNext
     // kind != 0 implies ds != 0: no division by zero, no NaN
     float t = kind == 0 ? 1.0 : clamp((next - sf) / ds, tPrev, 1.0);
+//PSI::SeparateOpacity::SplitPiece
     addPiece(sPrev, next, (t - tPrev) * D);
     if (kind == 0)
     {

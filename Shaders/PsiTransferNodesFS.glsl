@@ -18,3 +18,14 @@ vec4 transfer(float s)
   float w = width > 0.0 ? clamp((s - tfNodes[a]) / width, 0.0, 1.0) : 0.0;
   return mix(tfNodeValues[a], tfNodeValues[b], w);
 }
+
+// The transfer function at the segment's front and back ends (the integrators' inputs).
+vec4 transferFront(float s)
+{
+  return transfer(s);
+}
+
+vec4 transferBack(float s)
+{
+  return transfer(s);
+}

@@ -7,3 +7,20 @@ vec4 transfer(float s)
 {
   return texture(transferFunction, s * tfScaleShift.x + tfScaleShift.y);
 }
+
+// The transfer function at the segment's front and back ends (the integrators' inputs); with a
+// separate opacity array the attenuation comes from the opacity scalar there
+// (PsiSeparateOpacityFS.glsl).
+vec4 transferFront(float s)
+{
+  vec4 v = transfer(s);
+//PSI::SeparateOpacity::Front
+  return v;
+}
+
+vec4 transferBack(float s)
+{
+  vec4 v = transfer(s);
+//PSI::SeparateOpacity::Back
+  return v;
+}

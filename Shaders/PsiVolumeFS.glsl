@@ -19,6 +19,7 @@ uniform int parallelProjection;
 
 // vec4 transfer(float s): luminance and attenuation at scalar s, from the sampled table
 // (PsiTransferTableFS.glsl) or, with adaptive sampling, from the nodes (PsiTransferNodesFS.glsl).
+//PSI::SeparateOpacity::Dec
 //PSI::Transfer::Impl
 
 // The view-space point of this pixel at window depth `depth`.

@@ -33,6 +33,7 @@ vec3 thickSeg;
 
 //PSI::PointIds::Dec
 //PSI::CellGradient::Dec
+//PSI::SeparateOpacity::Dec
 //PSI::HAPTSegments::Dec
 //PSI::ExactSegments::Dec
 //PSI::RaySegments::Dec
@@ -132,6 +133,8 @@ void main()
   vec4 raw[4] = vec4[4](vsP0[0], vsP1[0], vsP2[0], vsP3[0]);
   float smin = min(min(raw[0].w, raw[1].w), min(raw[2].w, raw[3].w));
   float smax = max(max(raw[0].w, raw[1].w), max(raw[2].w, raw[3].w));
+  float dmin = smin, dmax = smax; // the scalar range that decides early discard
+//PSI::SeparateOpacity::Range
 //PSI::EarlyDiscard::Cell
   int inFront = 0;
   for (int i = 0; i < 4; ++i)

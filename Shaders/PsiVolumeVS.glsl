@@ -13,6 +13,7 @@ out vec4 vsP1;
 out vec4 vsP2;
 out vec4 vsP3;
 //PSI::PointIds::Dec
+//PSI::SeparateOpacity::Dec
 
 vec4 viewPoint(uint id)
 {
@@ -27,4 +28,5 @@ void main()
   vsP2 = viewPoint(tetPointIds.z);
   vsP3 = viewPoint(tetPointIds.w);
 //PSI::PointIds::Impl
+//PSI::SeparateOpacity::Impl
 }

@@ -43,8 +43,13 @@ def registered_tests():
     """CTest name -> executable target, from add_test(NAME x COMMAND target ...) in Testing/."""
     tests = {}
     for f in sorted((ROOT / "Testing").glob("*.cmake")) + [ROOT / "Testing" / "CMakeLists.txt"]:
-        for name, target in re.findall(r"add_test\(NAME\s+(\S+)\s+COMMAND\s+([^\s)]+)", f.read_text()):
+        text = f.read_text()
+        for name, target in re.findall(r"add_test\(NAME\s+(\S+)\s+COMMAND\s+([^\s)]+)", text):
             tests[name] = target
+        # the pvpython tests, PsiPython.<name> for each name of set(python_tests ...): the plugin
+        for names in re.findall(r"set\(python_tests\s+([^)]*)\)", text):
+            for name in names.split():
+                tests["PsiPython." + name] = "PsiVolume"
     return tests
 
 

@@ -17,6 +17,7 @@ GEOMETRY = DEGENERATE + GL
 # default silhouettes never reach the thick vertex or the fan's emission.
 DEGENERATE_FAN = ["PsiDegenerateProjections.fan"]
 GEOMETRY_FAN = DEGENERATE_FAN + ["PsiVolumeRender.fan"]
+SEPARATE = ["PsiPython.separate_opacity"]
 
 MUTATIONS = [
     # --- Integrators (Shaders/PsiIntegrate*.glsl): Moreland & Angel 2004; Moreland's dissertation.
@@ -137,6 +138,24 @@ MUTATIONS = [
              "  sf = segment.x;\n  sb = segment.y;", "  sf = segment.y;\n  sb = segment.x;", GEOMETRY_FAN),
     Mutation("hapt_segment_half_thickness", "Shaders/PsiHAPTSegmentsFS.glsl",
              "D = segment.z;", "D = 0.5 * segment.z;", GEOMETRY_FAN),
+    # --- A separate opacity array (Shaders/PsiSeparateOpacity*.glsl, Core's gathering and table).
+    Mutation("separate_opacity_ignored", "Core/PsiTransferFunctionAnalysis.cxx",
+             "    c.Opacity = 1;", "    c.Opacity = ScalarComponent::NoOpacity;", SEPARATE),
+    Mutation("separate_opacity_table_on_color_range", "Core/PsiTransferFunctionTable.cxx",
+             "const double a = opacity ? opacity->GetValue(so) : 1.0;",
+             "const double a = opacity ? opacity->GetValue(s) : 1.0;", SEPARATE),
+    Mutation("separate_opacity_not_clipped_at_opaque", "Shaders/PsiSeparateOpacityFS.glsl",
+             "opacityBack = mix(opacityFront, opacityBack, toOpaque / max(D, 1e-30));",
+             "opacityBack = opacityBack;", SEPARATE),
+    Mutation("separate_opacity_piece_ends_swapped", "Shaders/PsiSeparateOpacityFS.glsl",
+             "float oPiece0 = mix(opacityFront, opacityBack, t0), oPiece1 = mix(opacityFront, opacityBack, t1);",
+             "float oPiece0 = mix(opacityFront, opacityBack, t1), oPiece1 = mix(opacityFront, opacityBack, t0);",
+             SEPARATE),
+    Mutation("separate_opacity_near_clip_vertex", "Shaders/PsiSeparateOpacityFS.glsl",
+             "opacityFront = tetO.x + dot(gO, pf - V[0]);", "opacityFront = tetO.x;", SEPARATE),
+    Mutation("separate_opacity_discard_on_color", "Shaders/PsiSeparateOpacityGS.glsl",
+             "dmin = min(min(vsOpacity[0].x, vsOpacity[0].y), min(vsOpacity[0].z, vsOpacity[0].w));",
+             "dmin = smin;", SEPARATE),
     # --- Near-plane clipping, opaque clipping, scene depth.
     Mutation("near_cull_needs_two_in_front", "Shaders/PsiNearClipGS.glsl",
              "nearClipped = inFront > 0;", "nearClipped = inFront > 1;", GL),

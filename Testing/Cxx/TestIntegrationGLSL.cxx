@@ -42,6 +42,8 @@ uniform sampler2D backSamples;
 uniform sampler2D lengths;      // r: D
 vec4 gFront, gBack;
 vec4 transfer(float s) { return s < 0.5 ? gFront : gBack; }
+vec4 transferFront(float s) { return transfer(s); }
+vec4 transferBack(float s) { return transfer(s); }
 //PSI::Integrator::Inputs
 //PSI::Integrator::Impl
 void main()

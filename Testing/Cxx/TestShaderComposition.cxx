@@ -54,9 +54,10 @@ int Leftovers(const std::string& src)
 // segments). Iso modes: 0 none, 1 per fragment flat, 2 per fragment smooth, 3 triangles flat,
 // 4 smooth.
 psi::ShaderFeatures Make(int method, int segments, bool nearClip, bool opaque, bool early, int iso,
-  bool adaptive, int isoCount = 3)
+  bool adaptive, int isoCount = 3, bool separate = false)
 {
   psi::ShaderFeatures f;
+  f.SeparateOpacity = separate;
   f.Method = method;
   f.ExactSegments = segments == 1;
   f.Silhouette = segments == 2;
@@ -83,6 +84,7 @@ void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
   const bool tri = iso && f.IsoTriangles;
   const bool perFragment = iso && !f.IsoTriangles;
   const bool exact = f.ExactSegments && !f.Silhouette, sil = f.Silhouette;
+  const bool separate = f.SeparateOpacity && sil && !f.Adaptive; // the composer's rule
   const std::string& vs = s.Vertex;
   const std::string& gs = s.Geometry;
   const std::string& fs = s.Fragment;
@@ -108,13 +110,20 @@ void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
     { &fs, "flat in vec4 facePlane0;", sil },
     { &gs, "emitSilhouette();", sil },
     { &gs, "emitFan();", !sil },
+    { &vs, "out vec4 vsOpacity;", separate },
+    { &gs, "flat out vec4 opacityPlane;", separate },
+    { &fs, "flat in vec4 opacityPlane;", separate },
+    { &fs, "opacityBack = mix(opacityFront, opacityBack, toOpaque", separate && f.OpaqueClip },
+    { &fs, "vec3 gO = inverse(transpose(E))", separate && f.NearClip },
+    { &fs, "opacityFront = mix(splitOpacityFront", separate && (f.Adaptive || perFragment) },
+    { &fs, "float oPiece0", separate && tri },
     { &gs, "uniform float nearZ;", f.NearClip },
     { &gs, "flat out ivec4 clipTet;", f.NearClip },
     { &fs, "flat in ivec4 clipTet;", f.NearClip },
     { &fs, "uniform sampler2D sceneDepth;", f.NearClip || f.OpaqueClip },
     { &fs, "float toOpaque", f.OpaqueClip },
     { &gs, "uniform sampler2D opacityPrefix;", f.EarlyDiscard },
-    { &gs, "if (transparentRange(smin, smax))", f.EarlyDiscard && !tri },
+    { &gs, "if (transparentRange(dmin, dmax))", f.EarlyDiscard && !tri },
     { &gs, "if (transparentRange(lo, hi))", f.EarlyDiscard && tri },
     { &gs, "vec3 pointNormal[4];", iso },
     { &gs, "uniform samplerBuffer pointGradients;", iso && f.IsoSmooth },
@@ -155,7 +164,7 @@ void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
   // normal, frontPoint + backPlane + scalarGrad, or segment), the flat data of the features
   // (piece, clipTet, isoG0 + isoJ + isoV0).
   const int components = psi::GeometryOutputComponentsPerVertex(f);
-  const int expected = 4 + (sil ? 23 : exact ? 12 : 3) + (tri ? 1 : 0) + (f.NearClip ? 4 : 0) +
+  const int expected = 4 + (sil ? 23 : exact ? 12 : 3) + (separate ? 4 : 0) + (tri ? 1 : 0) + (f.NearClip ? 4 : 0) +
     (perFragment ? 15 : 0);
   PSI_CHECK(components == expected, "components %d, expected %d:\n%s", components, expected,
     what.c_str());
@@ -180,6 +189,10 @@ int main(int argc, char* argv[])
       {
         const int segments = bits & 32 ? 2 : bits & 1;
         all.push_back(Make(method, segments, bits & 2, bits & 4, bits & 8, iso, bits & 16));
+        if (segments == 2)
+        {
+          all.push_back(Make(method, 2, bits & 2, bits & 4, bits & 8, iso, bits & 16, 3, true));
+        }
       }
     }
   }
@@ -267,6 +280,15 @@ int main(int argc, char* argv[])
   {
     compile.push_back(Make(1, 2, false, false, false, iso, false));
     compile.push_back(Make(1, 2, true, true, true, iso, iso % 2));
+  }
+  // A separate opacity array: every method with every other feature on, each isosurface mode.
+  for (int method = 0; method < 7; ++method)
+  {
+    compile.push_back(Make(method, 2, true, true, true, 0, false, 3, true));
+  }
+  for (int iso = 1; iso < 5; ++iso)
+  {
+    compile.push_back(Make(1, 2, true, true, true, iso, false, 3, true));
   }
 
   vtkNew<vtkRenderWindow> rw;

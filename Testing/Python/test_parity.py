@@ -1,14 +1,14 @@
 """Parity walk: what ParaView 5.11's 'Volume' representation honours, 'Psi Volume' honours too.
 Each step changes one thing (the array, a vector component, point or cell data, the color map,
 the opacity function, log scale, the unit distance, the scalar bar, visibility, a second view,
-DepthPeelingForVolumes) and renders 'Volume' ('Projected tetra') and 'Psi Volume' of the same
-mesh in the same view. Each must react as 'Volume' does: its image changes exactly when
-'Volume's' changes, and after the change the two images agree as well as they did before
-(Projected tetra is not exact, so 'agree' is within a bound measured on the baseline).
-UseSeparateOpacityArray is not honoured yet and not in the walk (README, Known limitations):
-'Psi Volume' warns when drawn with it."""
+DepthPeelingForVolumes, a separate opacity array and its component, a time step, a state saved
+and loaded) and renders 'Volume' ('Projected tetra') and 'Psi Volume' of the same mesh in the
+same view. Each must react as 'Volume' does: its image changes exactly when 'Volume's' changes,
+and after the change the two images agree as well as they did before (Projected tetra is not
+exact, so 'agree' is within a bound measured on the baseline)."""
 import os
 import sys
+import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
 import numpy as np  # noqa: E402
@@ -104,6 +104,35 @@ step("DepthPeelingForVolumes off", calc2,
      undo=lambda: setattr(view, "DepthPeelingForVolumes", 1), expect_change=False)
 step("hidden", calc2, lambda d: (color(d), setattr(d, "Visibility", 0)))
 
+
+def separate(d, name="Other", comp=None):
+    """Opacity from array `name` (component `comp`); the opacity function rescaled to its range,
+    as ParaView does when the array is chosen (the color map keeps the colored array's)."""
+    color(d)
+    d.UseSeparateOpacityArray = 1
+    d.OpacityArrayName = ["POINTS", name]
+    if comp is not None:
+        d.OpacityComponent = comp
+    d.RescaleTransferFunctionToDataRange(False, True)
+
+
+def no_separate():
+    for rep in ("Volume", "Psi Volume"):
+        d = show(calc2, rep)
+        d.UseSeparateOpacityArray = 0
+        simple.Hide(calc2, view)
+    pwf.Points = saved
+
+
+step("separate opacity array", calc2, separate, undo=no_separate)
+# (component Y of V is RTData / 40: rescaled, the same opacity; X is not)
+step("separate opacity component", calc2, lambda d: separate(d, "V", 0), undo=no_separate)
+formula = calc2.Function
+step("time step (new Other, same mesh)", calc2,
+     lambda d: (setattr(calc2, "Function", "RTData*0.25 + 60*cos(coordsY)"),
+                calc2.UpdatePipeline(), separate(d)),
+     undo=lambda: (no_separate(), setattr(calc2, "Function", formula)))
+
 # A second view of the same representation type: each view draws the mesh at its own camera.
 view2 = psi_testing.black_view(120)
 imgs = {}
@@ -126,4 +155,40 @@ for rep, (a, b) in imgs.items():
     t.check(diff(a, b) > CHANGED and psi_testing.covered(b, [0, 0, 0]) > 2000,
             "%s: the second view draws its own camera" % rep)
 t.check(diff(imgs["Volume"][1], imgs["Psi Volume"][1]) < bound, "second view: the two agree")
+simple.Delete(view2)
+
+# State save and load: both representations come back as they were, separate opacity array,
+# its component and the opacity function's range included.
+saved_images = {}
+for rep in ("Volume", "Psi Volume"):
+    d = show(calc2, rep)
+    separate(d, "V", 0)
+    simple.Render(view)
+    saved_images[rep] = psi_testing.grab(view)
+    state = os.path.join(tempfile.mkdtemp(), "parity.pvsm")
+    simple.SaveState(state)
+    simple.ResetSession()
+    psi_data.load_plugin(globals())
+    simple.LoadState(state)
+    view = simple.GetActiveViewOrCreate("RenderView")
+    view.ViewSize = [120, 120]
+    simple.Render(view)
+    loaded = psi_testing.grab(view)
+    shown = [r for r in simple.GetRepresentations().values() if r.Visibility]
+    t.check(len(shown) == 1 and shown[0].Representation == rep and
+            shown[0].UseSeparateOpacityArray == 1, "state: '%s' with its opacity array" % rep)
+    # ('Volume' itself comes back 8/255 off here, its opacity function range not as saved:
+    # ParaView's own matter, reported, not checked)
+    if rep == "Psi Volume":
+        t.check(diff(loaded, saved_images[rep]) < CHANGED, "state: '%s' renders as before (%.2f)"
+                % (rep, diff(loaded, saved_images[rep])))
+    else:
+        print("        state: 'Volume' after load %.2f off" % diff(loaded, saved_images[rep]))
+    calc2 = simple.FindSource("Other") or [s for s in simple.GetSources().values()
+                                           if s.GetXMLName() == "Calculator"][-1]
+    pwf = simple.GetOpacityTransferFunction(array)
+    saved = list(pwf.Points)
+    simple.Hide(calc2, view)
+t.check(diff(saved_images["Volume"], saved_images["Psi Volume"]) < bound,
+        "state: the two agree (%.2f)" % diff(saved_images["Volume"], saved_images["Psi Volume"]))
 t.finish()
