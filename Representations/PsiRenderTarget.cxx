@@ -151,9 +151,15 @@ void PsiRenderTarget::DrawAndComposite(
     ostate->vtkglDepthMask(GL_FALSE);
     ostate->vtkglDisable(GL_CULL_FACE);
     ostate->vtkglEnable(GL_BLEND);
-    // premultiplied "over", back to front
+    // premultiplied "over", back to front (added: a caller such as VTK's dual depth peeling may
+    // have left GL_MAX, which the composite below keeps)
+    GLint equation[2] = { GL_FUNC_ADD, GL_FUNC_ADD };
+    glGetIntegerv(GL_BLEND_EQUATION_RGB, &equation[0]);
+    glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &equation[1]);
+    ostate->vtkglBlendEquation(GL_FUNC_ADD);
     ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     drawVolume();
+    ostate->vtkglBlendEquationSeparate(equation[0], equation[1]);
     ostate->PopFramebufferBindings();
 
     ostate->vtkglViewport(this->Origin[0], this->Origin[1], this->Size[0], this->Size[1]);

@@ -2,6 +2,7 @@
 
 #include "PsiAdaptiveNodes.h"
 #include "PsiComputeProjector.h"
+#include "PsiDepthPeelingCalls.h"
 #include "PsiGeometryProjector.h"
 #include "PsiIntegrationMethods.h"
 #include "PsiMeshBuffers.h"
@@ -54,6 +55,7 @@ struct vtkPsiVolumeMapper::Internals
   PsiRenderTarget Target;
   PsiGeometryProjector Geometry;
   PsiComputeProjector Compute;
+  PsiDepthPeelingCalls Peeling;
 
   // Transfer-function nodes for adaptive sampling, for the property and range they came from.
   PsiAdaptiveNodes AdaptiveNodes;
@@ -115,9 +117,9 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   Internals& I = *this->Impl;
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   vtkUnstructuredGridBase* input = this->GetInput();
-  if (!renWin || !input)
+  if (!renWin || !input || !I.Peeling.DrawThisCall(vol))
   {
-    return;
+    return; // (within depth peeling, drawn once a frame: PsiDepthPeelingCalls)
   }
   // an optical depth needs a positive unit distance: like 'Projected tetra', draw nothing
   const std::string badUnit = psi::UnitDistanceProblem(vol->GetProperty());

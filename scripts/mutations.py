@@ -18,6 +18,7 @@ GEOMETRY = DEGENERATE + GL
 DEGENERATE_FAN = ["PsiDegenerateProjections.fan"]
 GEOMETRY_FAN = DEGENERATE_FAN + ["PsiVolumeRender.fan"]
 SEPARATE = ["PsiPython.separate_opacity"]
+TRANSLUCENT = ["PsiPython.translucent_geometry"]
 
 MUTATIONS = [
     # --- Integrators (Shaders/PsiIntegrate*.glsl): Moreland & Angel 2004; Moreland's dissertation.
@@ -156,6 +157,12 @@ MUTATIONS = [
     Mutation("separate_opacity_discard_on_color", "Shaders/PsiSeparateOpacityGS.glsl",
              "dmin = min(min(vsOpacity[0].x, vsOpacity[0].y), min(vsOpacity[0].z, vsOpacity[0].w));",
              "dmin = smin;", SEPARATE),
+    # --- Translucent geometry with depth peeling for volumes (Representations/PsiDepthPeelingCalls,
+    # PsiRenderTarget).
+    Mutation("peeling_drawn_every_stage", "Representations/PsiDepthPeelingCalls.cxx",
+             "  return first;", "  return true;", TRANSLUCENT),
+    Mutation("peeling_blend_equation_kept", "Representations/PsiRenderTarget.cxx",
+             "    ostate->vtkglBlendEquation(GL_FUNC_ADD);\n", "", TRANSLUCENT),
     # --- Near-plane clipping, opaque clipping, scene depth.
     Mutation("near_cull_needs_two_in_front", "Shaders/PsiNearClipGS.glsl",
              "nearClipped = inFront > 0;", "nearClipped = inFront > 1;", GL),
