@@ -201,7 +201,7 @@ TransferFunctionNodes SampleTransferFunctionNodes(
   }
   TransferFunctionNodes out;
   nodes = Refine(property, nodes, budget, tolerance, 1e-6 * (range[1] - range[0]), out.MaxDeviation);
-  const double unit = std::max(property->GetScalarOpacityUnitDistance(0), 1e-30);
+  const double unit = OpacityUnitDistance(property);
   for (const Node& n : nodes)
   {
     out.Scalars.push_back(static_cast<float>(n.S));

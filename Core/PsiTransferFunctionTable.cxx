@@ -24,6 +24,11 @@ void TransferFunctionTable::Lookup(double s, double out[4]) const
   }
 }
 
+double OpacityUnitDistance(vtkVolumeProperty* property)
+{
+  return std::max(property->GetScalarOpacityUnitDistance(0), 1e-30);
+}
+
 TransferFunctionTable SampleTransferFunction(vtkVolumeProperty* property,
   const double range[2], int size, const double* opacityRange)
 {
@@ -35,7 +40,7 @@ TransferFunctionTable SampleTransferFunction(vtkVolumeProperty* property,
   t.OpacityRange[0] = orange[0];
   t.OpacityRange[1] = orange[1] > orange[0] ? orange[1] : orange[0];
   t.Rgba.resize(4 * static_cast<size_t>(t.Size));
-  const double unit = std::max(property->GetScalarOpacityUnitDistance(0), 1e-30);
+  const double unit = OpacityUnitDistance(property);
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
   const bool gray = property->GetColorChannels(0) == 1;
   vtkColorTransferFunction* rgb = gray ? nullptr : property->GetRGBTransferFunction(0);

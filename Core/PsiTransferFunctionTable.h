@@ -29,6 +29,10 @@ struct PSIVOLUMECORE_EXPORT TransferFunctionTable
   void Lookup(double s, double out[4]) const;
 };
 
+/// ScalarOpacityUnitDistance of component 0, at least 1e-30: tau = opacity / this distance (a
+/// distance of 0 or less draws nothing at all: psi::UnitDistanceProblem).
+PSIVOLUMECORE_EXPORT double OpacityUnitDistance(vtkVolumeProperty* property);
+
 /// Samples component 0 of `property` at `size` evenly spaced scalars over `range`; with
 /// `opacityRange` (a separate opacity array) the attenuation over that range instead.
 PSIVOLUMECORE_EXPORT TransferFunctionTable SampleTransferFunction(vtkVolumeProperty* property,

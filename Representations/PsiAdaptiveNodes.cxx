@@ -1,5 +1,7 @@
 #include "PsiAdaptiveNodes.h"
 
+#include "PsiTransferFunctionTable.h"
+
 #include "vtkObject.h"
 #include "vtkShaderProgram.h"
 #include "vtkVolumeProperty.h"
@@ -18,8 +20,8 @@ void PsiAdaptiveNodes::Update(vtkVolumeProperty* property, const double range[2]
 {
   this->TableVersion = tableVersion;
   this->Nodes = psi::SampleTransferFunctionNodes(property, range, maxNodes, tolerance);
-  this->TableDeviation = psi::TableDeviation(
-    table, this->Nodes, std::max(property->GetScalarOpacityUnitDistance(0), 1e-30));
+  this->TableDeviation =
+    psi::TableDeviation(table, this->Nodes, psi::OpacityUnitDistance(property));
   this->Faithful = this->Nodes.MaxDeviation <= tolerance;
   if (!this->Faithful)
   {

@@ -16,42 +16,42 @@
 
 PsiRenderTarget::PsiRenderTarget() = default;
 
-bool PsiRenderTarget::OpaqueGeometryOverlaps(vtkRenderer* ren, vtkVolume* vol)
+namespace
 {
-  double vb[6];
-  vol->GetBounds(vb);
+// Whether a visible prop other than volumes has opaque geometry, within `box` when given.
+bool AnyOpaqueProp(vtkRenderer* ren, const double* box)
+{
   vtkPropCollection* props = ren->GetViewProps();
   vtkCollectionSimpleIterator it;
   props->InitTraversal(it);
   while (vtkProp* p = props->GetNextProp(it))
   {
-    if (p == vol || !p->GetVisibility() || p->IsA("vtkVolume") || !p->HasOpaqueGeometry())
+    if (!p->GetVisibility() || p->IsA("vtkVolume") || !p->HasOpaqueGeometry())
     {
       continue;
     }
-    const double* b = p->GetBounds();
-    if (b && b[0] <= vb[1] && vb[0] <= b[1] && b[2] <= vb[3] && vb[2] <= b[3] && b[4] <= vb[5] &&
-      vb[4] <= b[5])
+    const double* b = box ? p->GetBounds() : nullptr;
+    if (!box ||
+      (b && b[0] <= box[1] && box[0] <= b[1] && b[2] <= box[3] && box[2] <= b[3] &&
+        b[4] <= box[5] && box[4] <= b[5]))
     {
       return true;
     }
   }
   return false;
 }
+} // namespace
+
+bool PsiRenderTarget::OpaqueGeometryOverlaps(vtkRenderer* ren, vtkVolume* vol)
+{
+  double vb[6];
+  vol->GetBounds(vb);
+  return AnyOpaqueProp(ren, vb);
+}
 
 bool PsiRenderTarget::SceneHasOpaqueGeometry(vtkRenderer* ren)
 {
-  vtkPropCollection* props = ren->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* p = props->GetNextProp(it))
-  {
-    if (p->GetVisibility() && !p->IsA("vtkVolume") && p->HasOpaqueGeometry())
-    {
-      return true;
-    }
-  }
-  return false;
+  return AnyOpaqueProp(ren, nullptr);
 }
 
 PsiRenderTarget::~PsiRenderTarget() = default;

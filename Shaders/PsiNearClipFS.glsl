@@ -57,7 +57,8 @@ bool clipSegment(out float sf, out float sb, out float D, out float frontDepth, 
   // Linear scalar: s(x) = s0 + g . (x - V0), g from the three edge equations.
   mat3 E = mat3(V[1] - V[0], V[2] - V[0], V[3] - V[0]);
   vec3 ds = vec3(tetV1.w - tetV0.w, tetV2.w - tetV0.w, tetV3.w - tetV0.w);
-  vec3 g = inverse(transpose(E)) * ds;
+  mat3 toGradient = inverse(transpose(E)); // differences from V0 at V1..V3 -> gradient
+  vec3 g = toGradient * ds;
   vec3 pf = o + tin * dir, pb = o + tout * dir;
   sf = tetV0.w + dot(g, pf - V[0]);
   sb = tetV0.w + dot(g, pb - V[0]);

@@ -37,6 +37,6 @@ float opacityFront = 0.0, opacityBack = 0.0; // the opacity scalar at the segmen
 //PSI::SeparateOpacity::NearClip
   vec4 tetO = vec4(texelFetch(opacityScalars, clipTet.x).r, texelFetch(opacityScalars, clipTet.y).r,
     texelFetch(opacityScalars, clipTet.z).r, texelFetch(opacityScalars, clipTet.w).r);
-  vec3 gO = inverse(transpose(E)) * (tetO.yzw - tetO.x);
+  vec3 gO = toGradient * (tetO.yzw - tetO.x);
   opacityFront = tetO.x + dot(gO, pf - V[0]);
   opacityBack = tetO.x + dot(gO, pb - V[0]);

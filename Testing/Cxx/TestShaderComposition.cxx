@@ -114,7 +114,7 @@ void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
     { &gs, "flat out vec4 opacityPlane;", separate },
     { &fs, "flat in vec4 opacityPlane;", separate },
     { &fs, "opacityBack = mix(opacityFront, opacityBack, toOpaque", separate && f.OpaqueClip },
-    { &fs, "vec3 gO = inverse(transpose(E))", separate && f.NearClip },
+    { &fs, "vec3 gO = toGradient", separate && f.NearClip },
     { &fs, "opacityFront = mix(splitOpacityFront", separate && (f.Adaptive || perFragment) },
     { &fs, "float oPiece0", separate && tri },
     { &gs, "uniform float nearZ;", f.NearClip },
