@@ -148,24 +148,14 @@ void SetRange(double lo, double hi, double range[2])
   range[1] = hi;
 }
 
-// Range of the separate opacity scalars over the drawn tetrahedra.
-void MeasureOpacity(TetMesh& m)
-{
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (size_t k = 0; k < m.Tets.size() && !m.Opacity.empty(); ++k)
-  {
-    lo = std::min<double>(lo, m.Opacity[m.Tets[k]]);
-    hi = std::max<double>(hi, m.Opacity[m.Tets[k]]);
-  }
-  SetRange(lo, hi, m.OpacityRange);
-}
-
-// Scalar range of the drawn tetrahedra (never empty) and, when `edges`, the longest and shortest
-// edge.
+// Scalar ranges of the drawn tetrahedra (never empty; the separate opacity scalars' too) and,
+// when `edges`, the longest and shortest edge, in one pass.
 void MeasureTets(TetMesh& m, bool edges = true)
 {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo, maxEdge2 = 0;
+  double olo = lo, ohi = hi;
   double minEdge2 = std::numeric_limits<double>::infinity();
+  const bool opacity = !m.Opacity.empty();
   for (size_t t = 0; t < m.Tets.size(); t += 4)
   {
     for (int a = 0; a < 4; ++a)
@@ -173,6 +163,11 @@ void MeasureTets(TetMesh& m, bool edges = true)
       const float* p = &m.Points4[4 * static_cast<size_t>(m.Tets[t + a])];
       lo = std::min<double>(lo, p[3]);
       hi = std::max<double>(hi, p[3]);
+      if (opacity)
+      {
+        olo = std::min<double>(olo, m.Opacity[m.Tets[t + a]]);
+        ohi = std::max<double>(ohi, m.Opacity[m.Tets[t + a]]);
+      }
       for (int c = a + 1; c < 4 && edges; ++c)
       {
         const float* q = &m.Points4[4 * static_cast<size_t>(m.Tets[t + c])];
@@ -189,7 +184,7 @@ void MeasureTets(TetMesh& m, bool edges = true)
     m.MinEdgeLength = std::isfinite(minEdge2) ? std::sqrt(minEdge2) : 0;
   }
   SetRange(lo, hi, m.ScalarRange);
-  MeasureOpacity(m);
+  SetRange(olo, ohi, m.OpacityRange);
 }
 } // namespace
 

@@ -11,6 +11,7 @@
 #include "PsiShaderComposer.h"
 #include "PsiShaderParameters.h"
 #include "PsiTransferFunctionAnalysis.h"
+#include "PsiTransferFunctionTable.h"
 #include "PsiTransferTextures.h"
 #include "PsiVisibilityOrder.h"
 
@@ -265,16 +266,14 @@ void vtkPsiVolumeMapper::UpdateTables(vtkOpenGLRenderWindow* renWin, vtkVolume* 
   {
     I.Tables.OpacityPrefix.Update(renWin, I.Tables.Transfer);
   }
-  // (a separate opacity array draws full pre-integration as partial: ChooseSeparateOpacity)
-  const bool separate = opacityRange != nullptr;
-  if ((MethodInfo(this->IntegrationMethod).NeedsPsiTable || separate) &&
-    I.Tables.PsiTable.NeedsUpdate())
+  const psi::IntegrationMethodInfo& method = MethodInfo(this->DrawnMethod());
+  if (method.NeedsPsiTable && I.Tables.PsiTable.NeedsUpdate())
   {
     I.Tables.PsiTable.Update(renWin);
   }
   const psi::PreIntegrationLengthAxis axis =
     psi::MakePreIntegrationLengthAxis(mesh.MinEdgeLength, mesh.MaxEdgeLength);
-  if (MethodInfo(this->IntegrationMethod).NeedsPreIntegrationTable && !separate &&
+  if (method.NeedsPreIntegrationTable &&
     I.Tables.PreIntegration.NeedsUpdate(I.Tables.Transfer.GetVersion(), axis))
   {
     // Röttger's table belongs to one transfer function: rebuilt on every edit (timed).
@@ -299,7 +298,7 @@ psi::ShaderFeatures vtkPsiVolumeMapper::ChooseFeatures(
 {
   Internals& I = *this->Impl;
   psi::ShaderFeatures f;
-  f.Method = this->IntegrationMethod;
+  f.Method = this->DrawnMethod();
   f.ExactSegments = !cam.Parallel && this->ExactPerspectiveSegments;
   f.Silhouette = psi::SilhouetteChosen(this->Decomposition);
   f.NearClip = cam.NearPlaneCuts(I.Mesh.GetMesh().Bounds);
@@ -338,9 +337,20 @@ psi::ShaderFeatures vtkPsiVolumeMapper::ChooseFeatures(
   return f;
 }
 
+// The integration method drawn: the setting, except that Röttger's table tabulates one scalar for
+// color and opacity, so that with a separate opacity array full pre-integration draws as partial
+// pre-integration (the tables and the program both follow this).
+int vtkPsiVolumeMapper::DrawnMethod() const
+{
+  const bool separate = !this->Impl->Mesh.GetMesh().Opacity.empty();
+  return separate && MethodInfo(this->IntegrationMethod).NeedsPreIntegrationTable
+    ? static_cast<int>(psi::Method::PartialPreIntegration)
+    : this->IntegrationMethod;
+}
+
 // A separate opacity array: drawn with silhouettes, whose fragments carry both scalars; not with
-// adaptive sampling (nodes of one scalar), nor Röttger's table (one scalar for color and
-// opacity): partial pre-integration then; early discard judged on the opacity scalar, per cell.
+// adaptive sampling (nodes of one scalar), nor Röttger's table (DrawnMethod); early discard
+// judged on the opacity scalar, per cell.
 void vtkPsiVolumeMapper::ChooseSeparateOpacity(psi::ShaderFeatures& f)
 {
   Internals& I = *this->Impl;
@@ -351,12 +361,11 @@ void vtkPsiVolumeMapper::ChooseSeparateOpacity(psi::ShaderFeatures& f)
     f.Silhouette = true;
     f.Adaptive = false;
     f.EarlyDiscard = f.EarlyDiscard && !f.IsoTriangles;
-    if (MethodInfo(f.Method).NeedsPreIntegrationTable)
-    {
-      f.Method = static_cast<int>(psi::Method::PartialPreIntegration);
-      note = "Psi Volume: full pre-integration tabulates one scalar for color and opacity; with "
-             "a separate opacity array it draws with partial pre-integration.";
-    }
+  }
+  if (f.Method != this->IntegrationMethod)
+  {
+    note = "Psi Volume: full pre-integration tabulates one scalar for color and opacity; with "
+           "a separate opacity array it draws with partial pre-integration.";
   }
   if (!note.empty() && note != I.LastFeatureNote)
   {
@@ -395,8 +404,7 @@ void vtkPsiVolumeMapper::SetShaderParameters(vtkShaderProgram* program, vtkRende
   vtkVolumeProperty* property = vol->GetProperty();
   SetCameraShaderParameters(program, cam);
   program->SetUniform1iv("classTable", 81, psi::GetPackedProjectionClassTable().data());
-  program->SetUniformf("unitDistance",
-    static_cast<float>(std::max(property->GetScalarOpacityUnitDistance(0), 1e-30)));
+  program->SetUniformf("unitDistance", static_cast<float>(psi::OpacityUnitDistance(property)));
   I.Tables.Activate(program, f.EarlyDiscard, MethodInfo(f.Method).NeedsPsiTable,
     MethodInfo(f.Method).NeedsPreIntegrationTable);
   I.Target.SetShaderParameters(program);

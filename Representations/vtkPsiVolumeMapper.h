@@ -294,6 +294,7 @@ private:
   bool UpdateMesh(
     vtkOpenGLRenderWindow* renWin, vtkVolume* vol, vtkUnstructuredGridBase* input);
   void UpdateTables(vtkOpenGLRenderWindow* renWin, vtkVolume* vol);
+  int DrawnMethod() const;
   void ChooseSeparateOpacity(psi::ShaderFeatures& f);
   psi::ShaderFeatures ChooseFeatures(
     vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam);
