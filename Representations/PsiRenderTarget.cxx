@@ -2,6 +2,7 @@
 
 #include "PsiCompositeFS.h"
 
+#include "vtkMath.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -30,9 +31,15 @@ bool AnyOpaqueProp(vtkRenderer* ren, const double* box)
     {
       continue;
     }
-    const double* b = box ? p->GetBounds() : nullptr;
+    // An actor with no data (ParaView keeps one per hidden representation: bounds
+    // uninitialized, VTK_DOUBLE_MAX or min > max) draws nothing.
+    const double* b = p->GetBounds();
+    if (!b || !vtkMath::AreBoundsInitialized(b))
+    {
+      continue;
+    }
     if (!box ||
-      (b && b[0] <= box[1] && box[0] <= b[1] && b[2] <= box[3] && box[2] <= b[3] &&
+      (b[0] <= box[1] && box[0] <= b[1] && b[2] <= box[3] && box[2] <= b[3] &&
         b[4] <= box[5] && box[4] <= b[5]))
     {
       return true;

@@ -22,6 +22,7 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRTAnalyticSource.h"
@@ -160,6 +161,14 @@ int main(int argc, char* argv[])
     double MeanBound, MaxBound;
   };
   outside();
+  // An actor with nothing to draw (ParaView keeps one for each representation not shown) has
+  // uninitialized bounds: it is not opaque geometry and must not turn on depth sampling.
+  vtkNew<vtkPolyDataMapper> emptyMapper;
+  vtkNew<vtkPolyData> emptyPolyData;
+  emptyMapper->SetInputData(emptyPolyData);
+  vtkNew<vtkActor> emptyActor;
+  emptyActor->SetMapper(emptyMapper);
+  ren->AddActor(emptyActor);
   for (const Case& k :
     { Case{ "perspective_partial", static_cast<int>(psi::Method::PartialPreIntegration), 0.006,
         0.03 },
@@ -177,6 +186,7 @@ int main(int argc, char* argv[])
     static_cast<long long>(mapper->GetNumberOfTetrahedra()));
   PSI_CHECK(!mapper->GetLastUsedNearPlaneClipping(), "outside view must not compile the near path");
   PSI_CHECK(!mapper->GetLastUsedOpaqueClipping(), "no opaque geometry: no depth sampling");
+  ren->RemoveActor(emptyActor);
   mapper->SetIntegrationMethod(static_cast<int>(psi::Method::PartialPreIntegration));
 
   // Visibility order on Kuhn cells seen head-on (the view that showed lines in the GUI test):
