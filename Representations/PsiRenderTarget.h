@@ -39,6 +39,8 @@ public:
   bool CaptureDepthTexture(vtkRenderer* ren, vtkOpenGLRenderWindow* renWin, bool sampleDepth);
   /// Sets the shaders' `sceneDepth` sampler and `viewportSize` (after CaptureDepthTexture).
   void SetShaderParameters(vtkShaderProgram* program);
+  /// Width and height of the target in pixels (after CaptureDepthTexture).
+  const int* GetSize() const { return this->Size; }
   /// Clears the float target, runs `drawVolume` into it with blending and the depth test set
   /// (all GL state restored afterwards), and composites the result over the scene.
   void DrawAndComposite(vtkOpenGLRenderWindow* renWin, const std::function<void()>& drawVolume);

@@ -1,5 +1,6 @@
 #include "PsiShaderParameters.h"
 
+#include "PsiPixelRays.h"
 #include "PsiTransferFunctionAnalysis.h"
 
 #include "vtkCamera.h"
@@ -133,6 +134,23 @@ void SetCameraShaderParameters(vtkShaderProgram* program, const PsiFrameCamera& 
   SetMatrix(program, "MCVCMatrix", camera.MCVC);
   SetMatrix(program, "VCDCMatrix", camera.VCDC);
   SetMatrix(program, "DCVCMatrix", camera.DCVC);
+}
+
+void SetPixelRayShaderParameters(
+  vtkShaderProgram* program, const PsiFrameCamera& camera, const int size[2])
+{
+  const psi::PixelRays rays = psi::PixelRaysOf(camera.DCVC, camera.Parallel, size[0], size[1]);
+  float origin[3][3], step[3][3];
+  for (int j = 0; j < 3; ++j)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      origin[j][k] = static_cast<float>(rays.Origin[j][k]);
+      step[j][k] = static_cast<float>(rays.Step[j][k]);
+    }
+  }
+  program->SetUniform3fv("pixelRayOrigin", 3, origin);
+  program->SetUniform3fv("pixelRayStep", 3, step);
 }
 
 void SetIsosurfaceShaderParameters(vtkShaderProgram* program, const psi::IsosurfaceList& list,

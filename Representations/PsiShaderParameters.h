@@ -33,6 +33,11 @@ struct PsiFrameCamera
 /// MCVCMatrix, VCDCMatrix, DCVCMatrix, nearZ, parallelProjection.
 void SetCameraShaderParameters(vtkShaderProgram* program, const PsiFrameCamera& camera);
 
+/// pixelRayOrigin and pixelRayStep (psi::PixelRaysOf) for a target of `size` pixels: the
+/// silhouettes' fragments form their rays from them (PsiRaySegmentsFS.glsl).
+void SetPixelRayShaderParameters(
+  vtkShaderProgram* program, const PsiFrameCamera& camera, const int size[2]);
+
 struct PsiIsosurfaceStyle
 {
   bool UseColorMap = true;    ///< color each surface through the color map at its value

@@ -408,6 +408,10 @@ void vtkPsiVolumeMapper::SetShaderParameters(vtkShaderProgram* program, vtkRende
   I.Tables.Activate(program, f.EarlyDiscard, MethodInfo(f.Method).NeedsPsiTable,
     MethodInfo(f.Method).NeedsPreIntegrationTable);
   I.Target.SetShaderParameters(program);
+  if (f.Silhouette)
+  {
+    SetPixelRayShaderParameters(program, cam, I.Target.GetSize());
+  }
   if (f.IsoCount > 0)
   {
     PsiIsosurfaceStyle style;

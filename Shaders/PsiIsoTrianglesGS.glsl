@@ -8,7 +8,6 @@
 // behind, surface, in front). Primitives emitted by one invocation are blended in emission
 // order. Surface vertices carry their normal in the segment slot (setVertexNormal).
 uniform float isoValues[PSI_ISO_COUNT]; // ascending
-uniform int parallelProjection;
 // piece (one component, to fit more isovalues in the geometry shader's output): j >= 0, the
 // volume between isoValues[j - 1] and isoValues[j] (j = 0 .. PSI_ISO_COUNT, open-ended at the
 // ends), j = PSI_ISO_COUNT + 1 the whole cell; -(i + 1): the surface of isovalue i.

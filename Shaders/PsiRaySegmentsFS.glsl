@@ -1,32 +1,33 @@
 //PSI::RaySegments::Dec
-// Ray segments (PsiRaySegmentsGS.glsl): the ray of this pixel, x(t) = E + t d with d.z = -1 (so
-// t is the view depth -z; in perspective E = 0 and d = p / -p.z for the pixel's point p on the
-// near plane, in parallel projection E = (p.x, p.y, 0) and d = (0, 0, -1)), meets each face
-// plane n . x = w at t = (w - n . E) / (n . d). It enters the tetrahedron at the largest t of
-// the planes it crosses inwards (n . d < 0) and leaves at the smallest t of those it crosses
-// outwards (n . d > 0); a plane parallel to the ray bounds nothing, as the pixel lies inside
-// the silhouette. Along the ray the scalar is s(t) = (g . E + s0) + t (g . d).
-flat in vec4 facePlane0;
-flat in vec4 facePlane1;
-flat in vec4 facePlane2;
-flat in vec4 facePlane3;
+// Ray segments (PsiRaySegmentsGS.glsl): the ray of this pixel is X(t) = O + t S, O and S affine
+// in the window position (psi::PixelRaysOf; for VTK's cameras S.z = -1 and t is the view
+// depth). It meets face i at t_i = K_i / L_i in perspective and L_i / K_i in parallel
+// projection, L = L0 + x Lx + y Ly. It enters the tetrahedron at the largest t of the planes it
+// crosses inwards (n . S < 0) and leaves at the smallest t of those it crosses outwards
+// (n . S > 0); a plane parallel to the ray bounds nothing, as the pixel lies inside the
+// silhouette. Along the ray the scalar is s(t) = (g . O + s0) + t (g . S).
+flat in vec4 rayPlaneK;
+flat in vec4 rayPlane0;
+flat in vec4 rayPlaneX;
+flat in vec4 rayPlaneY;
 flat in vec4 scalarPlane; // g, s0
 smooth in vec3 isoNormal;
 
-vec3 rayOrigin, rayStep; // E and d of this pixel's ray
+uniform vec3 pixelRayOrigin[3]; // O = [0] + x [1] + y [2]
+uniform vec3 pixelRayStep[3];   // S likewise
+
+vec3 rayOrigin, rayStep; // O and S of this pixel's ray
 float rayEntry;          // t where the ray enters the tetrahedron
 
 void readSegment(out float sf, out float sb, out float D)
 {
-  vec3 p = viewPointAt(0.0);
+  vec2 x = gl_FragCoord.xy;
+  rayOrigin = pixelRayOrigin[0] + x.x * pixelRayOrigin[1] + x.y * pixelRayOrigin[2];
+  rayStep = pixelRayStep[0] + x.x * pixelRayStep[1] + x.y * pixelRayStep[2];
+  vec4 L = rayPlane0 + x.x * rayPlaneX + x.y * rayPlaneY;
   bool parallel = parallelProjection == 1;
-  rayStep = parallel ? vec3(0.0, 0.0, -1.0) : p / -p.z;
-  rayOrigin = parallel ? vec3(p.xy, 0.0) : vec3(0.0);
-  mat4 planes = mat4(facePlane0, facePlane1, facePlane2, facePlane3);
-  vec4 num = vec4(facePlane0.w, facePlane1.w, facePlane2.w, facePlane3.w) -
-    vec4(rayOrigin, 0.0) * planes;
-  vec4 den = vec4(rayStep, 0.0) * planes;
-  vec4 t = num / den;
+  vec4 den = parallel ? rayPlaneK : L; // n . S
+  vec4 t = (parallel ? L : rayPlaneK) / den;
   vec4 tin = mix(vec4(-3.0e38), t, lessThan(den, vec4(0.0)));
   vec4 tout = mix(vec4(3.0e38), t, greaterThan(den, vec4(0.0)));
   rayEntry = max(max(tin.x, tin.y), max(tin.z, tin.w));

@@ -22,6 +22,7 @@ in vec4 vsP2[];
 in vec4 vsP3[];
 
 uniform mat4 VCDCMatrix;
+uniform int parallelProjection;
 
 vec4 clipP[4];
 vec3 viewP[4];
