@@ -4,17 +4,22 @@
 #include "vtkInformation.h"
 #include "vtkInformationObjectBaseVectorKey.h"
 #include "vtkOpenGLRenderPass.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
 #include "vtkVolume.h"
+
+#include <string>
 
 namespace
 {
 // The dual depth peeling pass among the render passes listed in the volume's property keys,
 // when it peels volumes too.
-bool PeelsVolumes(vtkInformation* keys)
+vtkDualDepthPeelingPass* VolumePeelingPass(vtkInformation* keys)
 {
   if (!keys || !keys->Has(vtkOpenGLRenderPass::RenderPasses()))
   {
-    return false;
+    return nullptr;
   }
   const int n = keys->Length(vtkOpenGLRenderPass::RenderPasses());
   for (int i = 0; i < n; ++i)
@@ -23,23 +28,88 @@ bool PeelsVolumes(vtkInformation* keys)
       vtkDualDepthPeelingPass::SafeDownCast(keys->Get(vtkOpenGLRenderPass::RenderPasses(), i));
     if (pass && pass->GetVolumetricPass())
     {
-      return true;
+      return pass;
     }
   }
-  return false;
+  return nullptr;
+}
+
+// The stage, told by the samplers the pass declares for a volume's ray caster in it.
+PsiDepthPeelingCalls::Stage ReplacedStage(
+  vtkDualDepthPeelingPass* pass, vtkAbstractMapper* mapper, vtkVolume* vol)
+{
+  std::string vs, gs;
+  std::string fs = "//VTK::DepthPeeling::Dec\n//VTK::CallWorker::Impl\n";
+  pass->PreReplaceShaderValues(vs, gs, fs, mapper, vol);
+  if (fs.find("depthRangeTex") != std::string::npos)
+  {
+    return PsiDepthPeelingCalls::AlphaBlend;
+  }
+  if (fs.find("lastFrontColorTex") != std::string::npos)
+  {
+    return PsiDepthPeelingCalls::Peel;
+  }
+  if (fs.find("innerDepthTex") != std::string::npos)
+  {
+    return PsiDepthPeelingCalls::OutsideLayers;
+  }
+  return PsiDepthPeelingCalls::Skip;
 }
 } // namespace
 
-bool PsiDepthPeelingCalls::DrawThisCall(vtkVolume* vol)
+PsiDepthPeelingCalls::PsiDepthPeelingCalls() = default;
+PsiDepthPeelingCalls::~PsiDepthPeelingCalls() = default;
+
+PsiDepthPeelingCalls::Stage PsiDepthPeelingCalls::StageOf(
+  vtkAbstractMapper* mapper, vtkVolume* vol)
 {
   vtkInformation* keys = vol->GetPropertyKeys();
-  this->Peeling = PeelsVolumes(keys);
-  if (!this->Peeling)
+  this->Pass = VolumePeelingPass(keys);
+  if (!this->Pass)
   {
-    return true;
+    return Plain;
   }
   const vtkMTimeType t = keys->GetMTime();
   const bool first = t != this->FrameKeysTime;
   this->FrameKeysTime = t;
-  return first;
+  const Stage stage = ReplacedStage(this->Pass, mapper, vol);
+  if (stage != Skip)
+  {
+    return stage;
+  }
+  this->Pass = nullptr;
+  return first ? Plain : Skip;
+}
+
+void PsiDepthPeelingCalls::SetShaderParameters(vtkShaderProgram* program,
+  vtkAbstractMapper* mapper, vtkVolume* vol, vtkOpenGLRenderWindow* renWin)
+{
+  if (!this->Pass)
+  {
+    return;
+  }
+  if (!this->Placeholder->GetHandle())
+  {
+    const float texel[2] = { -1.0f, -1.0f };
+    this->Placeholder->SetContext(renWin);
+    this->Placeholder->Create2DFromRaw(1, 1, 2, VTK_FLOAT, const_cast<float*>(texel));
+  }
+  this->Placeholder->Activate();
+  const int unit = this->Placeholder->GetTextureUnit();
+  for (const char* name :
+    { "outerDepthTex", "innerDepthTex", "lastFrontColorTex", "opaqueDepthTex", "depthRangeTex" })
+  {
+    program->SetUniformi(name, unit);
+  }
+  this->Pass->SetShaderParameters(program, mapper, vol, nullptr);
+}
+
+void PsiDepthPeelingCalls::Deactivate()
+{
+  this->Placeholder->Deactivate();
+}
+
+void PsiDepthPeelingCalls::ReleaseGraphicsResources(vtkWindow* win)
+{
+  this->Placeholder->ReleaseGraphicsResources(win);
 }

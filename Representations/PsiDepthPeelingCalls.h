@@ -1,34 +1,66 @@
 // PsiDepthPeelingCalls: when a view has translucent geometry and depth peeling for volumes
 // (ParaView's DepthPeelingForVolumes, on by default), VTK's vtkDualDepthPeelingPass renders each
-// volume once per stage of every frame (the depth initialization, each peel, a final alpha
-// blend), into its own draw buffers, and expects each call to integrate only that stage's depth
-// intervals. 'Psi Volume' draws its whole image once, in the frame's first call, where the
-// pass's draw buffer 0 accumulates what lies behind all translucent layers; it draws nothing in
-// the later calls. Drawn in every call, the image was blended in several times through the
-// pass's GL_MAX and front/back formulas: a stipple of stray pixels, also where no translucent
-// surface covers the volume. A translucent surface behind or inside the volume is then still
-// drawn over it (README, Known limitations).
+// volume once per stage of every frame, into its own draw buffers, and expects each call to
+// integrate only the volume between the depths its textures give per pixel:
+//  - before the peels: in front of all translucent layers, and behind them up to opaque geometry;
+//  - each peel: between the front layer just peeled and the next, and between the next back
+//    layer and the back layer just peeled;
+//  - the final alpha blend: between the layers left unpeeled.
+// This class finds the stage of a call, from the shader replacements the pass makes for it (its
+// public PreReplaceShaderValues), and hands the pass's texture uniforms to a program (its
+// SetShaderParameters). The mapper then clips its ray segments to the stage's intervals
+// (Shaders/PsiDepthPeelFS.glsl) and the composite writes the pass's outputs
+// (Shaders/PsiCompositeFS.glsl).
 #ifndef PsiDepthPeelingCalls_h
 #define PsiDepthPeelingCalls_h
 
+#include "vtkNew.h"
 #include "vtkType.h"
 
+class vtkAbstractMapper;
+class vtkDualDepthPeelingPass;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
 class vtkVolume;
+class vtkWindow;
 
 class PsiDepthPeelingCalls
 {
 public:
-  /// Whether to draw in this call: always outside the dual depth peeling pass; inside it, only
-  /// in the frame's first call. The pass adds itself to the volume's property keys before its
-  /// stages (vtkOpenGLRenderPass::PreRender) and removes itself after, so the keys' modification
-  /// time is new in each frame's first call and the same in the later ones.
-  bool DrawThisCall(vtkVolume* vol);
-  /// Whether the last call came from the dual depth peeling pass.
-  bool InPeelingPass() const { return this->Peeling; }
+  PsiDepthPeelingCalls();
+  ~PsiDepthPeelingCalls();
+  /// What a call draws (peelStage in the shaders).
+  enum Stage
+  {
+    Skip = -1,        ///< nothing: a later call of a pass whose stages were not recognized
+    Plain = 0,        ///< the whole volume: not within depth peeling
+    OutsideLayers = 1, ///< before the peels: in front of and behind all translucent layers
+    Peel = 2,         ///< one peel's front and back intervals
+    AlphaBlend = 3    ///< the final blend of what lies between unpeeled layers
+  };
+
+  /// The stage of this call of `mapper` for `vol`. A pass whose stages are not recognized gets
+  /// the whole volume once a frame, in its first call (behind all translucent layers): the pass
+  /// adds itself to the volume's property keys before its stages (vtkOpenGLRenderPass::PreRender)
+  /// and removes itself after, so the keys' modification time is new in each frame's first call.
+  Stage StageOf(vtkAbstractMapper* mapper, vtkVolume* vol);
+  /// Sets the pass's texture uniforms (outerDepthTex, innerDepthTex, lastFrontColorTex,
+  /// opaqueDepthTex, depthRangeTex, as the stage has them) on the bound `program`. Those the
+  /// stage does not have name a 1 x 1 placeholder texture: samplers of different types may not
+  /// share a texture unit, and unset ones all name unit 0. Deactivate() after the draws.
+  void SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkVolume* vol,
+    vtkOpenGLRenderWindow* renWin);
+  void Deactivate();
+  void ReleaseGraphicsResources(vtkWindow* win);
+  /// Images a stage draws: the back interval's and, before the peels and in each peel, the front
+  /// interval's.
+  static int ImagesOf(Stage s) { return s == OutsideLayers || s == Peel ? 2 : 1; }
 
 private:
+  vtkDualDepthPeelingPass* Pass = nullptr; // of the current call; owned by the renderer
   vtkMTimeType FrameKeysTime = 0;
-  bool Peeling = false;
+  vtkNew<vtkTextureObject> Placeholder;
 };
 
 #endif

@@ -19,15 +19,17 @@ PsiRenderTarget::PsiRenderTarget() = default;
 
 namespace
 {
-// Whether a visible prop other than volumes has opaque geometry, within `box` when given.
-bool AnyOpaqueProp(vtkRenderer* ren, const double* box)
+// Whether a visible prop other than volumes has opaque (else translucent) geometry, within `box`
+// when given.
+bool AnyProp(vtkRenderer* ren, const double* box, bool opaque = true)
 {
   vtkPropCollection* props = ren->GetViewProps();
   vtkCollectionSimpleIterator it;
   props->InitTraversal(it);
   while (vtkProp* p = props->GetNextProp(it))
   {
-    if (!p->GetVisibility() || p->IsA("vtkVolume") || !p->HasOpaqueGeometry())
+    if (!p->GetVisibility() || p->IsA("vtkVolume") ||
+      !(opaque ? p->HasOpaqueGeometry() : p->HasTranslucentPolygonalGeometry()))
     {
       continue;
     }
@@ -53,12 +55,17 @@ bool PsiRenderTarget::OpaqueGeometryOverlaps(vtkRenderer* ren, vtkVolume* vol)
 {
   double vb[6];
   vol->GetBounds(vb);
-  return AnyOpaqueProp(ren, vb);
+  return AnyProp(ren, vb);
 }
 
 bool PsiRenderTarget::SceneHasOpaqueGeometry(vtkRenderer* ren)
 {
-  return AnyOpaqueProp(ren, nullptr);
+  return AnyProp(ren, nullptr);
+}
+
+bool PsiRenderTarget::SceneHasTranslucentGeometry(vtkRenderer* ren)
+{
+  return AnyProp(ren, nullptr, false);
 }
 
 PsiRenderTarget::~PsiRenderTarget() = default;
@@ -124,8 +131,28 @@ void PsiRenderTarget::SetShaderParameters(vtkShaderProgram* program)
   program->SetUniform2f("viewportSize", viewport);
 }
 
-void PsiRenderTarget::DrawAndComposite(
-  vtkOpenGLRenderWindow* renWin, const std::function<void()>& drawVolume)
+// The second color attachment, sized as the first, when two images are drawn.
+void PsiRenderTarget::ReserveImages(vtkOpenGLRenderWindow* renWin, int images)
+{
+  if (images < 2)
+  {
+    return;
+  }
+  this->FrontImage->SetContext(renWin);
+  if (static_cast<int>(this->FrontImage->GetWidth()) != this->Size[0] ||
+    static_cast<int>(this->FrontImage->GetHeight()) != this->Size[1] ||
+    !this->FrontImage->GetHandle())
+  {
+    this->FrontImage->SetInternalFormat(GL_RGBA32F);
+    this->FrontImage->SetFormat(GL_RGBA);
+    this->FrontImage->Allocate2D(this->Size[0], this->Size[1], 4, VTK_FLOAT);
+  }
+  this->Framebuffer->AddColorAttachment(1, this->FrontImage);
+}
+
+void PsiRenderTarget::DrawAndComposite(vtkOpenGLRenderWindow* renWin, int images,
+  const std::function<void(int)>& drawImage, int peelStage,
+  const std::function<void(vtkShaderProgram*)>& compositeParameters)
 {
   vtkOpenGLState* ostate = renWin->GetState();
   {
@@ -141,11 +168,10 @@ void PsiRenderTarget::DrawAndComposite(
 
     ostate->PushFramebufferBindings();
     this->Framebuffer->Bind();
-    this->Framebuffer->ActivateDrawBuffer(0);
+    this->ReserveImages(renWin, images);
     ostate->vtkglViewport(0, 0, this->Size[0], this->Size[1]);
     ostate->vtkglDisable(GL_SCISSOR_TEST);
     ostate->vtkglClearColor(0, 0, 0, 0);
-    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
     if (this->DepthTest) // against the scene's opaque geometry
     {
       ostate->vtkglEnable(GL_DEPTH_TEST);
@@ -165,13 +191,21 @@ void PsiRenderTarget::DrawAndComposite(
     glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &equation[1]);
     ostate->vtkglBlendEquation(GL_FUNC_ADD);
     ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    drawVolume();
+    for (int i = 0; i < images; ++i)
+    {
+      this->Framebuffer->ActivateDrawBuffer(i);
+      ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+      drawImage(i);
+    }
     ostate->vtkglBlendEquationSeparate(equation[0], equation[1]);
     ostate->PopFramebufferBindings();
 
-    ostate->vtkglViewport(this->Origin[0], this->Origin[1], this->Size[0], this->Size[1]);
+    // within depth peeling the pass's own framebuffer, at the origin, receives the images
+    const bool own = peelStage > 0;
+    ostate->vtkglViewport(
+      own ? 0 : this->Origin[0], own ? 0 : this->Origin[1], this->Size[0], this->Size[1]);
     ostate->vtkglDisable(GL_DEPTH_TEST);
-    this->Composite(renWin);
+    this->Composite(renWin, images, peelStage, compositeParameters);
   }
   if (this->SampleDepth)
   {
@@ -179,8 +213,10 @@ void PsiRenderTarget::DrawAndComposite(
   }
 }
 
-// The volume image (premultiplied) over the scene, with the blending the caller set.
-void PsiRenderTarget::Composite(vtkOpenGLRenderWindow* renWin)
+// The volume images (premultiplied) into the framebuffer being rendered, with the blending the
+// caller set: over the scene, or into the depth-peeling pass's buffers (PsiCompositeFS.glsl).
+void PsiRenderTarget::Composite(vtkOpenGLRenderWindow* renWin, int images, int peelStage,
+  const std::function<void(vtkShaderProgram*)>& compositeParameters)
 {
   if (!this->CompositeQuad)
   {
@@ -190,13 +226,26 @@ void PsiRenderTarget::Composite(vtkOpenGLRenderWindow* renWin)
   {
     renWin->GetShaderCache()->ReadyShaderProgram(this->CompositeQuad->Program);
   }
-  if (this->CompositeQuad->Program)
+  vtkShaderProgram* program = this->CompositeQuad->Program;
+  if (!program)
   {
-    vtkTextureObject* color = this->Framebuffer->GetColorAttachmentAsTextureObject(0);
-    color->Activate();
-    this->CompositeQuad->Program->SetUniformi("volumeImage", color->GetTextureUnit());
-    this->CompositeQuad->Render();
-    color->Deactivate();
+    return;
+  }
+  vtkTextureObject* back = this->Framebuffer->GetColorAttachmentAsTextureObject(0);
+  back->Activate();
+  program->SetUniformi("volumeImage", back->GetTextureUnit());
+  if (images > 1)
+  {
+    this->FrontImage->Activate();
+    program->SetUniformi("frontImage", this->FrontImage->GetTextureUnit());
+  }
+  program->SetUniformi("peelStage", peelStage);
+  compositeParameters(program);
+  this->CompositeQuad->Render();
+  back->Deactivate();
+  if (images > 1)
+  {
+    this->FrontImage->Deactivate();
   }
 }
 
@@ -208,6 +257,7 @@ void PsiRenderTarget::ReleaseGraphicsResources(vtkWindow* win)
   {
     this->Framebuffer->ReleaseGraphicsResources(win);
     this->Framebuffer = nullptr;
+    this->FrontImage->ReleaseGraphicsResources(win);
   }
   this->CompositeQuad.reset();
   this->Size[0] = this->Size[1] = 0;

@@ -33,6 +33,8 @@ public:
   /// Whether any visible prop other than volumes has opaque geometry (else the scene depth is
   /// the cleared far plane everywhere, and the depth test would reject nothing).
   static bool SceneHasOpaqueGeometry(vtkRenderer* ren);
+  /// Whether any visible prop other than volumes has translucent geometry.
+  static bool SceneHasTranslucentGeometry(vtkRenderer* ren);
   /// Sizes the target to the renderer's tile and copies the scene depth from the framebuffer
   /// being rendered, for the depth test, when the scene has opaque geometry; with `sampleDepth`
   /// also the copy the shaders read. False for an empty tile.
@@ -41,19 +43,27 @@ public:
   void SetShaderParameters(vtkShaderProgram* program);
   /// Width and height of the target in pixels (after CaptureDepthTexture).
   const int* GetSize() const { return this->Size; }
-  /// Clears the float target, runs `drawVolume` into it with blending and the depth test set
-  /// (all GL state restored afterwards), and composites the result over the scene.
-  void DrawAndComposite(vtkOpenGLRenderWindow* renWin, const std::function<void()>& drawVolume);
+  /// For each of `images` float images (1, or 2 within depth peeling: PsiDepthPeelingCalls),
+  /// clears it and runs `drawImage(i)` into it with blending and the depth test set (all GL
+  /// state restored afterwards); then composites the images into the framebuffer being rendered
+  /// (PsiCompositeFS.glsl, for depth-peeling stage `peelStage`; `compositeParameters` sets the
+  /// pass's uniforms on the composite program).
+  void DrawAndComposite(vtkOpenGLRenderWindow* renWin, int images,
+    const std::function<void(int)>& drawImage, int peelStage,
+    const std::function<void(vtkShaderProgram*)>& compositeParameters);
   void ReleaseGraphicsResources(vtkWindow* win);
 
 private:
   PsiRenderTarget(const PsiRenderTarget&) = delete;
   void operator=(const PsiRenderTarget&) = delete;
-  void Composite(vtkOpenGLRenderWindow* renWin);
+  void Composite(vtkOpenGLRenderWindow* renWin, int images, int peelStage,
+    const std::function<void(vtkShaderProgram*)>& compositeParameters);
+  void ReserveImages(vtkOpenGLRenderWindow* renWin, int images);
 
   vtkNew<vtkTextureObject> DepthTexture;
   vtkNew<vtkTextureObject> DepthSampleTexture;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkNew<vtkTextureObject> FrontImage; // the second image, within depth peeling
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   int Size[2] = { 0, 0 };
   int Origin[2] = { 0, 0 };

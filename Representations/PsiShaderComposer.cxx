@@ -5,6 +5,7 @@
 
 #include "PsiAdaptiveFS.h"
 #include "PsiCellGradientGS.h"
+#include "PsiDepthPeelFS.h"
 #include "PsiEarlyDiscardGS.h"
 #include "PsiExactSegmentsFS.h"
 #include "PsiExactSegmentsGS.h"
@@ -236,6 +237,12 @@ bool SeparateOpacityOn(const ShaderFeatures& f)
   return f.SeparateOpacity && f.Silhouette && !f.Adaptive;
 }
 
+// Depth-peeled draws clip the silhouettes' ray segments (the mapper draws silhouettes then).
+bool DepthPeelOn(const ShaderFeatures& f)
+{
+  return f.DepthPeel && f.Silhouette;
+}
+
 // The sections of PsiSeparateOpacityFS.glsl whose sites the other features of `f` leave out.
 std::set<std::string> SeparateOpacitySkips(const ShaderFeatures& f, bool split)
 {
@@ -256,6 +263,10 @@ std::set<std::string> SeparateOpacitySkips(const ShaderFeatures& f, bool split)
   if (!f.NearClip)
   {
     skip.insert("//PSI::SeparateOpacity::NearClip");
+  }
+  if (!DepthPeelOn(f))
+  {
+    skip.insert("//PSI::SeparateOpacity::DepthPeel");
   }
   return skip;
 }
@@ -342,7 +353,7 @@ bool ShaderFeatures::operator==(const ShaderFeatures& o) const
     NearClip == o.NearClip &&
     OpaqueClip == o.OpaqueClip && EarlyDiscard == o.EarlyDiscard && IsoCount == o.IsoCount &&
     IsoSmooth == o.IsoSmooth && IsoTriangles == o.IsoTriangles && Adaptive == o.Adaptive &&
-    SeparateOpacity == o.SeparateOpacity &&
+    SeparateOpacity == o.SeparateOpacity && DepthPeel == o.DepthPeel &&
     MaxAdaptiveNodes == o.MaxAdaptiveNodes && MaxLights == o.MaxLights;
 }
 
@@ -383,6 +394,10 @@ std::string ShaderFeatures::Defines() const
   if (SeparateOpacityOn(*this))
   {
     d += "#define PSI_SEPARATE_OPACITY\n";
+  }
+  if (DepthPeelOn(*this))
+  {
+    d += "#define PSI_DEPTH_PEEL\n";
   }
   if (Adaptive)
   {
@@ -533,6 +548,11 @@ ShaderSources ComposeShaders(const ShaderFeatures& f, const char* integratorSour
   if (isoTriangles)
   {
     Apply(fs, PsiIsoTrianglesFS);
+  }
+  if (DepthPeelOn(f))
+  {
+    Apply(fs, PsiDepthPeelFS, isoTriangles ? std::set<std::string>{}
+                                           : std::set<std::string>{ "//PSI::DepthPeel::Surface" });
   }
   if (split)
   {

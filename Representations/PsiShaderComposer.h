@@ -53,6 +53,9 @@ struct PSIVOLUMEREPRESENTATIONS_EXPORT ShaderFeatures
   /// Opacity from a second scalar per point (ParaView's separate opacity array,
   /// PsiSeparateOpacity*.glsl); needs Silhouette, and not Adaptive.
   bool SeparateOpacity = false;
+  /// Drawn within VTK's dual depth peeling: each draw integrates the segments' parts inside a
+  /// depth interval the pass gives per pixel (PsiDepthPeelFS.glsl); needs Silhouette.
+  bool DepthPeel = false;
   int MaxAdaptiveNodes = 64;
   int MaxLights = 8;
 

@@ -57,12 +57,14 @@ struct vtkPsiVolumeMapper::Internals
   PsiGeometryProjector Geometry;
   PsiComputeProjector Compute;
   PsiDepthPeelingCalls Peeling;
+  PsiDepthPeelingCalls::Stage PeelStage = PsiDepthPeelingCalls::Plain; // of this call
 
   // Transfer-function nodes for adaptive sampling, for the property and range they came from.
   PsiAdaptiveNodes AdaptiveNodes;
 
   std::string LastWarning;
   std::string LastFeatureNote; // what a separate opacity array changed, said once
+  bool NotedTranslucent = false; // translucent geometry outside depth peeling, said once
   vtkWindow* Context = nullptr;
 
   void Release(vtkWindow* win)
@@ -73,6 +75,7 @@ struct vtkPsiVolumeMapper::Internals
       this->Order.ReleaseGraphicsResources(win);
     }
     this->Tables.ReleaseGraphicsResources(win);
+    this->Peeling.ReleaseGraphicsResources(win);
     this->Target.ReleaseGraphicsResources(win);
     this->Geometry.ReleaseGraphicsResources();
     this->Compute.ReleaseGraphicsResources(win);
@@ -118,10 +121,12 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   Internals& I = *this->Impl;
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   vtkUnstructuredGridBase* input = this->GetInput();
-  if (!renWin || !input || !I.Peeling.DrawThisCall(vol))
+  I.PeelStage = I.Peeling.StageOf(this, vol);
+  if (!renWin || !input || I.PeelStage == PsiDepthPeelingCalls::Skip)
   {
-    return; // (within depth peeling, drawn once a frame: PsiDepthPeelingCalls)
+    return;
   }
+  this->NoteTranslucentGeometry(ren);
   // an optical depth needs a positive unit distance: like 'Projected tetra', draw nothing
   const std::string badUnit = psi::UnitDistanceProblem(vol->GetProperty());
   if (badUnit != I.LastWarning && !badUnit.empty())
@@ -167,6 +172,23 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   this->Stats.LastRenderSeconds = SecondsSince(t0);
 }
 
+// Outside VTK's dual depth peeling for volumes, translucent geometry is drawn before all volumes:
+// a surface in front of or inside the volume cannot be intermixed. Said once while it lasts.
+void vtkPsiVolumeMapper::NoteTranslucentGeometry(vtkRenderer* ren)
+{
+  Internals& I = *this->Impl;
+  const bool translucent = I.PeelStage == PsiDepthPeelingCalls::Plain &&
+    PsiRenderTarget::SceneHasTranslucentGeometry(ren);
+  if (translucent && !I.NotedTranslucent)
+  {
+    vtkWarningMacro("Psi Volume: translucent geometry is drawn before volumes unless the view "
+                    "peels volumes too (ParaView: the view's DepthPeelingForVolumes; VTK: the "
+                    "renderer's UseDepthPeeling and UseDepthPeelingForVolumes); a surface in "
+                    "front of or inside the volume is then covered by it.");
+  }
+  I.NotedTranslucent = translucent;
+}
+
 // Projects and draws the volume with the chosen projector: the geometry-shader program, or the
 // compute projector's projection pass and draw program.
 void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren,
@@ -191,11 +213,24 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   }
   if (draw)
   {
-    I.Target.DrawAndComposite(renWin, [&]() {
+    const int images = PsiDepthPeelingCalls::ImagesOf(I.PeelStage);
+    auto drawImage = [&](int image) {
+      if (features.DepthPeel)
+      {
+        renWin->GetShaderCache()->ReadyShaderProgram(draw); // the fragment shader's program
+        draw->SetUniformi("peelStage", I.PeelStage);
+        draw->SetUniformi("peelRange", image);
+        I.Peeling.SetShaderParameters(draw, this, vol, renWin);
+      }
       compute ? I.Compute.Draw(renWin, I.Order.GetIndexBuffer(), I.Order.GetSize(),
                   I.Mesh.GetTetBuffer())
               : I.Geometry.Draw(I.Order);
-    });
+    };
+    I.Target.DrawAndComposite(renWin, images, drawImage, I.PeelStage,
+      [&](vtkShaderProgram* composite) {
+        I.Peeling.SetShaderParameters(composite, this, vol, renWin);
+      });
+    I.Peeling.Deactivate();
   }
   I.Mesh.Deactivate();
   this->DeactivateTables(features);
@@ -300,7 +335,9 @@ psi::ShaderFeatures vtkPsiVolumeMapper::ChooseFeatures(
   psi::ShaderFeatures f;
   f.Method = this->DrawnMethod();
   f.ExactSegments = !cam.Parallel && this->ExactPerspectiveSegments;
-  f.Silhouette = psi::SilhouetteChosen(this->Decomposition);
+  // within depth peeling, the silhouettes' exact segments are clipped to the pass's intervals
+  f.DepthPeel = I.PeelStage > PsiDepthPeelingCalls::Plain;
+  f.Silhouette = psi::SilhouetteChosen(this->Decomposition) || f.DepthPeel;
   f.NearClip = cam.NearPlaneCuts(I.Mesh.GetMesh().Bounds);
   f.OpaqueClip = PsiRenderTarget::OpaqueGeometryOverlaps(ren, vol);
   f.IsoCount = this->Isosurfaces.Count();

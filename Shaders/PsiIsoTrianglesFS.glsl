@@ -38,6 +38,7 @@ bool clipToPiece(inout float sf, inout float sb, inout float D)
   if (piece < 0.0)
   {
     // An isosurface fragment (hidden by opaque geometry through the depth test).
+//PSI::DepthPeel::Surface
     vec3 p = viewPointAt(gl_FragCoord.z);
     vec3 dir = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : normalize(p);
     vec3 n = surfaceNormal();

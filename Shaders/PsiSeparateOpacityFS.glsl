@@ -27,6 +27,11 @@ float opacityFront = 0.0, opacityBack = 0.0; // the opacity scalar at the segmen
   opacityFront = oPiece0;
   opacityBack = oPiece1;
 
+//PSI::SeparateOpacity::DepthPeel
+  float oPeel0 = mix(opacityFront, opacityBack, t0), oPeel1 = mix(opacityFront, opacityBack, t1);
+  opacityFront = oPeel0;
+  opacityBack = oPeel1;
+
 //PSI::SeparateOpacity::SplitInit
   float splitOpacityFront = opacityFront, splitOpacityBack = opacityBack;
 

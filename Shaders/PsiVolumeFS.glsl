@@ -45,6 +45,7 @@ vec3 viewPointAt(float depth)
 //PSI::IsoPerFragment::Dec
 //PSI::Adaptive::Dec
 //PSI::SegmentSplit::Dec
+//PSI::DepthPeel::Dec
 
 // Writes the segment's premultiplied color.
 void writeColor(vec4 c)
@@ -68,6 +69,7 @@ void main()
   // Fragments behind opaque geometry are rejected by the depth test against the scene's depth.
 //PSI::SceneDepth::Impl
 //PSI::OpaqueClip::Impl
+//PSI::DepthPeel::Impl
 //PSI::IsoTriangles::Impl
 //PSI::SegmentSplit::Integrate
   writeColor(integrateSegment(sf, sb, max(D, 0.0)));

@@ -45,3 +45,18 @@ target_link_libraries(TestPsiVisibilityOrder PRIVATE PsiVolume::Representations 
 vtk_module_autoinit(TARGETS TestPsiVisibilityOrder MODULES VTK::RenderingOpenGL2)
 add_test(NAME PsiVisibilityOrder COMMAND TestPsiVisibilityOrder)
 set_tests_properties(PsiVisibilityOrder PROPERTIES TIMEOUT 120)
+
+# Translucent geometry intermixed with the volume through VTK's dual depth peeling, against the
+# reference ray caster compositing the surfaces' layers.
+add_executable(TestPsiTranslucentGeometry Cxx/TestPsiTranslucentGeometry.cxx)
+target_link_libraries(TestPsiTranslucentGeometry PRIVATE PsiVolume::Representations
+  PsiTestSupport VTK::RenderingOpenGL2 VTK::FiltersSources VTK::ImagingCore VTK::IOImage
+  VTK::RenderingCore)
+vtk_module_autoinit(TARGETS TestPsiTranslucentGeometry MODULES VTK::RenderingOpenGL2)
+add_test(NAME PsiTranslucentGeometry
+  COMMAND TestPsiTranslucentGeometry "${CMAKE_BINARY_DIR}/Testing/Images")
+set_tests_properties(PsiTranslucentGeometry PROPERTIES TIMEOUT 300
+  ENVIRONMENT "PSI_PROJECTOR=geometry")
+add_test(NAME PsiTranslucentGeometry.compute COMMAND TestPsiTranslucentGeometry)
+set_tests_properties(PsiTranslucentGeometry.compute PROPERTIES TIMEOUT 300
+  ENVIRONMENT "PSI_PROJECTOR=compute")

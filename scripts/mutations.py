@@ -19,6 +19,7 @@ DEGENERATE_FAN = ["PsiDegenerateProjections.fan"]
 GEOMETRY_FAN = DEGENERATE_FAN + ["PsiVolumeRender.fan"]
 SEPARATE = ["PsiPython.separate_opacity"]
 TRANSLUCENT = ["PsiPython.translucent_geometry"]
+PEELED = ["PsiTranslucentGeometry"]
 
 MUTATIONS = [
     # --- Integrators (Shaders/PsiIntegrate*.glsl): Moreland & Angel 2004; Moreland's dissertation.
@@ -161,7 +162,23 @@ MUTATIONS = [
     # --- Translucent geometry with depth peeling for volumes (Representations/PsiDepthPeelingCalls,
     # PsiRenderTarget).
     Mutation("peeling_drawn_every_stage", "Representations/PsiDepthPeelingCalls.cxx",
-             "  return first;", "  return true;", TRANSLUCENT),
+             "  return first ? Plain : Skip;", "  return Plain;", TRANSLUCENT),
+    Mutation("peeling_stages_ignored", "Representations/PsiDepthPeelingCalls.cxx",
+             "  const Stage stage = ReplacedStage(this->Pass, mapper, vol);",
+             "  const Stage stage = Skip;", PEELED),
+    Mutation("peeling_front_not_under_layers", "Shaders/PsiCompositeFS.glsl",
+             "    gl_FragData[1] = vec4(layers.rgb + t * front.rgb, 1.0 - t * (1.0 - front.a));",
+             "    gl_FragData[1] = front;", PEELED),
+    Mutation("peeling_interval_start_ignored", "Shaders/PsiDepthPeelFS.glsl",
+             "float a = max(tIn, rayTAtDepth(range.x))", "float a = tIn", PEELED),
+    Mutation("peeling_back_interval_from_front", "Shaders/PsiDepthPeelFS.glsl",
+             "vec2 front = vec2(-outer.x, -inner.x), back = vec2(inner.y, outer.y);",
+             "vec2 front = vec2(-outer.x, -inner.x), back = vec2(-outer.x, outer.y);", PEELED),
+    Mutation("opaque_props_without_data", "Representations/PsiRenderTarget.cxx",
+             "    if (!b || !vtkMath::AreBoundsInitialized(b))", "    if (!b)", GL),
+    Mutation("pixel_ray_origin_fixed", "Shaders/PsiRaySegmentsFS.glsl",
+             "  rayOrigin = pixelRayOrigin[0] + x.x * pixelRayOrigin[1] + x.y * pixelRayOrigin[2];",
+             "  rayOrigin = pixelRayOrigin[0];", GL),
     Mutation("peeling_blend_equation_kept", "Representations/PsiRenderTarget.cxx",
              "    ostate->vtkglBlendEquation(GL_FUNC_ADD);\n", "", TRANSLUCENT),
     # --- Near-plane clipping, opaque clipping, scene depth.

@@ -117,6 +117,9 @@ void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
     { &fs, "vec3 gO = toGradient", separate && f.NearClip },
     { &fs, "opacityFront = mix(splitOpacityFront", separate && (f.Adaptive || perFragment) },
     { &fs, "float oPiece0", separate && tri },
+    { &fs, "vec2 peelDepthRange()", f.DepthPeel && sil },
+    { &fs, "float oPeel0", f.DepthPeel && sil && separate },
+    { &fs, "vec2 surfaceRange = peelDepthRange();", f.DepthPeel && sil && tri },
     { &gs, "uniform float nearZ;", f.NearClip },
     { &gs, "flat out ivec4 clipTet;", f.NearClip },
     { &fs, "flat in ivec4 clipTet;", f.NearClip },
@@ -192,6 +195,10 @@ int main(int argc, char* argv[])
         if (segments == 2)
         {
           all.push_back(Make(method, 2, bits & 2, bits & 4, bits & 8, iso, bits & 16, 3, true));
+          psi::ShaderFeatures peel =
+            Make(method, 2, bits & 2, bits & 4, bits & 8, iso, bits & 16, 3, bits & 1);
+          peel.DepthPeel = true; // within VTK's dual depth peeling
+          all.push_back(peel);
         }
       }
     }
@@ -289,6 +296,18 @@ int main(int argc, char* argv[])
   for (int iso = 1; iso < 5; ++iso)
   {
     compile.push_back(Make(1, 2, true, true, true, iso, false, 3, true));
+  }
+  // Depth peeling: every method with every other feature on, each isosurface mode, with and
+  // without a separate opacity array.
+  for (int method = 0; method < 7; ++method)
+  {
+    compile.push_back(Make(method, 2, true, true, true, 0, method % 2, 3, method % 3 == 0));
+    compile.back().DepthPeel = true;
+  }
+  for (int iso = 1; iso < 5; ++iso)
+  {
+    compile.push_back(Make(1, 2, true, true, true, iso, false, 3, iso % 2));
+    compile.back().DepthPeel = true;
   }
 
   vtkNew<vtkRenderWindow> rw;

@@ -1,16 +1,19 @@
 """A translucent surface in the view of a 'Psi Volume', with depth peeling for volumes on
 (ParaView's default DepthPeelingForVolumes) and off.
 
-VTK's dual depth peeling renders a volume once per stage of each frame; 'Psi Volume' draws once,
-in the first, behind the translucent layers (Representations/PsiDepthPeelingCalls.h). Before,
-it was blended in at every stage: a stipple of lines over the whole volume, also where no
-surface covers it (mean 127/255 off in check 1).
+VTK's dual depth peeling renders a volume once per stage of each frame; 'Psi Volume' integrates
+in each only the depth intervals the stage asks for (Representations/PsiDepthPeelingCalls.h).
+Once it was blended in whole at every stage: a stipple of lines over the whole volume, also
+where no surface covers it (mean 127/255 off in check 1). The exact intermixing of surfaces in
+front of, behind and inside the volume is measured against the reference ray caster in
+Testing/Cxx/TestPsiTranslucentGeometry.cxx; here ParaView's view checks the same compositing.
 
 1. A translucent sphere beside the volume: the volume's pixels are those of the volume alone.
-2. A translucent sphere in front of the volume (unlit, color (1, 0.5, 0.25), opacity 0.5): the
+2. A translucent sphere behind the volume: the volume over the sphere's own image S,
+   V + (1 - A_V) S, the volume's transparency read from its image over a white background.
+3. A translucent sphere in front of the volume (unlit, color (1, 0.5, 0.25), opacity 0.5): the
    image is the sphere's own image S over the volume's V, S + (1 - A) V, with the sphere's
-   coverage A read from its red channel (color 1).
-A surface behind or inside the volume is still drawn over it (README, Known limitations)."""
+   coverage A read from its red channel (color 1)."""
 import os
 import sys
 
@@ -36,9 +39,9 @@ volume = psi_testing.grab(view)
 t.check(psi_testing.covered(volume, [0, 0, 0]) > 5000, "the volume alone is drawn")
 
 
-def with_sphere(center, peel, show_volume=True):
+def with_sphere(center, peel, show_volume=True, radius=3.0):
     """The view with a translucent unlit sphere at `center` (and the volume unless hidden)."""
-    s = simple.Sphere(Center=center, Radius=3.0, ThetaResolution=32, PhiResolution=32)
+    s = simple.Sphere(Center=center, Radius=radius, ThetaResolution=32, PhiResolution=32)
     sd = simple.Show(s, view)
     sd.ColorArrayName = ["POINTS", ""]
     sd.AmbientColor = sd.DiffuseColor = [1.0, 0.5, 0.25]
@@ -65,6 +68,21 @@ for peel in (1, 0):
             "%s, sphere beside: the volume's pixels are unchanged (mean %.3f/255)"
             % (mode, off.mean()))
     if peel:
+        # Behind the volume: V + (1 - A_V) S, with the volume's transparency 1 - A_V read from
+        # the volume over a white background.
+        view.Background = [1.0, 1.0, 1.0]
+        simple.Render(view)
+        transparency = np.clip(psi_testing.grab(view) - volume, 0.0, 255.0) / 255.0
+        view.Background = [0.0, 0.0, 0.0]
+        behind = with_sphere([0.0, 0.0, -20.0], peel, radius=6.0)
+        sphere = with_sphere([0.0, 0.0, -20.0], peel, show_volume=False, radius=6.0)
+        expected = volume + transparency * sphere
+        err = np.abs(behind - expected)
+        print("%s, sphere behind: against V + (1 - A_V) S mean %.3f, 99th percentile %.0f"
+              % (mode, err.mean(), np.percentile(err, 99)))
+        t.check(psi_testing.covered(sphere, [0, 0, 0]) > 1000 and err.mean() < 0.5 and
+                np.percentile(err, 99) <= 8,
+                "%s, sphere behind: seen through the volume (mean %.3f/255)" % (mode, err.mean()))
         front = with_sphere([0.0, 0.0, 20.0], peel)
         sphere = with_sphere([0.0, 0.0, 20.0], peel, show_volume=False)
         cover = sphere[..., 0:1] / 255.0

@@ -90,6 +90,49 @@ TetGeometry MakeTet(const ReferenceScene& sc, const std::array<int, 4>& t)
 }
 } // namespace
 
+namespace
+{
+struct Layer
+{
+  double T;
+  Rgba Color; // premultiplied
+};
+
+// The crossings of the ray o + t d (0 < t < tMax) with the surfaces' triangles, nearest first
+// (Moeller and Trumbore's ray/triangle test).
+std::vector<Layer> SurfaceLayers(
+  const ReferenceScene& sc, const Vec3& o, const Vec3& d, double tMax)
+{
+  std::vector<Layer> layers;
+  for (const ReferenceSurface& surface : sc.Surfaces)
+  {
+    const Rgba c{ { surface.Opacity * surface.Color[0], surface.Opacity * surface.Color[1],
+      surface.Opacity * surface.Color[2], surface.Opacity } };
+    for (const auto& tri : surface.Triangles)
+    {
+      const Vec3 e1 = Sub(tri[1], tri[0]), e2 = Sub(tri[2], tri[0]);
+      const Vec3 p = CrossP(d, e2);
+      const double det = Dot(e1, p);
+      if (std::abs(det) < 1e-300)
+      {
+        continue;
+      }
+      const Vec3 s = Sub(o, tri[0]);
+      const double u = Dot(s, p) / det;
+      const Vec3 q = CrossP(s, e1);
+      const double v = Dot(d, q) / det;
+      const double t = Dot(e2, q) / det;
+      if (u >= 0 && v >= 0 && u + v <= 1 && t > 0 && t < tMax)
+      {
+        layers.push_back({ t, c });
+      }
+    }
+  }
+  std::sort(layers.begin(), layers.end(), [](const Layer& a, const Layer& b) { return a.T < b.T; });
+  return layers;
+}
+} // namespace
+
 std::vector<double> RenderReference(const ReferenceScene& sc, const ReferenceCamera& cam)
 {
   const int W = cam.Width, H = cam.Height;
@@ -253,6 +296,14 @@ std::vector<double> RenderReference(const ReferenceScene& sc, const ReferenceCam
         tOpaque = std::sqrt(Dot(Sub(q, o), Sub(q, o)));
       }
       Rgba acc{ { 0, 0, 0, 0 } };
+      const std::vector<Layer> layers = SurfaceLayers(sc, o, d, std::min(len, tOpaque));
+      size_t nextLayer = 0;
+      auto layersUpTo = [&](double t) {
+        for (; nextLayer < layers.size() && layers[nextLayer].T <= t; ++nextLayer)
+        {
+          acc = Over(acc, layers[nextLayer].Color);
+        }
+      };
       for (const Piece& p : list)
       {
         if (p.t0 >= tOpaque || acc[3] > 1 - 1e-12)
@@ -269,10 +320,18 @@ std::vector<double> RenderReference(const ReferenceScene& sc, const ReferenceCam
         {
           ts.push_back(p.t0 + (t1 - p.t0) * (*it - p.s0) / (s1 - p.s0));
         }
+        for (const Layer& layer : layers)
+        {
+          if (layer.T > p.t0 && layer.T < t1)
+          {
+            ts.push_back(layer.T);
+          }
+        }
         ts.push_back(t1);
         std::sort(ts.begin(), ts.end());
         for (size_t k = 0; k + 1 < ts.size(); ++k)
         {
+          layersUpTo(ts[k]);
           const double sa = p.s0 + (s1 - p.s0) * (ts[k] - p.t0) / (t1 - p.t0);
           const double sb = p.s0 + (s1 - p.s0) * (ts[k + 1] - p.t0) / (t1 - p.t0);
           double f[4], b[4];
@@ -288,6 +347,7 @@ std::vector<double> RenderReference(const ReferenceScene& sc, const ReferenceCam
           acc = Over(acc, c);
         }
       }
+      layersUpTo(tOpaque);
       Vec3 behind = cam.Background;
       if (!cam.OpaqueColor.empty() && !cam.OpaqueDepth.empty() && cam.OpaqueDepth[px] < 1.0f)
       {

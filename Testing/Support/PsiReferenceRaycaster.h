@@ -6,7 +6,8 @@
 // clipping in double precision). Within a tetrahedron the scalar is linear along the ray; the
 // segment is split at every transfer-function breakpoint, so color and attenuation are linear on
 // each piece and the piece is integrated exactly (Moreland & Angel 2004 Eq. 7 with Psi by quadrature,
-// psi::Psi). Pieces are composited front to back, then over the background.
+// psi::Psi). Pieces are composited front to back, then over the background. Translucent surface
+// layers are composited at their depths, the segments split there.
 #ifndef PsiReferenceRaycaster_h
 #define PsiReferenceRaycaster_h
 
@@ -19,6 +20,16 @@
 namespace psi
 {
 
+/// A translucent unlit surface: where a ray crosses one of its triangles, the layer
+/// (Opacity * Color, Opacity) is composited at that depth, between the volume in front of it and
+/// the volume behind it.
+struct ReferenceSurface
+{
+  std::vector<std::array<std::array<double, 3>, 3>> Triangles; ///< world coordinates
+  std::array<double, 3> Color{ { 1, 1, 1 } };
+  double Opacity = 0.5;
+};
+
 struct ReferenceScene
 {
   std::vector<std::array<double, 3>> Points; ///< world coordinates
@@ -28,6 +39,8 @@ struct ReferenceScene
   std::function<void(double s, double rgbTau[4])> Transfer;
   /// Scalars where the transfer function is not linear (control points, table samples).
   std::vector<double> Breakpoints;
+  /// Translucent surfaces intermixed with the volume.
+  std::vector<ReferenceSurface> Surfaces;
 };
 
 struct ReferenceCamera
