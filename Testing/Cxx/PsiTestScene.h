@@ -257,10 +257,12 @@ struct Result
 };
 
 /// Renders the current scene, then the same camera with the CPU reference; compares (mean and
-/// max absolute error of 8-bit channels in [0, 1], covered pixels). With `outDir`, writes the GPU
-/// image, the reference and 8x their difference as PNG.
+/// max absolute error of 8-bit channels in [0, 1], covered pixels). `opaque` geometry is captured
+/// (depth and color) without the volume and the `translucent` props. With `outDir`, writes the
+/// GPU image, the reference and 8x their difference as PNG.
 inline Result Compare(const std::string& name, vtkRenderWindow* win, vtkRenderer* ren, vtkVolume* vol,
-  const psi::ReferenceScene& refScene, vtkActor* opaque, const std::string& outDir)
+  const psi::ReferenceScene& refScene, vtkActor* opaque, const std::string& outDir,
+  const std::vector<vtkProp*>& translucent = {})
 {
   const int W = win->GetSize()[0], H = win->GetSize()[1];
   psi::ReferenceCamera cam = ReferenceCameraOf(ren, W, H);
@@ -269,6 +271,10 @@ inline Result Compare(const std::string& name, vtkRenderWindow* win, vtkRenderer
   if (opaque)
   {
     vol->VisibilityOff();
+    for (vtkProp* p : translucent) // the reference composites those itself
+    {
+      p->VisibilityOff();
+    }
     win->Render();
     std::vector<float> z(W * H);
     win->GetZbufferData(0, 0, W - 1, H - 1, z.data());
@@ -284,6 +290,10 @@ inline Result Compare(const std::string& name, vtkRenderWindow* win, vtkRenderer
       }
     }
     vol->VisibilityOn();
+    for (vtkProp* p : translucent)
+    {
+      p->VisibilityOn();
+    }
   }
   const std::vector<double> gpu = GrabRGB(win);
   const std::vector<double> ref = psi::RenderReference(refScene, cam);

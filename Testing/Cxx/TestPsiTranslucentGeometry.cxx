@@ -166,6 +166,25 @@ int main(int argc, char* argv[])
       }
     }
   }
+  // Opaque geometry through the volume and a translucent sphere through both: the intervals end
+  // at the opaque surface (before the peels: behind the layers up to it; in a peel: the front
+  // interval clamped to it).
+  {
+    cam->SetParallelProjection(false);
+    ren->ResetCameraClippingRange(-20, 20, -20, 20, -20, 20);
+    psi::ReferenceScene ref = psitest::MakeReferenceScene(grid, color, opacity, 2.0);
+    vtkSmartPointer<vtkActor> sphere = MakeSphere(cases[2].Spheres[0], ref);
+    vtkSmartPointer<vtkActor> plane = psitest::MakeOpaquePlane(6.0);
+    ren->AddActor(sphere);
+    ren->AddActor(plane);
+    const psitest::Result res = psitest::Compare(
+      "sphere_and_opaque_plane", view.Window, ren, view.Volume, ref, plane, outDir, { sphere });
+    PSI_CHECK(res.Mean < 0.004 && res.Outliers < 0.002,
+      "sphere and opaque plane: mean error %g, %g%% over 0.05", res.Mean, 100 * res.Outliers);
+    ren->RemoveActor(sphere);
+    ren->RemoveActor(plane);
+  }
+
   // Peeling stopped after one peel: the two inner layers and the volume between them are left to
   // the pass's final alpha blend, which composites them in draw order (VTK's approximation), so
   // the image differs from the exact one only inside the inner sphere, by about one layer.
