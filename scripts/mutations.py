@@ -161,8 +161,6 @@ MUTATIONS = [
              "dmin = smin;", SEPARATE),
     # --- Translucent geometry with depth peeling for volumes (Representations/PsiDepthPeelingCalls,
     # PsiRenderTarget).
-    Mutation("peeling_drawn_every_stage", "Representations/PsiDepthPeelingCalls.cxx",
-             "  return first ? Plain : Skip;", "  return Plain;", TRANSLUCENT),
     Mutation("peeling_stages_ignored", "Representations/PsiDepthPeelingCalls.cxx",
              "  const Stage stage = ReplacedStage(this->Pass, mapper, vol);",
              "  const Stage stage = Skip;", PEELED),
@@ -171,6 +169,8 @@ MUTATIONS = [
              "    gl_FragData[1] = front;", PEELED),
     Mutation("peeling_interval_start_ignored", "Shaders/PsiDepthPeelFS.glsl",
              "float a = max(tIn, rayTAtDepth(range.x))", "float a = tIn", PEELED),
+    Mutation("peeling_back_interval_dropped", "Shaders/PsiDepthPeelFS.glsl",
+             "  return endBehindOpaque || noInner ? none : back;", "  return none;", PEELED),
     Mutation("peeling_back_interval_from_front", "Shaders/PsiDepthPeelFS.glsl",
              "vec2 front = vec2(-outer.x, -inner.x), back = vec2(inner.y, outer.y);",
              "vec2 front = vec2(-outer.x, -inner.x), back = vec2(-outer.x, outer.y);", PEELED),
