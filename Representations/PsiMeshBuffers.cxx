@@ -32,12 +32,25 @@ vtkMTimeType GeometryTimeOf(vtkUnstructuredGridBase* input)
   return std::max({ ug->GetPoints()->GetMTime(), ug->GetCells()->GetMTime(),
     ug->GetCellTypesArray()->GetMTime() });
 }
+
+// The objects that hold the points and cells. A new time step of the same mesh is often a new
+// dataset object sharing them (ParaView's representations hand the mapper a new copy each time),
+// so the dataset's own identity would re-gather the mesh and re-sort it for new scalars only.
+std::array<const void*, 3> GeometryOf(vtkUnstructuredGridBase* input)
+{
+  vtkUnstructuredGrid* ug = vtkUnstructuredGrid::SafeDownCast(input);
+  if (!ug || !ug->GetPoints() || !ug->GetCells() || !ug->GetCellTypesArray())
+  {
+    return { { input, nullptr, nullptr } };
+  }
+  return { { ug->GetPoints(), ug->GetCells(), ug->GetCellTypesArray() } };
+}
 } // namespace
 
 PsiMeshBuffers::Change PsiMeshBuffers::NeedsUpdate(
   vtkUnstructuredGridBase* input, vtkDataArray* scalars, const std::string& arrayKey) const
 {
-  if (!this->OnGPU || input != this->Input || arrayKey != this->ArrayKey ||
+  if (!this->OnGPU || GeometryOf(input) != this->Geometry || arrayKey != this->ArrayKey ||
     GeometryTimeOf(input) != this->GeometryTime)
   {
     return Change::Mesh;
@@ -83,7 +96,7 @@ bool PsiMeshBuffers::Update(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBa
   this->Mesh = psi::GatherTetMesh(input, scalars, cellScalars, component);
   this->GeometryTime = GeometryTimeOf(input);
   this->ScalarsTime = scalars->GetMTime();
-  this->Input = input;
+  this->Geometry = GeometryOf(input);
   this->ArrayKey = arrayKey;
   ++this->Version;
   bool fits = true;

@@ -12,6 +12,7 @@
 #include "vtkNew.h"
 #include "vtkType.h"
 
+#include <array>
 #include <string>
 
 class vtkDataArray;
@@ -72,7 +73,7 @@ private:
   int Version = 0;
   vtkMTimeType GeometryTime = 0;
   vtkMTimeType ScalarsTime = 0;
-  const void* Input = nullptr;
+  std::array<const void*, 3> Geometry{}; // the objects holding points and cells (GeometryOf)
   std::string ArrayKey;
   vtkNew<vtkOpenGLBufferObject> PointsBuffer;
   vtkNew<vtkTextureObject> PointsTexture;

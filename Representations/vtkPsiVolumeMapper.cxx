@@ -471,6 +471,11 @@ void vtkPsiVolumeMapper::DeactivateTables(const psi::ShaderFeatures& f)
     MethodInfo(f.Method).NeedsPreIntegrationTable);
 }
 
+int vtkPsiVolumeMapper::GetMeshVersion() const
+{
+  return this->Impl->Mesh.GetVersion();
+}
+
 const std::vector<uint32_t>& vtkPsiVolumeMapper::GetLastDrawOrder() const
 {
   return this->Impl->Order.GetOrder();

@@ -238,6 +238,8 @@ public:
   /// The tetrahedra in the order the last frame drew them (farthest first; ids of the gathered
   /// mesh, which are the input's cell ids when every cell is a drawable tetrahedron).
   const std::vector<uint32_t>& GetLastDrawOrder() const;
+  /// Bumped when the mesh is gathered again (points or cells changed), not for new scalars.
+  int GetMeshVersion() const;
   /// Zeroes the read-outs above (no frame drawn, e.g. empty input).
   void ResetStatistics();
   /// Whether the last frame needed the near-plane path (camera inside or close to the mesh).

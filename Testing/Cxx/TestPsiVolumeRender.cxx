@@ -213,6 +213,31 @@ int main(int argc, char* argv[])
     outside();
   }
 
+  // A new time step of the same mesh: a new dataset sharing the points and cells (as ParaView's
+  // representations hand it over), with new scalars. Only the scalars are uploaded again: the
+  // mesh is not gathered again (nor sorted), and the image is the new scalars' reference.
+  {
+    win->Render();
+    const int version = mapper->GetMeshVersion();
+    vtkNew<vtkUnstructuredGrid> step;
+    step->ShallowCopy(s.Grid);
+    vtkNew<vtkFloatArray> scaled;
+    vtkDataArray* rt = s.Grid->GetPointData()->GetScalars();
+    scaled->SetName(rt->GetName());
+    scaled->SetNumberOfTuples(rt->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < rt->GetNumberOfTuples(); ++i)
+    {
+      scaled->SetValue(i, static_cast<float>(1.1 * rt->GetComponent(i, 0)));
+    }
+    step->GetPointData()->SetScalars(scaled);
+    mapper->SetInputData(step);
+    const Result r = Compare("time_step", win, ren, vol,
+      psitest::MakeReferenceScene(step, s.Color, s.Opacity, 1.5), nullptr, outDir);
+    PSI_CHECK(mapper->GetMeshVersion() == version, "a time step gathered the mesh again");
+    PSI_CHECK(r.Mean < 0.006 && r.Max < 0.05, "time step: mean error %g, max %g", r.Mean, r.Max);
+    mapper->SetInputData(s.Grid);
+  }
+
   // A mesh of ten draw chunks (PsiVisibilityOrder::Draw streams 16,384 tetrahedra per draw, at
   // most 8 in flight): every chunk is drawn, in order, after the waits.
   {
