@@ -23,7 +23,7 @@ double Psi(double taubD, double taufD)
   // On [0, umax] the exponent runs monotonically from 0 to at most 42: the integrand is smooth and
   // a fixed 30-point Gauss-Legendre rule is exact to ~1e-15 (measured against adaptive
   // long-double quadrature over the whole gamma domain) at a fixed cost, which is what makes a
-  // 1024^2 table take a fraction of a second.
+  // 512^2 table take a few hundredths of a second.
   auto f = [b, c](double u) { return std::exp(-(b * u + c * u * u)); };
   return boost::math::quadrature::gauss<double, 30>::integrate(f, 0.0, umax);
 }

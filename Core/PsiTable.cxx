@@ -72,7 +72,7 @@ PsiTable BuildPsiTable(int n)
 const PsiTable& GetDefaultPsiTable()
 {
   static const PsiTable table = [] {
-    int n = 1024;
+    int n = 512;
     if (const char* e = std::getenv("PSI_TABLE_SIZE"))
     {
       n = std::max(2, std::atoi(e));
