@@ -1,5 +1,8 @@
 #include "PsiDepthPeelingCalls.h"
 
+#include "PsiRenderTarget.h"
+
+#include "vtkAbstractMapper.h"
 #include "vtkDualDepthPeelingPass.h"
 #include "vtkInformation.h"
 #include "vtkInformationObjectBaseVectorKey.h"
@@ -67,7 +70,7 @@ PsiDepthPeelingCalls::Stage PsiDepthPeelingCalls::StageOf(
   this->Pass = VolumePeelingPass(keys);
   if (!this->Pass)
   {
-    return Plain;
+    return this->LastStage = Plain;
   }
   const vtkMTimeType t = keys->GetMTime();
   const bool first = t != this->FrameKeysTime;
@@ -75,10 +78,25 @@ PsiDepthPeelingCalls::Stage PsiDepthPeelingCalls::StageOf(
   const Stage stage = ReplacedStage(this->Pass, mapper, vol);
   if (stage != Skip)
   {
-    return stage;
+    return this->LastStage = stage;
   }
   this->Pass = nullptr;
-  return first ? Plain : Skip;
+  return this->LastStage = first ? Plain : Skip;
+}
+
+void PsiDepthPeelingCalls::NoteTranslucentGeometry(vtkAbstractMapper* mapper, vtkRenderer* ren)
+{
+  const bool translucent =
+    this->LastStage == Plain && PsiRenderTarget::SceneHasTranslucentGeometry(ren);
+  if (translucent && !this->NotedTranslucent)
+  {
+    vtkWarningWithObjectMacro(mapper,
+      "Psi Volume: translucent geometry is drawn before volumes unless the view peels volumes "
+      "too (ParaView: the view's DepthPeelingForVolumes; VTK: the renderer's UseDepthPeeling "
+      "and UseDepthPeelingForVolumes); a surface in front of or inside the volume is then "
+      "covered by it.");
+  }
+  this->NotedTranslucent = translucent;
 }
 
 void PsiDepthPeelingCalls::SetShaderParameters(vtkShaderProgram* program,

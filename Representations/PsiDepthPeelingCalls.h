@@ -20,6 +20,7 @@
 class vtkAbstractMapper;
 class vtkDualDepthPeelingPass;
 class vtkOpenGLRenderWindow;
+class vtkRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
 class vtkVolume;
@@ -53,6 +54,10 @@ public:
     vtkOpenGLRenderWindow* renWin);
   void Deactivate();
   void ReleaseGraphicsResources(vtkWindow* win);
+  /// Outside dual depth peeling for volumes VTK draws translucent geometry before all volumes: a
+  /// surface in front of or inside the volume cannot be intermixed. Warns (from `mapper`) once
+  /// while the last call was not peeled and the view has translucent geometry.
+  void NoteTranslucentGeometry(vtkAbstractMapper* mapper, vtkRenderer* ren);
   /// Images a stage draws: the back interval's and, before the peels and in each peel, the front
   /// interval's.
   static int ImagesOf(Stage s) { return s == OutsideLayers || s == Peel ? 2 : 1; }
@@ -60,6 +65,8 @@ public:
 private:
   vtkDualDepthPeelingPass* Pass = nullptr; // of the current call; owned by the renderer
   vtkMTimeType FrameKeysTime = 0;
+  Stage LastStage = Plain;
+  bool NotedTranslucent = false;
   vtkNew<vtkTextureObject> Placeholder;
 };
 

@@ -64,7 +64,6 @@ struct vtkPsiVolumeMapper::Internals
 
   std::string LastWarning;
   std::string LastFeatureNote; // what a separate opacity array changed, said once
-  bool NotedTranslucent = false; // translucent geometry outside depth peeling, said once
   vtkWindow* Context = nullptr;
 
   void Release(vtkWindow* win)
@@ -126,7 +125,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
-  this->NoteTranslucentGeometry(ren);
+  I.Peeling.NoteTranslucentGeometry(this, ren);
   // an optical depth needs a positive unit distance: like 'Projected tetra', draw nothing
   const std::string badUnit = psi::UnitDistanceProblem(vol->GetProperty());
   if (badUnit != I.LastWarning && !badUnit.empty())
@@ -170,23 +169,6 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   this->DrawVolume(renWin, ren, vol, cam, features);
   this->Stats.LastRenderSeconds = SecondsSince(t0);
-}
-
-// Outside VTK's dual depth peeling for volumes, translucent geometry is drawn before all volumes:
-// a surface in front of or inside the volume cannot be intermixed. Said once while it lasts.
-void vtkPsiVolumeMapper::NoteTranslucentGeometry(vtkRenderer* ren)
-{
-  Internals& I = *this->Impl;
-  const bool translucent = I.PeelStage == PsiDepthPeelingCalls::Plain &&
-    PsiRenderTarget::SceneHasTranslucentGeometry(ren);
-  if (translucent && !I.NotedTranslucent)
-  {
-    vtkWarningMacro("Psi Volume: translucent geometry is drawn before volumes unless the view "
-                    "peels volumes too (ParaView: the view's DepthPeelingForVolumes; VTK: the "
-                    "renderer's UseDepthPeeling and UseDepthPeelingForVolumes); a surface in "
-                    "front of or inside the volume is then covered by it.");
-  }
-  I.NotedTranslucent = translucent;
 }
 
 // Projects and draws the volume with the chosen projector: the geometry-shader program, or the

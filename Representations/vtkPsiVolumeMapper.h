@@ -302,7 +302,6 @@ private:
     vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam);
   vtkShaderProgram* ReadyProjection(
     vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& features, bool compute);
-  void NoteTranslucentGeometry(vtkRenderer* ren);
   void DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren, vtkVolume* vol,
     const PsiFrameCamera& cam, const psi::ShaderFeatures& features);
   void SetShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkVolume* vol,
