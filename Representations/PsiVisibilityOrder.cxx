@@ -82,8 +82,9 @@ void PsiVisibilityOrder::Draw() const
   // reach them; its geometry stage outruns them, so binned chunks piled up (1.1 GB more peak
   // memory at 2.56M tetrahedra). A fence after each chunk and a wait for the one InFlight chunks
   // back keep at most InFlight chunks binned without draining the pipeline (a GPU has long
-  // finished them).
-  constexpr size_t chunk = size_t(1) << 14, InFlight = 8;
+  // finished them). Each fence also ends llvmpipe's scene: chunks of 16,384 made the frame 3%
+  // slower at 2.56M; 4 x 32,768 kept its speed and 0.87 GB of peak memory (1.9 GB before).
+  constexpr size_t chunk = size_t(1) << 15, InFlight = 4;
   std::array<GLsync, InFlight> fences{};
   const size_t n = this->Order.size();
   for (size_t first = 0, i = 0; first < n; first += chunk, ++i)

@@ -238,18 +238,18 @@ int main(int argc, char* argv[])
     mapper->SetInputData(s.Grid);
   }
 
-  // A mesh of ten draw chunks (PsiVisibilityOrder::Draw streams 16,384 tetrahedra per draw, at
-  // most 8 in flight): every chunk is drawn, in order, after the waits.
+  // A mesh of five draw chunks (PsiVisibilityOrder::Draw streams 32,768 tetrahedra per draw, at
+  // most 4 in flight): every chunk is drawn, in order, after the waits.
   {
     Scene fine;
     MakeScene(fine, 16, 0.375, 1.5);
     const psi::ReferenceScene fineRef = MakeReference(fine);
     mapper->SetInputData(fine.Grid);
     vol->SetProperty(fine.Property);
-    const Result r = Compare("ten_chunks", win, ren, vol, fineRef, nullptr, outDir);
-    PSI_CHECK(fine.Grid->GetNumberOfCells() > 9 * 16384, "ten chunks: %lld tetrahedra",
+    const Result r = Compare("five_chunks", win, ren, vol, fineRef, nullptr, outDir);
+    PSI_CHECK(fine.Grid->GetNumberOfCells() > 4 * 32768, "five chunks: %lld tetrahedra",
       static_cast<long long>(fine.Grid->GetNumberOfCells()));
-    PSI_CHECK(r.Mean < 0.006 && r.Max < 0.05, "ten chunks: mean error %g, max %g", r.Mean, r.Max);
+    PSI_CHECK(r.Mean < 0.006 && r.Max < 0.05, "five chunks: mean error %g, max %g", r.Mean, r.Max);
     mapper->SetInputData(s.Grid);
     vol->SetProperty(s.Property);
   }
