@@ -6,12 +6,7 @@ target_link_libraries(TestPsiIsosurfaces PRIVATE PsiVolume::Representations PsiT
   VTK::RenderingCore)
 vtk_module_autoinit(TARGETS TestPsiIsosurfaces MODULES VTK::RenderingOpenGL2)
 file(MAKE_DIRECTORY "${CMAKE_BINARY_DIR}/Testing/Images")
-add_test(NAME PsiIsosurfaces COMMAND TestPsiIsosurfaces "${CMAKE_BINARY_DIR}/Testing/Images")
-set_tests_properties(PsiIsosurfaces PROPERTIES ENVIRONMENT "PSI_PROJECTOR=geometry")
-add_test(NAME PsiIsosurfaces.compute COMMAND TestPsiIsosurfaces)
-set_tests_properties(PsiIsosurfaces.compute PROPERTIES ENVIRONMENT "PSI_PROJECTOR=compute")
-add_test(NAME PsiIsosurfaces.fan COMMAND TestPsiIsosurfaces)
-set_tests_properties(PsiIsosurfaces.fan PROPERTIES ENVIRONMENT "PSI_DECOMPOSITION=fan")
+psi_add_render_test(PsiIsosurfaces TestPsiIsosurfaces FAN)
 
 find_program(PVPYTHON_EXECUTABLE NAMES pvpython REQUIRED)
 add_test(NAME PsiPython.isosurfaces
@@ -28,16 +23,7 @@ add_executable(TestPsiDegenerateProjections Cxx/TestPsiDegenerateProjections.cxx
 target_link_libraries(TestPsiDegenerateProjections PRIVATE PsiVolume::Representations PsiTestSupport
   VTK::RenderingOpenGL2 VTK::FiltersGeneral VTK::ImagingCore VTK::IOImage VTK::RenderingCore)
 vtk_module_autoinit(TARGETS TestPsiDegenerateProjections MODULES VTK::RenderingOpenGL2)
-add_test(NAME PsiDegenerateProjections
-  COMMAND TestPsiDegenerateProjections "${CMAKE_BINARY_DIR}/Testing/Images")
-set_tests_properties(PsiDegenerateProjections PROPERTIES TIMEOUT 120
-  ENVIRONMENT "PSI_PROJECTOR=geometry")
-add_test(NAME PsiDegenerateProjections.compute COMMAND TestPsiDegenerateProjections)
-set_tests_properties(PsiDegenerateProjections.compute PROPERTIES TIMEOUT 120
-  ENVIRONMENT "PSI_PROJECTOR=compute")
-add_test(NAME PsiDegenerateProjections.fan COMMAND TestPsiDegenerateProjections)
-set_tests_properties(PsiDegenerateProjections.fan PROPERTIES TIMEOUT 120
-  ENVIRONMENT "PSI_DECOMPOSITION=fan")
+psi_add_render_test(PsiDegenerateProjections TestPsiDegenerateProjections FAN TIMEOUT 120)
 
 add_executable(TestPsiVisibilityOrder Cxx/TestPsiVisibilityOrder.cxx)
 target_link_libraries(TestPsiVisibilityOrder PRIVATE PsiVolume::Representations PsiVolume::Core PsiTestSupport
@@ -53,10 +39,4 @@ target_link_libraries(TestPsiTranslucentGeometry PRIVATE PsiVolume::Representati
   PsiTestSupport VTK::RenderingOpenGL2 VTK::FiltersSources VTK::ImagingCore VTK::IOImage
   VTK::RenderingCore)
 vtk_module_autoinit(TARGETS TestPsiTranslucentGeometry MODULES VTK::RenderingOpenGL2)
-add_test(NAME PsiTranslucentGeometry
-  COMMAND TestPsiTranslucentGeometry "${CMAKE_BINARY_DIR}/Testing/Images")
-set_tests_properties(PsiTranslucentGeometry PROPERTIES TIMEOUT 300
-  ENVIRONMENT "PSI_PROJECTOR=geometry")
-add_test(NAME PsiTranslucentGeometry.compute COMMAND TestPsiTranslucentGeometry)
-set_tests_properties(PsiTranslucentGeometry.compute PROPERTIES TIMEOUT 300
-  ENVIRONMENT "PSI_PROJECTOR=compute")
+psi_add_render_test(PsiTranslucentGeometry TestPsiTranslucentGeometry TIMEOUT 300)
