@@ -45,7 +45,14 @@ def registered_tests():
     for f in sorted((ROOT / "Testing").glob("*.cmake")) + [ROOT / "Testing" / "CMakeLists.txt"]:
         text = f.read_text()
         for name, target in re.findall(r"add_test\(NAME\s+(\S+)\s+COMMAND\s+([^\s)]+)", text):
-            tests[name] = target
+            if not name.startswith("${"):  # the function below registers its own names
+                tests[name] = target
+        # psi_add_render_test(NAME TARGET [FAN] ...): NAME, NAME.compute and with FAN NAME.fan
+        for name, target, rest in re.findall(
+                r"psi_add_render_test\((\w[\w.]*)\s+(\w+)([^)]*)\)", text):
+            tests[name] = tests[name + ".compute"] = target
+            if "FAN" in rest.split():
+                tests[name + ".fan"] = target
         # the pvpython tests, PsiPython.<name> for each name of set(python_tests ...): the plugin
         for names in re.findall(r"set\(python_tests\s+([^)]*)\)", text):
             for name in names.split():
