@@ -67,10 +67,19 @@ float rayTAtDepth(float z)
   return dot(p - rayOrigin, rayStep) / dot(rayStep, rayStep);
 }
 
+//PSI::DepthPeel::Early
+  // A silhouette lies at its tetrahedron's nearest depth: a fragment whose interval is empty,
+  // or ends in front of that depth, has nothing to integrate.
+  vec2 peelRange = peelDepthRange();
+  if (!(peelRange.x < peelRange.y) || gl_FragCoord.z > peelRange.y)
+  {
+    discard;
+  }
+
 //PSI::DepthPeel::Impl
   // Keep the part of the segment inside this draw's depth interval.
   {
-    vec2 range = peelDepthRange();
+    vec2 range = peelRange;
     float len = length(rayStep);
     float tIn = rayEntry, tOut = rayEntry + D / max(len, 1e-30);
     float a = max(tIn, rayTAtDepth(range.x)), b = min(tOut, rayTAtDepth(range.y));

@@ -60,6 +60,7 @@ void writeColor(vec4 c)
 void main()
 {
 //PSI::IsoTriangles::Surface
+//PSI::DepthPeel::Early
   float sf, sb, D;
   readSegment(sf, sb, D);
   float frontDepth = segmentFrontDepth();
