@@ -46,6 +46,8 @@ public:
   /// adds itself to the volume's property keys before its stages (vtkOpenGLRenderPass::PreRender)
   /// and removes itself after, so the keys' modification time is new in each frame's first call.
   Stage StageOf(vtkAbstractMapper* mapper, vtkVolume* vol);
+  /// The stage of the last call (StageOf).
+  Stage GetStage() const { return this->LastStage; }
   /// Sets the pass's texture uniforms (outerDepthTex, innerDepthTex, lastFrontColorTex,
   /// opaqueDepthTex, depthRangeTex, as the stage has them) on the bound `program`. Those the
   /// stage does not have name a 1 x 1 placeholder texture: samplers of different types may not

@@ -150,10 +150,11 @@ void PsiRenderTarget::ReserveImages(vtkOpenGLRenderWindow* renWin, int images)
   this->Framebuffer->AddColorAttachment(1, this->FrontImage);
 }
 
-void PsiRenderTarget::DrawAndComposite(vtkOpenGLRenderWindow* renWin, int images,
-  const std::function<void(int)>& drawImage, int peelStage,
+void PsiRenderTarget::DrawAndComposite(vtkOpenGLRenderWindow* renWin,
+  const std::function<void(int)>& drawImage, PsiDepthPeelingCalls::Stage peelStage,
   const std::function<void(vtkShaderProgram*)>& compositeParameters)
 {
+  const int images = PsiDepthPeelingCalls::ImagesOf(peelStage);
   vtkOpenGLState* ostate = renWin->GetState();
   {
     vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
@@ -201,11 +202,11 @@ void PsiRenderTarget::DrawAndComposite(vtkOpenGLRenderWindow* renWin, int images
     ostate->PopFramebufferBindings();
 
     // within depth peeling the pass's own framebuffer, at the origin, receives the images
-    const bool own = peelStage > 0;
+    const bool own = peelStage > PsiDepthPeelingCalls::Plain;
     ostate->vtkglViewport(
       own ? 0 : this->Origin[0], own ? 0 : this->Origin[1], this->Size[0], this->Size[1]);
     ostate->vtkglDisable(GL_DEPTH_TEST);
-    this->Composite(renWin, images, peelStage, compositeParameters);
+    this->Composite(renWin, peelStage, compositeParameters);
   }
   if (this->SampleDepth)
   {
@@ -215,9 +216,11 @@ void PsiRenderTarget::DrawAndComposite(vtkOpenGLRenderWindow* renWin, int images
 
 // The volume images (premultiplied) into the framebuffer being rendered, with the blending the
 // caller set: over the scene, or into the depth-peeling pass's buffers (PsiCompositeFS.glsl).
-void PsiRenderTarget::Composite(vtkOpenGLRenderWindow* renWin, int images, int peelStage,
+void PsiRenderTarget::Composite(vtkOpenGLRenderWindow* renWin,
+  PsiDepthPeelingCalls::Stage peelStage,
   const std::function<void(vtkShaderProgram*)>& compositeParameters)
 {
+  const int images = PsiDepthPeelingCalls::ImagesOf(peelStage);
   if (!this->CompositeQuad)
   {
     this->CompositeQuad.reset(new vtkOpenGLQuadHelper(renWin, nullptr, PsiCompositeFS, ""));

@@ -6,6 +6,8 @@
 #ifndef PsiRenderTarget_h
 #define PsiRenderTarget_h
 
+#include "PsiDepthPeelingCalls.h"
+
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
 
@@ -43,20 +45,20 @@ public:
   void SetShaderParameters(vtkShaderProgram* program);
   /// Width and height of the target in pixels (after CaptureDepthTexture).
   const int* GetSize() const { return this->Size; }
-  /// For each of `images` float images (1, or 2 within depth peeling: PsiDepthPeelingCalls),
-  /// clears it and runs `drawImage(i)` into it with blending and the depth test set (all GL
-  /// state restored afterwards); then composites the images into the framebuffer being rendered
-  /// (PsiCompositeFS.glsl, for depth-peeling stage `peelStage`; `compositeParameters` sets the
-  /// pass's uniforms on the composite program).
-  void DrawAndComposite(vtkOpenGLRenderWindow* renWin, int images,
-    const std::function<void(int)>& drawImage, int peelStage,
+  /// For each float image of depth-peeling stage `peelStage` (PsiDepthPeelingCalls::ImagesOf:
+  /// 1, or 2 before the peels and in each peel), clears it and runs `drawImage(i)` into it with
+  /// blending and the depth test set (all GL state restored afterwards); then composites the
+  /// images into the framebuffer being rendered (PsiCompositeFS.glsl; `compositeParameters`
+  /// sets the pass's uniforms on the composite program).
+  void DrawAndComposite(vtkOpenGLRenderWindow* renWin, const std::function<void(int)>& drawImage,
+    PsiDepthPeelingCalls::Stage peelStage,
     const std::function<void(vtkShaderProgram*)>& compositeParameters);
   void ReleaseGraphicsResources(vtkWindow* win);
 
 private:
   PsiRenderTarget(const PsiRenderTarget&) = delete;
   void operator=(const PsiRenderTarget&) = delete;
-  void Composite(vtkOpenGLRenderWindow* renWin, int images, int peelStage,
+  void Composite(vtkOpenGLRenderWindow* renWin, PsiDepthPeelingCalls::Stage peelStage,
     const std::function<void(vtkShaderProgram*)>& compositeParameters);
   void ReserveImages(vtkOpenGLRenderWindow* renWin, int images);
 

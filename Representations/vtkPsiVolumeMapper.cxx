@@ -56,8 +56,7 @@ struct vtkPsiVolumeMapper::Internals
   PsiRenderTarget Target;
   PsiGeometryProjector Geometry;
   PsiComputeProjector Compute;
-  PsiDepthPeelingCalls Peeling;
-  PsiDepthPeelingCalls::Stage PeelStage = PsiDepthPeelingCalls::Plain; // of this call
+  PsiDepthPeelingCalls Peeling; // the depth-peeling stage of this call
 
   // Transfer-function nodes for adaptive sampling, for the property and range they came from.
   PsiAdaptiveNodes AdaptiveNodes;
@@ -120,8 +119,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   Internals& I = *this->Impl;
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   vtkUnstructuredGridBase* input = this->GetInput();
-  I.PeelStage = I.Peeling.StageOf(this, vol);
-  if (!renWin || !input || I.PeelStage == PsiDepthPeelingCalls::Skip)
+  if (!renWin || !input || I.Peeling.StageOf(this, vol) == PsiDepthPeelingCalls::Skip)
   {
     return;
   }
@@ -195,12 +193,11 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   }
   if (draw)
   {
-    const int images = PsiDepthPeelingCalls::ImagesOf(I.PeelStage);
     auto drawImage = [&](int image) {
       if (features.DepthPeel)
       {
         renWin->GetShaderCache()->ReadyShaderProgram(draw); // the fragment shader's program
-        draw->SetUniformi("peelStage", I.PeelStage);
+        draw->SetUniformi("peelStage", I.Peeling.GetStage());
         draw->SetUniformi("peelRange", image);
         I.Peeling.SetShaderParameters(draw, this, vol, renWin);
       }
@@ -208,7 +205,7 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
                   I.Mesh.GetTetBuffer())
               : I.Geometry.Draw(I.Order);
     };
-    I.Target.DrawAndComposite(renWin, images, drawImage, I.PeelStage,
+    I.Target.DrawAndComposite(renWin, drawImage, I.Peeling.GetStage(),
       [&](vtkShaderProgram* composite) {
         I.Peeling.SetShaderParameters(composite, this, vol, renWin);
       });
@@ -318,7 +315,7 @@ psi::ShaderFeatures vtkPsiVolumeMapper::ChooseFeatures(
   f.Method = this->DrawnMethod();
   f.ExactSegments = !cam.Parallel && this->ExactPerspectiveSegments;
   // within depth peeling, the silhouettes' exact segments are clipped to the pass's intervals
-  f.DepthPeel = I.PeelStage > PsiDepthPeelingCalls::Plain;
+  f.DepthPeel = I.Peeling.GetStage() > PsiDepthPeelingCalls::Plain;
   f.Silhouette = psi::SilhouetteChosen(this->Decomposition) || f.DepthPeel;
   f.NearClip = cam.NearPlaneCuts(I.Mesh.GetMesh().Bounds);
   f.OpaqueClip = PsiRenderTarget::OpaqueGeometryOverlaps(ren, vol);

@@ -79,11 +79,10 @@ float rayTAtDepth(float z)
 //PSI::DepthPeel::Impl
   // Keep the part of the segment inside this draw's depth interval.
   {
-    vec2 range = peelRange;
     float len = length(rayStep);
     float tIn = rayEntry, tOut = rayEntry + D / max(len, 1e-30);
-    float a = max(tIn, rayTAtDepth(range.x)), b = min(tOut, rayTAtDepth(range.y));
-    if (!(range.x < range.y) || !(b > a))
+    float a = max(tIn, rayTAtDepth(peelRange.x)), b = min(tOut, rayTAtDepth(peelRange.y));
+    if (!(b > a)) // (an empty interval was dropped first: Early)
     {
       discard;
     }

@@ -168,7 +168,7 @@ MUTATIONS = [
              "    gl_FragData[1] = vec4(layers.rgb + t * front.rgb, 1.0 - t * (1.0 - front.a));",
              "    gl_FragData[1] = front;", PEELED),
     Mutation("peeling_interval_start_ignored", "Shaders/PsiDepthPeelFS.glsl",
-             "float a = max(tIn, rayTAtDepth(range.x))", "float a = tIn", PEELED),
+             "float a = max(tIn, rayTAtDepth(peelRange.x))", "float a = tIn", PEELED),
     Mutation("peeling_back_interval_dropped", "Shaders/PsiDepthPeelFS.glsl",
              "  return endBehindOpaque || noInner ? none : back;", "  return none;", PEELED),
     Mutation("peeling_back_interval_from_front", "Shaders/PsiDepthPeelFS.glsl",
