@@ -1,16 +1,17 @@
 //PSI::RaySegments::Dec
 // Ray segments (PsiRaySegmentsGS.glsl): the ray of this pixel is X(t) = O + t S, O and S affine
 // in the window position (psi::PixelRaysOf; for VTK's cameras S.z = -1 and t is the view
-// depth). It meets face i at t_i = K_i / L_i in perspective and L_i / K_i in parallel
-// projection, L = L0 + x Lx + y Ly. It enters the tetrahedron at the largest t of the planes it
-// crosses inwards (n . S < 0) and leaves at the smallest t of those it crosses outwards
-// (n . S > 0); a plane parallel to the ray bounds nothing, as the pixel lies inside the
-// silhouette. Along the ray the scalar is s(t) = (g . O + s0) + t (g . S).
-flat in vec4 rayPlaneK;
-flat in vec4 rayPlane0;
-flat in vec4 rayPlaneX;
-flat in vec4 rayPlaneY;
-flat in vec4 scalarPlane; // g, s0
+// depth). Per face the geometry shader passes whether the ray enters or leaves through it and an
+// affine function p of the window position: p = t in parallel projection, p = -1/t in
+// perspective, both growing with t. The ray enters at the largest p of the faces it enters
+// through and leaves at the smallest p of those it leaves through. Along the ray the scalar is
+// s(t) = a + t b, a and b affine in the window position.
+flat in vec4 rayFace0;
+flat in vec4 rayFaceX;
+flat in vec4 rayFaceY;
+flat in vec4 rayEnters;
+flat in vec3 scalarRayA;
+flat in vec3 scalarRayB;
 smooth in vec3 isoNormal;
 
 uniform vec3 pixelRayOrigin[3]; // O = [0] + x [1] + y [2]
@@ -24,18 +25,29 @@ void readSegment(out float sf, out float sb, out float D)
   vec2 x = gl_FragCoord.xy;
   rayOrigin = pixelRayOrigin[0] + x.x * pixelRayOrigin[1] + x.y * pixelRayOrigin[2];
   rayStep = pixelRayStep[0] + x.x * pixelRayStep[1] + x.y * pixelRayStep[2];
-  vec4 L = rayPlane0 + x.x * rayPlaneX + x.y * rayPlaneY;
-  bool parallel = parallelProjection == 1;
-  vec4 den = parallel ? rayPlaneK : L; // n . S
-  vec4 t = (parallel ? L : rayPlaneK) / den;
-  vec4 tin = mix(vec4(-3.0e38), t, lessThan(den, vec4(0.0)));
-  vec4 tout = mix(vec4(3.0e38), t, greaterThan(den, vec4(0.0)));
-  rayEntry = max(max(tin.x, tin.y), max(tin.z, tin.w));
-  float rayExit = max(min(min(tout.x, tout.y), min(tout.z, tout.w)), rayEntry);
+  vec4 p = rayFace0 + x.x * rayFaceX + x.y * rayFaceY;
+  bvec4 enters = greaterThan(rayEnters, vec4(0.5));
+  vec4 pin = mix(vec4(-3.0e38), p, enters);
+  vec4 pout = mix(p, vec4(3.0e38), enters);
+  float a = max(max(pin.x, pin.y), max(pin.z, pin.w));
+  float b = min(min(pout.x, pout.y), min(pout.z, pout.w));
+  float rayExit;
+  if (parallelProjection == 1)
+  {
+    rayEntry = a;
+    rayExit = max(b, a);
+  }
+  else
+  {
+    // p < 0 in front of the eye; p >= 0 only outside the silhouette, where D becomes 0.
+    rayEntry = -1.0 / min(a, -1.0e-30);
+    rayExit = max(-1.0 / b, rayEntry);
+  }
   D = (rayExit - rayEntry) * length(rayStep);
-  float s0 = dot(scalarPlane.xyz, rayOrigin) + scalarPlane.w, ds = dot(scalarPlane.xyz, rayStep);
-  sf = s0 + rayEntry * ds;
-  sb = s0 + rayExit * ds;
+  float sa = scalarRayA.x + x.x * scalarRayA.y + x.y * scalarRayA.z;
+  float sd = scalarRayB.x + x.x * scalarRayB.y + x.y * scalarRayB.z;
+  sf = sa + rayEntry * sd;
+  sb = sa + rayExit * sd;
 //PSI::SeparateOpacity::Segment
 }
 

@@ -4,28 +4,39 @@
 // Shirley and Tuchman's fan, and each fragment intersects its own ray with the tetrahedron's
 // four face planes (PsiRaySegmentsFS.glsl), exact in parallel and in perspective projection.
 //
-// The fragments need where their ray meets the four outward face planes n . x = w, and the
-// linear scalar s(x) = g . x + s0 of the cell, the same for the whole silhouette: flat outputs.
 // The ray of the pixel at window position (x, y) is X(t) = O + t S with O and S affine in (x, y)
 // (psi::PixelRaysOf, PsiPixelRays.h): in perspective O is the eye (constant) and S varies, in
-// parallel projection S is constant and O varies. A plane is met at
+// parallel projection S is constant and O varies. It meets the outward face plane n . X = w at
 //   t = (w - n . O) / (n . S),
 // a constant over an affine function of (x, y) in perspective, the reverse in parallel
-// projection. Per plane the geometry shader passes the constant K and the affine function's
-// three coefficients L = L0 + x Lx + y Ly, four planes to a vec4. (Interpolating the ratio's
-// terms as varyings would save the fragment shader two multiply-adds, but the rasterizer's
-// clipping of large triangles near the eye does not keep them exact.)
-flat out vec4 rayPlaneK;  // the constant term of each face's t
-flat out vec4 rayPlane0;  // L0, Lx, Ly: its affine term
-flat out vec4 rayPlaneX;
-flat out vec4 rayPlaneY;
-flat out vec4 scalarPlane; // g, s0: s(x) = g . x + s0
-smooth out vec3 isoNormal;  // marching-tetrahedra surface vertices only
+// projection. Whether the ray enters or leaves through a face does not depend on the pixel: in
+// perspective every ray starts at the eye, so it enters through the faces whose planes have the
+// eye outside (w - n . O < 0); in parallel projection every ray has the direction S, so it
+// enters where n . S < 0. The geometry shader therefore passes, per face, that flag and an
+// affine function p = p0 + x px + y py whose extremes give the segment with one division each:
+//   parallel:    p = t (affine),       t_enter = max p over entering faces, t_exit = min p over
+//                                      leaving ones;
+//   perspective: p = -1/t = -(n . S) / (w - n . O) (affine), and as -1/t grows with t, the same
+//                max and min give t_enter = -1 / max p, t_exit = -1 / min p.
+// A face parallel to the rays (n . S = 0 in parallel projection; the eye on its plane in
+// perspective) bounds nothing and gets p = -BIG among the entering faces. Along the ray the linear
+// scalar s = g . X + s0 is s(t) = a + t b with a = g . O + s0 and b = g . S, both affine in (x, y)
+// as well. Four faces to a vec4; all flat outputs. (Interpolating such terms as varyings would
+// save the fragment shader a few multiply-adds, but the rasterizer's clipping of large triangles
+// near the eye does not keep them exact.)
+flat out vec4 rayFace0;    // p0 of each face
+flat out vec4 rayFaceX;    // px
+flat out vec4 rayFaceY;    // py
+flat out vec4 rayEnters;   // 1 where the ray enters through the face, 0 where it leaves
+flat out vec3 scalarRayA;  // a = a0 + x ax + y ay
+flat out vec3 scalarRayB;  // b likewise
+smooth out vec3 isoNormal; // marching-tetrahedra surface vertices only
 
 uniform vec3 pixelRayOrigin[3]; // O = [0] + x [1] + y [2]
 uniform vec3 pixelRayStep[3];   // S likewise
 
-vec4 rayK, rayL0, rayLX, rayLY;
+vec4 faceP0, facePX, facePY, faceEnters;
+vec3 scalarA, scalarB;
 
 vec4 outwardPlane(int i)
 {
@@ -35,14 +46,15 @@ vec4 outwardPlane(int i)
   return vec4(n, dot(n, a));
 }
 
-// Every vertex carries the cell's planes (the provoking vertex's are used).
+// Every vertex carries the cell's ray terms (the provoking vertex's are used).
 void setVertexSegment(vec3 p, vec3 seg)
 {
-  rayPlaneK = rayK;
-  rayPlane0 = rayL0;
-  rayPlaneX = rayLX;
-  rayPlaneY = rayLY;
-  scalarPlane = vec4(gradient, scalar[0] - dot(gradient, viewP[0]));
+  rayFace0 = faceP0;
+  rayFaceX = facePX;
+  rayFaceY = facePY;
+  rayEnters = faceEnters;
+  scalarRayA = scalarA;
+  scalarRayB = scalarB;
 //PSI::SeparateOpacity::Vertex
 }
 
@@ -58,28 +70,39 @@ void setEdge(int a, int b)
 }
 
 //PSI::RaySegments::Emit
+// The terms of the four faces' p = p0 + x px + y py and of the scalar along the ray (above).
+void setRayTerms()
+{
+  mat4 planes = mat4(outwardPlane(0), outwardPlane(1), outwardPlane(2), outwardPlane(3));
+  vec4 w = vec4(planes[0].w, planes[1].w, planes[2].w, planes[3].w);
+  // vec4(v, 0) * planes = (n_i . v) for the four faces; t = num / den per face.
+  vec4 num0 = w - vec4(pixelRayOrigin[0], 0.0) * planes;
+  vec4 numX = -(vec4(pixelRayOrigin[1], 0.0) * planes);
+  vec4 numY = -(vec4(pixelRayOrigin[2], 0.0) * planes);
+  vec4 den0 = vec4(pixelRayStep[0], 0.0) * planes;
+  vec4 denX = vec4(pixelRayStep[1], 0.0) * planes;
+  vec4 denY = vec4(pixelRayStep[2], 0.0) * planes;
+  bool parallel = parallelProjection == 1;
+  vec4 constant = parallel ? den0 : num0; // the term that does not depend on (x, y)
+  bvec4 bounds = notEqual(constant, vec4(0.0));
+  vec4 scale = mix(vec4(0.0), (parallel ? 1.0 : -1.0) / constant, bounds);
+  faceP0 = mix(vec4(-3.0e38), (parallel ? num0 : den0) * scale, bounds);
+  facePX = (parallel ? numX : denX) * scale;
+  facePY = (parallel ? numY : denY) * scale;
+  faceEnters = mix(vec4(1.0), vec4(lessThan(constant, vec4(0.0))), bounds);
+  float s0 = scalar[0] - dot(gradient, viewP[0]);
+  scalarA = vec3(dot(gradient, pixelRayOrigin[0]) + s0, dot(gradient, pixelRayOrigin[1]),
+    dot(gradient, pixelRayOrigin[2]));
+  scalarB = vec3(dot(gradient, pixelRayStep[0]), dot(gradient, pixelRayStep[1]),
+    dot(gradient, pixelRayStep[2]));
+}
+
 // The silhouette, at the depth of the tetrahedron's nearest vertex: the hardware depth test
 // against opaque geometry then never rejects a fragment whose segment starts in front of it;
 // the fragment shader tests the segment's own front depth.
 void emitProjection()
 {
-  mat4 planes = mat4(outwardPlane(0), outwardPlane(1), outwardPlane(2), outwardPlane(3));
-  vec4 w = vec4(planes[0].w, planes[1].w, planes[2].w, planes[3].w);
-  // vec4(v, 0) * planes = (n_i . v) for the four faces.
-  if (parallelProjection == 1)
-  {
-    rayK = vec4(pixelRayStep[0], 0.0) * planes;
-    rayL0 = w - vec4(pixelRayOrigin[0], 0.0) * planes;
-    rayLX = -(vec4(pixelRayOrigin[1], 0.0) * planes);
-    rayLY = -(vec4(pixelRayOrigin[2], 0.0) * planes);
-  }
-  else
-  {
-    rayK = w - vec4(pixelRayOrigin[0], 0.0) * planes;
-    rayL0 = vec4(pixelRayStep[0], 0.0) * planes;
-    rayLX = vec4(pixelRayStep[1], 0.0) * planes;
-    rayLY = vec4(pixelRayStep[2], 0.0) * planes;
-  }
+  setRayTerms();
   float nearest = min(min(clipP[0].z / clipP[0].w, clipP[1].z / clipP[1].w),
     min(clipP[2].z / clipP[2].w, clipP[3].z / clipP[3].w));
   for (int i = 0; i < 4; ++i)
