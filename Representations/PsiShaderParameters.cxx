@@ -153,6 +153,13 @@ void SetPixelRayShaderParameters(
   program->SetUniform3fv("pixelRayStep", 3, step);
 }
 
+void SetSilhouetteShaderParameters(vtkShaderProgram* program, const int size[2])
+{
+  const double ndcPerPixel = 4.0 / (static_cast<double>(size[0]) * size[1]);
+  program->SetUniformf(
+    "coverExtraMax", static_cast<float>(PsiSilhouetteCoverPixels * ndcPerPixel));
+}
+
 void SetIsosurfaceShaderParameters(vtkShaderProgram* program, const psi::IsosurfaceList& list,
   const PsiIsosurfaceStyle& style, vtkVolumeProperty* property, vtkRenderer* ren,
   const PsiFrameCamera& camera)

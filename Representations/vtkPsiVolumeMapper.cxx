@@ -427,6 +427,7 @@ void vtkPsiVolumeMapper::SetShaderParameters(vtkShaderProgram* program, vtkRende
   if (f.Silhouette)
   {
     SetPixelRayShaderParameters(program, cam, I.Target.GetSize());
+    SetSilhouetteShaderParameters(program, I.Target.GetSize());
   }
   if (f.IsoCount > 0)
   {

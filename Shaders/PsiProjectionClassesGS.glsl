@@ -96,15 +96,62 @@ void emitFan()
   }
 }
 
-// Emits the silhouette of the classified projection, the convex hull of the four projected
-// vertices, with the fewest triangles: class 1 (p3 inside), 3 (p3 on edge p0p1) and 4 (p2 and p3
-// coincide) are the triangle p0 p1 p2, class 2 the quad p0 p2 p1 p3 (a strip of 4). Every
-// fragment then finds its own segment (PsiRaySegments*.glsl).
+// The silhouette of the classified projection, the convex hull of the four projected vertices:
+// class 1 (p3 inside), 3 (p3 on edge p0p1) and 4 (p2 and p3 coincide) are the triangle p0 p1 p2;
+// class 2 is the quad p0 p2 p1 p3, drawn as one covering triangle when that adds little area
+// (psi::PsiSilhouetteCoverPixels), else as a strip of 4. Every fragment finds its own segment
+// (PsiRaySegments*.glsl), empty outside the tetrahedron.
+uniform float coverExtraMax; // NDC area a covering triangle may add to a quad silhouette
+
+// A vertex of the silhouette's covering triangle at NDC point q, at the silhouette's depth.
+void emitCover(vec2 q, float z)
+{
+  setFlat(0);
+  setVertexSegment(viewP[p0], vec3(scalar[p0], scalar[p0], 0.0));
+  gl_Position = vec4(q, z, 1.0);
+  EmitVertex();
+}
+
+// Covers the convex quad q0 q1 q2 q3 (boundary order) with one triangle when that adds at most
+// coverExtraMax of area: apex q_i and its edges to q_(i+1), q_(i-1) stretched by
+// s = alpha + beta, where q_(i+2) - q_i = alpha (q_(i+1) - q_i) + beta (q_(i-1) - q_i); the
+// triangle's area is s times the quad's, so the apex with the least s is taken.
+bool emitQuadCover(vec2 q[4], float z)
+{
+  float best = 1e30;
+  int apex = 0;
+  for (int i = 0; i < 4; ++i)
+  {
+    vec2 e1 = q[(i + 1) % 4] - q[i], e2 = q[(i + 3) % 4] - q[i], d = q[(i + 2) % 4] - q[i];
+    float det = cross2(e1, e2);
+    float s = (cross2(d, e2) + cross2(e1, d)) / det;
+    if (abs(det) > 0.0 && s >= 1.0 && s < best)
+    {
+      best = s;
+      apex = i;
+    }
+  }
+  vec2 e1 = q[(apex + 1) % 4] - q[apex], e2 = q[(apex + 3) % 4] - q[apex];
+  float quadArea = 0.5 * best * abs(cross2(e1, e2));
+  if (!(best < 4.0 && (best - 1.0) * quadArea <= coverExtraMax))
+  {
+    return false;
+  }
+  emitCover(q[apex], z);
+  emitCover(q[apex] + best * e1, z);
+  emitCover(q[apex] + best * e2, z);
+  return true;
+}
+
 void emitSilhouette()
 {
   if (cls == 2)
   {
-    emitThin(p0); emitThin(p2); emitThin(p3); emitThin(p1); // the strip of quad p0 p2 p1 p3
+    vec2 q[4] = vec2[4](ndc[p0], ndc[p2], ndc[p1], ndc[p3]);
+    if (!emitQuadCover(q, clipP[p0].z / clipP[p0].w))
+    {
+      emitThin(p0); emitThin(p2); emitThin(p3); emitThin(p1); // the strip of quad p0 p2 p1 p3
+    }
   }
   else
   {
