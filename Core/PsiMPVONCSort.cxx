@@ -170,7 +170,7 @@ std::vector<uint8_t> InDegrees(const std::vector<int8_t>& rel, int64_t n)
 // is ready (a cycle, Williams §7) the farthest remaining one is taken.
 void TopologicalOrder(const int32_t* neighbors, const std::vector<int8_t>& rel,
   const std::vector<uint64_t>& keys, std::vector<uint8_t>& indeg, std::vector<uint32_t>& order,
-  MPVONCResult& result)
+  const std::function<void(size_t)>& emittedSoFar, MPVONCResult& result)
 {
   const size_t numTets = keys.size();
   std::vector<uint64_t> heap;
@@ -188,7 +188,9 @@ void TopologicalOrder(const int32_t* neighbors, const std::vector<int8_t>& rel,
   std::vector<uint8_t> emitted(numTets, 0);
   std::vector<uint64_t> allByDepth; // built on the first cycle only
   size_t fallback = 0;
-  while (order.size() < numTets)
+  order.resize(numTets);
+  size_t k = 0; // tetrahedra emitted
+  while (k < numTets)
   {
     uint32_t t;
     if (!ready.empty())
@@ -216,7 +218,11 @@ void TopologicalOrder(const int32_t* neighbors, const std::vector<int8_t>& rel,
       result.ViolatedConstraints += indeg[t];
     }
     emitted[t] = 1;
-    order.push_back(t);
+    order[k++] = t;
+    if (emittedSoFar && k % EmittedStep == 0)
+    {
+      emittedSoFar(k);
+    }
     for (int f = 0; f < 4; ++f)
     {
       if (rel[4 * static_cast<size_t>(t) + f] == NeighborInFront)
@@ -233,21 +239,29 @@ void TopologicalOrder(const int32_t* neighbors, const std::vector<int8_t>& rel,
 } // namespace
 
 MPVONCResult SortMPVONC(const float* points4, const uint32_t* tets, size_t numTets,
-  const int32_t* neighbors, const double eye[3], bool parallel, std::vector<uint32_t>& order)
+  const int32_t* neighbors, const double eye[3], bool parallel, std::vector<uint32_t>& order,
+  const std::function<void(size_t)>& emitted)
 {
   MPVONCResult result;
   order.clear();
   if (numTets == 0)
   {
+    if (emitted)
+    {
+      emitted(0);
+    }
     return result;
   }
-  order.reserve(numTets);
   const int64_t n = static_cast<int64_t>(numTets);
   std::vector<int8_t> rel;
   std::vector<uint64_t> keys;
   BehindRelation(points4, tets, n, neighbors, eye, parallel, rel, keys, result);
   std::vector<uint8_t> indeg = InDegrees(rel, n);
-  TopologicalOrder(neighbors, rel, keys, indeg, order, result);
+  TopologicalOrder(neighbors, rel, keys, indeg, order, emitted, result);
+  if (emitted)
+  {
+    emitted(numTets);
+  }
   return result;
 }
 

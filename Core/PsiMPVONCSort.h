@@ -27,6 +27,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace psi
@@ -49,9 +50,16 @@ struct MPVONCResult
 /// direction (from the eye into the scene), as for psi::SortBackToFront.
 /// The relation across a face is decided once, from the face of the tetrahedron with the smaller
 /// id (a neighbour entry without a reciprocal one is ignored), so both sides always agree.
+/// The order is emitted farthest first, so its beginning is final long before the sort ends:
+/// `emitted`, when set, is called with the number of entries of `order` that are final (every
+/// EmittedStep tetrahedra, and once with numTets at the end). `order` has its final size before
+/// the first call, so another thread may read the entries reported so far.
 PSIVOLUMECORE_EXPORT MPVONCResult SortMPVONC(const float* points4, const uint32_t* tets,
   size_t numTets, const int32_t* neighbors, const double eye[3], bool parallel,
-  std::vector<uint32_t>& order);
+  std::vector<uint32_t>& order, const std::function<void(size_t)>& emitted = {});
+
+/// How often SortMPVONC reports its progress, in tetrahedra.
+constexpr size_t EmittedStep = 4096;
 
 } // namespace psi
 

@@ -21,9 +21,14 @@ public:
   {
     this->Centroids = ComputeCentroids(mesh->Points4.data(), mesh->Tets.data(), mesh->NumberOfTets());
   }
-  size_t Sort(const double eye[3], bool parallel, std::vector<uint32_t>& order) override
+  size_t Sort(const double eye[3], bool parallel, std::vector<uint32_t>& order,
+    const std::function<void(size_t)>& emitted) override
   {
     SortBackToFront(this->Centroids, eye, parallel, order);
+    if (emitted)
+    {
+      emitted(order.size());
+    }
     return 0;
   }
 
@@ -43,7 +48,8 @@ public:
       this->Neighbors.clear();
     }
   }
-  size_t Sort(const double eye[3], bool parallel, std::vector<uint32_t>& order) override
+  size_t Sort(const double eye[3], bool parallel, std::vector<uint32_t>& order,
+    const std::function<void(size_t)>& emitted) override
   {
     const size_t n = this->Mesh->NumberOfTets();
     if (this->Neighbors.size() != 4 * n)
@@ -51,7 +57,7 @@ public:
       ComputeTetNeighbors(this->Mesh->Tets.data(), n, this->Mesh->NumberOfPoints(), this->Neighbors);
     }
     const MPVONCResult r = SortMPVONC(this->Mesh->Points4.data(), this->Mesh->Tets.data(), n,
-      this->Neighbors.data(), eye, parallel, order);
+      this->Neighbors.data(), eye, parallel, order, emitted);
     return r.CyclesBroken;
   }
 

@@ -9,6 +9,7 @@
 #include "PsiVolumeCoreModule.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -25,8 +26,12 @@ public:
   virtual void SetMesh(const TetMesh* mesh, std::vector<int32_t> faceNeighbors) = 0;
   /// All tetrahedra, farthest first. eye: camera position, or with parallel = true the view
   /// direction (from the eye into the scene), in the mesh's coordinates. Returns the number of
-  /// cycles the sort had to break (0 for sorts that never meet any).
-  virtual size_t Sort(const double eye[3], bool parallel, std::vector<uint32_t>& order) = 0;
+  /// cycles the sort had to break (0 for sorts that never meet any). `emitted`, when set, is
+  /// called with the number of leading entries of `order` that are final, as they become final
+  /// (MPVONC: every psi::EmittedStep; the centroid sort: once, at the end) and with all of them
+  /// at the end; `order` has its final size before the first call.
+  virtual size_t Sort(const double eye[3], bool parallel, std::vector<uint32_t>& order,
+    const std::function<void(size_t)>& emitted = {}) = 0;
 };
 
 PSIVOLUMECORE_EXPORT std::unique_ptr<TetSort> NewCentroidSort();

@@ -25,7 +25,7 @@ vtkShaderProgram* PsiGeometryProjector::ReadyProgram(vtkOpenGLRenderWindow* renW
   return this->Program;
 }
 
-void PsiGeometryProjector::Draw(const PsiVisibilityOrder& order) const
+void PsiGeometryProjector::Draw(PsiVisibilityOrder& order) const
 {
   order.Draw();
 }

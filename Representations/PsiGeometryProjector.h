@@ -25,7 +25,7 @@ public:
   vtkShaderProgram* ReadyProgram(vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& f,
     const char* integrator, bool& built);
   /// Draws every tetrahedron of `order` as a point (the mesh's tetrahedron attribute bound).
-  void Draw(const PsiVisibilityOrder& order) const;
+  void Draw(PsiVisibilityOrder& order) const;
   void ReleaseGraphicsResources();
 
 private:

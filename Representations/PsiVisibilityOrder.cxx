@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <utility>
 
 namespace
 {
@@ -22,7 +23,14 @@ void EyeInModel(const double mcvc[16], bool parallel, double eye[3])
 } // namespace
 
 PsiVisibilityOrder::PsiVisibilityOrder() = default;
-PsiVisibilityOrder::~PsiVisibilityOrder() = default;
+
+PsiVisibilityOrder::~PsiVisibilityOrder()
+{
+  if (this->Worker.joinable())
+  {
+    this->Worker.join();
+  }
+}
 
 bool PsiVisibilityOrder::NeedsUpdate(
   int meshVersion, int method, const double mcvc[16], bool parallel) const
@@ -34,30 +42,75 @@ bool PsiVisibilityOrder::NeedsUpdate(
 void PsiVisibilityOrder::Update(const psi::TetMesh& mesh, int meshVersion,
   std::vector<int32_t> faceNeighbors, int method, const double mcvc[16], bool parallel)
 {
-  const auto t0 = std::chrono::steady_clock::now();
+  this->Finish();
   if (this->NeedsMesh(meshVersion, method))
   {
     this->Sort = method == MPVONC ? psi::NewMPVONCSort() : psi::NewCentroidSort();
     this->Sort->SetMesh(&mesh, std::move(faceNeighbors));
   }
-  double eye[3];
-  EyeInModel(mcvc, parallel, eye);
-  this->LastCycles = this->Sort->Sort(eye, parallel, this->Order);
+  this->Size = mesh.NumberOfTets();
   if (!this->IndexBuffer)
   {
     glGenBuffers(1, &this->IndexBuffer);
   }
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, this->Order.size() * sizeof(uint32_t),
-    this->Order.data(), GL_STREAM_DRAW);
+  glBufferData(
+    GL_ELEMENT_ARRAY_BUFFER, this->Size * sizeof(uint32_t), nullptr, GL_STREAM_DRAW);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  this->Final = this->Uploaded = 0;
+  std::array<double, 3> eye;
+  EyeInModel(mcvc, parallel, eye.data());
+  this->Worker = std::thread([this, eye, parallel]() {
+    const auto t0 = std::chrono::steady_clock::now();
+    const size_t cycles =
+      this->Sort->Sort(eye.data(), parallel, this->Order, [this](size_t n) { this->Emitted(n); });
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::lock_guard<std::mutex> guard(this->Lock);
+    this->LastCycles = cycles;
+    this->LastSortSeconds = seconds;
+  });
   this->Method = method;
   this->MeshVersion = meshVersion;
   std::copy(mcvc, mcvc + 16, this->View.begin());
   this->Parallel = parallel;
   this->OnGPU = true;
-  this->LastSortSeconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void PsiVisibilityOrder::Emitted(size_t count)
+{
+  {
+    std::lock_guard<std::mutex> guard(this->Lock);
+    this->Final = count;
+  }
+  this->Progress.notify_one();
+}
+
+void PsiVisibilityOrder::UploadThrough(size_t end)
+{
+  if (end <= this->Uploaded)
+  {
+    return;
+  }
+  {
+    std::unique_lock<std::mutex> guard(this->Lock);
+    this->Progress.wait(guard, [&] { return this->Final >= end; });
+  }
+  glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, this->Uploaded * sizeof(uint32_t),
+    (end - this->Uploaded) * sizeof(uint32_t), this->Order.data() + this->Uploaded);
+  this->Uploaded = end;
+}
+
+void PsiVisibilityOrder::Finish()
+{
+  if (!this->Worker.joinable())
+  {
+    return;
+  }
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
+  this->UploadThrough(this->Size);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  this->Worker.join();
 }
 
 namespace
@@ -74,7 +127,7 @@ void WaitAndDelete(GLsync fence)
 }
 } // namespace
 
-void PsiVisibilityOrder::Draw() const
+void PsiVisibilityOrder::Draw()
 {
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
   // Streamed in chunks so that no single draw call is unbounded (huge meshes). Mesa's llvmpipe
@@ -86,7 +139,7 @@ void PsiVisibilityOrder::Draw() const
   // slower at 2.56M; 4 x 32,768 kept its speed and 0.87 GB of peak memory (1.9 GB before).
   constexpr size_t chunk = size_t(1) << 15, InFlight = 4;
   std::array<GLsync, InFlight> fences{};
-  const size_t n = this->Order.size();
+  const size_t n = this->Size;
   for (size_t first = 0, i = 0; first < n; first += chunk, ++i)
   {
     GLsync& slot = fences[i % InFlight];
@@ -95,6 +148,7 @@ void PsiVisibilityOrder::Draw() const
       WaitAndDelete(slot);
     }
     const size_t count = std::min(chunk, n - first);
+    this->UploadThrough(first + count);
     glDrawElements(GL_POINTS, static_cast<GLsizei>(count), GL_UNSIGNED_INT,
       reinterpret_cast<const void*>(first * sizeof(uint32_t)));
     slot = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
@@ -110,6 +164,10 @@ void PsiVisibilityOrder::Draw() const
 
 void PsiVisibilityOrder::ReleaseGraphicsResources(vtkWindow*)
 {
+  if (this->Worker.joinable())
+  {
+    this->Worker.join(); // the order is dropped with the buffer
+  }
   if (this->IndexBuffer)
   {
     glDeleteBuffers(1, &this->IndexBuffer);

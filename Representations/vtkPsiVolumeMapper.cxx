@@ -145,6 +145,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     return;
   }
   const PsiFrameCamera cam = PsiFrameCamera::FromRenderer(ren, vol, I.Mesh.GetMesh().Shift);
+  bool sorted = false;
   if (I.Order.NeedsUpdate(I.Mesh.GetVersion(), this->SortMethod, cam.MCVC, cam.Parallel))
   {
     std::vector<int32_t> neighbors;
@@ -155,17 +156,21 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
         input->GetNumberOfCells(), neighbors);
     }
     I.Order.Update(I.Mesh.GetMesh(), I.Mesh.GetVersion(), std::move(neighbors),
-      this->SortMethod, cam.MCVC, cam.Parallel);
-    this->Stats.LastSortSeconds = I.Order.GetLastSortSeconds();
-    this->Stats.LastSortCycles = static_cast<vtkIdType>(I.Order.GetLastCycles());
+      this->SortMethod, cam.MCVC, cam.Parallel); // sorts while the frame draws
+    sorted = true;
   }
   this->UpdateTables(renWin, vol);
   const psi::ShaderFeatures features = this->ChooseFeatures(ren, vol, cam);
-  if (!I.Target.CaptureDepthTexture(ren, renWin, features.NearClip || features.OpaqueClip))
+  if (I.Target.CaptureDepthTexture(ren, renWin, features.NearClip || features.OpaqueClip))
   {
-    return;
+    this->DrawVolume(renWin, ren, vol, cam, features);
   }
-  this->DrawVolume(renWin, ren, vol, cam, features);
+  I.Order.Finish();
+  if (sorted)
+  {
+    this->Stats.LastSortSeconds = I.Order.GetLastSortSeconds();
+    this->Stats.LastSortCycles = static_cast<vtkIdType>(I.Order.GetLastCycles());
+  }
   this->Stats.LastRenderSeconds = SecondsSince(t0);
 }
 
@@ -201,9 +206,15 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
         draw->SetUniformi("peelRange", image);
         I.Peeling.SetShaderParameters(draw, this, vol, renWin);
       }
-      compute ? I.Compute.Draw(renWin, I.Order.GetIndexBuffer(), I.Order.GetSize(),
-                  I.Mesh.GetTetBuffer())
-              : I.Geometry.Draw(I.Order);
+      if (compute)
+      {
+        I.Order.Finish(); // the projection pass reads the whole order
+        I.Compute.Draw(renWin, I.Order.GetIndexBuffer(), I.Order.GetSize(), I.Mesh.GetTetBuffer());
+      }
+      else
+      {
+        I.Geometry.Draw(I.Order);
+      }
     };
     I.Target.DrawAndComposite(renWin, drawImage, I.Peeling.GetStage(),
       [&](vtkShaderProgram* composite) {
