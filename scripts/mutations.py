@@ -241,12 +241,16 @@ MUTATIONS = [
              "const double d = t.Axis.Length(k);", GL),
     # --- Visibility sorts (Maximo et al. 2010 §3.1; Williams 1992 §4-7) and their tie-breaks.
     Mutation("draw_order_adjacent_pairs_swapped", "Representations/PsiVisibilityOrder.cxx",
-             "  this->LastCycles = this->Sort->Sort(eye, parallel, this->Order);\n",
-             "  this->LastCycles = this->Sort->Sort(eye, parallel, this->Order);\n"
-             "  for (size_t i = 0; i + 1 < this->Order.size(); i += 50)\n"
+             "  glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, this->Uploaded * sizeof(uint32_t),\n",
+             "  for (size_t i = this->Uploaded; i + 1 < end; i += 50)\n"
              "  {\n"
              "    std::swap(this->Order[i], this->Order[i + 1]); // 2% of adjacent pairs\n"
-             "  }\n", ORDER),
+             "  }\n"
+             "  glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, this->Uploaded * sizeof(uint32_t),\n", ORDER),
+    Mutation("draw_order_chunk_not_uploaded", "Representations/PsiVisibilityOrder.cxx",
+             "  glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, this->Uploaded * sizeof(uint32_t),\n"
+             "    (end - this->Uploaded) * sizeof(uint32_t), this->Order.data() + this->Uploaded);\n",
+             "", GL),
     Mutation("centroid_distance_ignores_z", "Core/PsiVisibilitySort.cxx",
              "d = dx * dx + dy * dy + dz * dz;", "d = dx * dx + dy * dy;", ORDER),
     Mutation("centroid_front_to_back", "Core/PsiVisibilitySort.cxx",
