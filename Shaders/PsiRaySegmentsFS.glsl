@@ -5,13 +5,13 @@
 // affine function p of the window position: p = t in parallel projection, p = -1/t in
 // perspective, both growing with t. The ray enters at the largest p of the faces it enters
 // through and leaves at the smallest p of those it leaves through. Along the ray the scalar is
-// s(t) = a + t b, a and b affine in the window position.
+// s(t) = a + t b: a is affine in the window position and b constant in parallel projection,
+// the reverse in perspective.
 flat in vec4 rayFace0;
 flat in vec4 rayFaceX;
 flat in vec4 rayFaceY;
 flat in vec4 rayEnters;
-flat in vec3 scalarRayA;
-flat in vec3 scalarRayB;
+flat in vec4 scalarRay; // a0, b0, c_x, c_y (PsiRaySegmentsGS.glsl)
 smooth in vec3 isoNormal;
 
 uniform vec3 pixelRayOrigin[3]; // O = [0] + x [1] + y [2]
@@ -31,7 +31,7 @@ void readSegment(out float sf, out float sb, out float D)
   vec4 pout = mix(p, vec4(3.0e38), enters);
   float a = max(max(pin.x, pin.y), max(pin.z, pin.w));
   float b = min(min(pout.x, pout.y), min(pout.z, pout.w));
-  float rayExit;
+  float k = float(parallelProjection), rayExit;
   if (parallelProjection == 1)
   {
     rayEntry = a;
@@ -44,8 +44,8 @@ void readSegment(out float sf, out float sb, out float D)
     rayExit = max(-1.0 / b, rayEntry);
   }
   D = (rayExit - rayEntry) * length(rayStep);
-  float sa = scalarRayA.x + x.x * scalarRayA.y + x.y * scalarRayA.z;
-  float sd = scalarRayB.x + x.x * scalarRayB.y + x.y * scalarRayB.z;
+  float u = x.x * scalarRay.z + x.y * scalarRay.w;
+  float sa = scalarRay.x + k * u, sd = scalarRay.y + (1.0 - k) * u;
   sf = sa + rayEntry * sd;
   sb = sa + rayExit * sd;
 //PSI::SeparateOpacity::Segment

@@ -20,23 +20,22 @@
 //                max and min give t_enter = -1 / max p, t_exit = -1 / min p.
 // A face parallel to the rays (n . S = 0 in parallel projection; the eye on its plane in
 // perspective) bounds nothing and gets p = -BIG among the entering faces. Along the ray the linear
-// scalar s = g . X + s0 is s(t) = a + t b with a = g . O + s0 and b = g . S, both affine in (x, y)
-// as well. Four faces to a vec4; all flat outputs. (Interpolating such terms as varyings would
+// scalar s = g . X + s0 is s(t) = a + t b with a = g . O + s0 and b = g . S, one constant and
+// the other affine in (x, y): four terms. Four faces to a vec4; all flat outputs. (Interpolating such terms as varyings would
 // save the fragment shader a few multiply-adds, but the rasterizer's clipping of large triangles
 // near the eye does not keep them exact.)
 flat out vec4 rayFace0;    // p0 of each face
 flat out vec4 rayFaceX;    // px
 flat out vec4 rayFaceY;    // py
 flat out vec4 rayEnters;   // 1 where the ray enters through the face, 0 where it leaves
-flat out vec3 scalarRayA;  // a = a0 + x ax + y ay
-flat out vec3 scalarRayB;  // b likewise
+flat out vec4 scalarRay;   // a0, b0, c_x, c_y: a = a0 + k u, b = b0 + (1 - k) u with
+                           // u = x c_x + y c_y and k = 1 in parallel projection, else 0
 smooth out vec3 isoNormal; // marching-tetrahedra surface vertices only
 
 uniform vec3 pixelRayOrigin[3]; // O = [0] + x [1] + y [2]
 uniform vec3 pixelRayStep[3];   // S likewise
 
-vec4 faceP0, facePX, facePY, faceEnters;
-vec3 scalarA, scalarB;
+vec4 faceP0, facePX, facePY, faceEnters, scalarTerms;
 
 vec4 outwardPlane(int i)
 {
@@ -53,8 +52,7 @@ void setVertexSegment(vec3 p, vec3 seg)
   rayFaceX = facePX;
   rayFaceY = facePY;
   rayEnters = faceEnters;
-  scalarRayA = scalarA;
-  scalarRayB = scalarB;
+  scalarRay = scalarTerms;
 //PSI::SeparateOpacity::Vertex
 }
 
@@ -91,10 +89,11 @@ void setRayTerms()
   facePY = (parallel ? numY : denY) * scale;
   faceEnters = mix(vec4(1.0), vec4(lessThan(constant, vec4(0.0))), bounds);
   float s0 = scalar[0] - dot(gradient, viewP[0]);
-  scalarA = vec3(dot(gradient, pixelRayOrigin[0]) + s0, dot(gradient, pixelRayOrigin[1]),
-    dot(gradient, pixelRayOrigin[2]));
-  scalarB = vec3(dot(gradient, pixelRayStep[0]), dot(gradient, pixelRayStep[1]),
-    dot(gradient, pixelRayStep[2]));
+  // O varies in parallel projection, S in perspective (psi::PixelRaysOf)
+  vec3 movingX = parallel ? pixelRayOrigin[1] : pixelRayStep[1];
+  vec3 movingY = parallel ? pixelRayOrigin[2] : pixelRayStep[2];
+  scalarTerms = vec4(dot(gradient, pixelRayOrigin[0]) + s0, dot(gradient, pixelRayStep[0]),
+    dot(gradient, movingX), dot(gradient, movingY));
 }
 
 // The silhouette, at the depth of the tetrahedron's nearest vertex: the hardware depth test

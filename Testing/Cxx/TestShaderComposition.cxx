@@ -167,7 +167,7 @@ void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
   // the scalar's two ray terms and the surface normal; frontPoint + backPlane + scalarGrad; or
   // segment), the flat data of the features (piece, clipTet, isoG0 + isoJ + isoV0).
   const int components = psi::GeometryOutputComponentsPerVertex(f);
-  const int expected = 4 + (sil ? 25 : exact ? 12 : 3) + (separate ? 4 : 0) + (tri ? 1 : 0) + (f.NearClip ? 4 : 0) +
+  const int expected = 4 + (sil ? 23 : exact ? 12 : 3) + (separate ? 4 : 0) + (tri ? 1 : 0) + (f.NearClip ? 4 : 0) +
     (perFragment ? 15 : 0);
   PSI_CHECK(components == expected, "components %d, expected %d:\n%s", components, expected,
     what.c_str());
