@@ -20,8 +20,94 @@ struct FaceEntry
 };
 } // namespace
 
-TetConnectivityResult ComputeTetNeighbors(
-  const uint32_t* tets, size_t numTets, size_t numPoints, std::vector<int32_t>& neighbors)
+namespace
+{
+// The three point ids of face f of tetrahedron v, ascending.
+void SortedFace(const uint32_t* v, int f, uint32_t s[3])
+{
+  s[0] = v[FaceVerts[f][0]];
+  s[1] = v[FaceVerts[f][1]];
+  s[2] = v[FaceVerts[f][2]];
+  if (s[0] > s[1])
+    std::swap(s[0], s[1]);
+  if (s[1] > s[2])
+    std::swap(s[1], s[2]);
+  if (s[0] > s[1])
+    std::swap(s[0], s[1]);
+}
+
+// Pairs the faces whose smallest point id is in [lo, hi): scatters them into their buckets
+// (`start`: bucket offsets by smallest id) with the (middle, largest) key, then per bucket (in
+// parallel) sorts by key and pairs equal runs. Every face belongs to exactly one bucket, so each
+// neighbour slot is written by one thread only.
+void PairFaces(const uint32_t* tets, size_t numTets, const std::vector<uint32_t>& start,
+  size_t lo, size_t hi, std::vector<FaceEntry>& entries, std::vector<int32_t>& neighbors,
+  TetConnectivityResult& result)
+{
+  const uint32_t base = start[lo];
+  entries.resize(start[hi] - base);
+  std::vector<uint32_t> fill(start.begin() + lo, start.begin() + hi);
+  for (size_t t = 0; t < numTets; ++t)
+  {
+    for (int f = 0; f < 4; ++f)
+    {
+      uint32_t s[3];
+      SortedFace(tets + 4 * t, f, s);
+      if (s[0] >= lo && s[0] < hi)
+      {
+        entries[fill[s[0] - lo]++ - base] = { (static_cast<uint64_t>(s[1]) << 32) | s[2],
+          static_cast<uint32_t>(4 * t + f) };
+      }
+    }
+  }
+  vtkSMPThreadLocal<TetConnectivityResult> local;
+  vtkSMPTools::For(static_cast<vtkIdType>(lo), static_cast<vtkIdType>(hi),
+    [&](vtkIdType begin, vtkIdType end) {
+      TetConnectivityResult& r = local.Local();
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        FaceEntry* first = entries.data() + (start[p] - base);
+        FaceEntry* last = entries.data() + (start[p + 1] - base);
+        std::sort(first, last, [](const FaceEntry& x, const FaceEntry& y) {
+          return x.Key < y.Key || (x.Key == y.Key && x.Face < y.Face);
+        });
+        for (FaceEntry* run = first; run != last;)
+        {
+          FaceEntry* runEnd = run + 1;
+          while (runEnd != last && runEnd->Key == run->Key)
+          {
+            ++runEnd;
+          }
+          const ptrdiff_t count = runEnd - run;
+          if (count == 1)
+          {
+            ++r.BoundaryFaces;
+          }
+          else if (count == 2)
+          {
+            ++r.InteriorFaces;
+            neighbors[run[0].Face] = static_cast<int32_t>(run[1].Face / 4);
+            neighbors[run[1].Face] = static_cast<int32_t>(run[0].Face / 4);
+          }
+          else
+          {
+            ++r.NonManifoldFaces; // left at -1 on every side, see the header
+          }
+          run = runEnd;
+        }
+      }
+    });
+  for (const TetConnectivityResult& r : local)
+  {
+    result.InteriorFaces += r.InteriorFaces;
+    result.BoundaryFaces += r.BoundaryFaces;
+    result.NonManifoldFaces += r.NonManifoldFaces;
+  }
+}
+} // namespace
+
+TetConnectivityResult ComputeTetNeighbors(const uint32_t* tets, size_t numTets,
+  size_t numPoints, std::vector<int32_t>& neighbors, size_t facesPerPass)
 {
   TetConnectivityResult result;
   neighbors.assign(4 * numTets, -1);
@@ -41,87 +127,35 @@ TetConnectivityResult ComputeTetNeighbors(
   result.NumberOfPoints = numPoints;
   const size_t numFaces = 4 * numTets;
 
-  // 1. Bucket sizes: faces per smallest point id.
+  // Bucket offsets: faces per smallest point id.
   std::vector<uint32_t> start(numPoints + 1, 0);
   for (size_t t = 0; t < numTets; ++t)
   {
-    const uint32_t* v = tets + 4 * t;
     for (int f = 0; f < 4; ++f)
     {
-      const uint32_t a = v[FaceVerts[f][0]], b = v[FaceVerts[f][1]], c = v[FaceVerts[f][2]];
-      ++start[std::min(a, std::min(b, c)) + 1];
+      uint32_t s[3];
+      SortedFace(tets + 4 * t, f, s);
+      ++start[s[0] + 1];
     }
   }
   for (size_t p = 0; p < numPoints; ++p)
   {
     start[p + 1] += start[p];
   }
-
-  // 2. Scatter the faces into their buckets with the (middle, largest) key.
-  std::vector<FaceEntry> entries(numFaces);
+  // The buckets in passes of at most `budget` faces (at least one bucket each): a table of all
+  // faces would take 16 bytes per face, 164 MB at 2.56M tetrahedra, on top of the mesh.
+  const size_t budget =
+    facesPerPass > 0 ? facesPerPass : std::max<size_t>(numFaces / 4, size_t(1) << 20);
+  std::vector<FaceEntry> entries;
+  for (size_t lo = 0; lo < numPoints;)
   {
-    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-    for (size_t t = 0; t < numTets; ++t)
+    size_t hi = lo + 1;
+    while (hi < numPoints && start[hi + 1] - start[lo] <= budget)
     {
-      const uint32_t* v = tets + 4 * t;
-      for (int f = 0; f < 4; ++f)
-      {
-        uint32_t s[3] = { v[FaceVerts[f][0]], v[FaceVerts[f][1]], v[FaceVerts[f][2]] };
-        if (s[0] > s[1])
-          std::swap(s[0], s[1]);
-        if (s[1] > s[2])
-          std::swap(s[1], s[2]);
-        if (s[0] > s[1])
-          std::swap(s[0], s[1]);
-        entries[fill[s[0]]++] = { (static_cast<uint64_t>(s[1]) << 32) | s[2],
-          static_cast<uint32_t>(4 * t + f) };
-      }
+      ++hi;
     }
-  }
-
-  // 3. Per bucket (in parallel): sort by key and pair equal runs. Every face entry belongs to
-  // exactly one bucket, so each neighbour slot is written by one thread only.
-  vtkSMPThreadLocal<TetConnectivityResult> local;
-  vtkSMPTools::For(0, static_cast<vtkIdType>(numPoints), [&](vtkIdType begin, vtkIdType end) {
-    TetConnectivityResult& r = local.Local();
-    for (vtkIdType p = begin; p < end; ++p)
-    {
-      FaceEntry* first = entries.data() + start[p];
-      FaceEntry* last = entries.data() + start[p + 1];
-      std::sort(first, last, [](const FaceEntry& x, const FaceEntry& y) {
-        return x.Key < y.Key || (x.Key == y.Key && x.Face < y.Face);
-      });
-      for (FaceEntry* run = first; run != last;)
-      {
-        FaceEntry* runEnd = run + 1;
-        while (runEnd != last && runEnd->Key == run->Key)
-        {
-          ++runEnd;
-        }
-        const ptrdiff_t count = runEnd - run;
-        if (count == 1)
-        {
-          ++r.BoundaryFaces;
-        }
-        else if (count == 2)
-        {
-          ++r.InteriorFaces;
-          neighbors[run[0].Face] = static_cast<int32_t>(run[1].Face / 4);
-          neighbors[run[1].Face] = static_cast<int32_t>(run[0].Face / 4);
-        }
-        else
-        {
-          ++r.NonManifoldFaces; // left at -1 on every side, see the header
-        }
-        run = runEnd;
-      }
-    }
-  });
-  for (const TetConnectivityResult& r : local)
-  {
-    result.InteriorFaces += r.InteriorFaces;
-    result.BoundaryFaces += r.BoundaryFaces;
-    result.NonManifoldFaces += r.NonManifoldFaces;
+    PairFaces(tets, numTets, start, lo, hi, entries, neighbors, result);
+    lo = hi;
   }
   return result;
 }

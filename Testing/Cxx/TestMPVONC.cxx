@@ -375,6 +375,15 @@ void TestConnectivity()
     "1M: %zu boundary (expected %zu), %zu interior", big.BoundaryFaces, boundary,
     big.InteriorFaces);
   PSI_CHECK(nb2 == m.Neighbors, "connectivity not deterministic");
+  // In passes (4 of them above): the same as in one pass, and as in passes of one bucket each.
+  std::vector<int32_t> onePass, tinyPasses;
+  psi::ComputeTetNeighbors(m.Tets.data(), m.NumTets(), 0, onePass, 4 * m.NumTets());
+  PSI_CHECK(nb2 == onePass, "connectivity in passes differs from one pass");
+  const Mesh small = Tetrahedralize(9, 8, 7, 0, origin);
+  std::vector<int32_t> smallOne;
+  psi::ComputeTetNeighbors(small.Tets.data(), small.NumTets(), 0, smallOne, 4 * small.NumTets());
+  psi::ComputeTetNeighbors(small.Tets.data(), small.NumTets(), 0, tinyPasses, 1);
+  PSI_CHECK(tinyPasses == smallOne, "connectivity in one-bucket passes differs from one pass");
   std::printf("connectivity of %zu tets: %.3f s (%zu interior, %zu boundary faces)\n", m.NumTets(),
     s, big.InteriorFaces, big.BoundaryFaces);
 }
