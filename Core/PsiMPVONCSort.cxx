@@ -89,23 +89,21 @@ int8_t FaceRelation(const float* points4, const uint32_t* v, int f, const double
   return (so > 0) == (se > 0) ? NeighborBehind : NeighborInFront;
 }
 
-// Phase I (Williams §4, "the behind relation") and the fallback keys. Each interior face is
+// Phase I (Williams §4, "the behind relation"). Each interior face is
 // decided once, by the tetrahedron with the smaller id, and written on both sides, so the two
 // sides always agree: that consistency makes the sort end in a permutation whatever the
 // floating-point signs.
 void BehindRelation(const float* points4, const uint32_t* tets, int64_t n,
   const int32_t* neighbors, const double eye[3], bool parallel, std::vector<int8_t>& rel,
-  std::vector<uint64_t>& keys, MPVONCResult& result)
+  MPVONCResult& result)
 {
   rel.assign(4 * static_cast<size_t>(n), NoOrder);
-  keys.resize(static_cast<size_t>(n));
   vtkSMPThreadLocal<Counts> localCounts;
   vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
     Counts& c = localCounts.Local();
     for (vtkIdType t = begin; t < end; ++t)
     {
       const uint32_t* v = tets + 4 * t;
-      keys[t] = CentroidKey(points4, v, static_cast<uint32_t>(t), eye, parallel);
       for (int f = 0; f < 4; ++f)
       {
         const int64_t nb = neighbors[4 * t + f];
@@ -166,20 +164,21 @@ std::vector<uint8_t> InDegrees(const std::vector<int8_t>& rel, int64_t n)
 }
 
 // Phase III (Williams §5, with MPVONC's depth heuristic of §6): Kahn's topological sort in which
-// the ready tetrahedron taken next is always the farthest one (min-heap on the key); when none
-// is ready (a cycle, Williams §7) the farthest remaining one is taken.
-void TopologicalOrder(const int32_t* neighbors, const std::vector<int8_t>& rel,
-  const std::vector<uint64_t>& keys, std::vector<uint8_t>& indeg, std::vector<uint32_t>& order,
+// the ready tetrahedron taken next is always the farthest one (min-heap on the key, computed when
+// the tetrahedron becomes ready); when none is ready (a cycle, Williams §7) the farthest
+// remaining one is taken.
+void TopologicalOrder(const std::function<uint64_t(uint32_t)>& key, const int32_t* neighbors,
+  const std::vector<int8_t>& rel, std::vector<uint8_t>& indeg, std::vector<uint32_t>& order,
   const std::function<void(size_t)>& emittedSoFar, MPVONCResult& result)
 {
-  const size_t numTets = keys.size();
+  const size_t numTets = indeg.size();
   std::vector<uint64_t> heap;
   heap.reserve(1024);
   for (size_t t = 0; t < numTets; ++t)
   {
     if (indeg[t] == 0)
     {
-      heap.push_back(keys[t]);
+      heap.push_back(key(static_cast<uint32_t>(t)));
     }
   }
   result.Sources = heap.size();
@@ -206,7 +205,11 @@ void TopologicalOrder(const int32_t* neighbors, const std::vector<int8_t>& rel,
     {
       if (allByDepth.empty())
       {
-        allByDepth = keys;
+        allByDepth.resize(numTets);
+        for (size_t i = 0; i < numTets; ++i)
+        {
+          allByDepth[i] = key(static_cast<uint32_t>(i));
+        }
         vtkSMPTools::Sort(allByDepth.begin(), allByDepth.end());
       }
       while (emitted[allByDepth[fallback] & 0xffffffffu])
@@ -230,7 +233,7 @@ void TopologicalOrder(const int32_t* neighbors, const std::vector<int8_t>& rel,
         const uint32_t nb = static_cast<uint32_t>(neighbors[4 * static_cast<size_t>(t) + f]);
         if (indeg[nb] > 0 && --indeg[nb] == 0 && !emitted[nb])
         {
-          ready.push(keys[nb]);
+          ready.push(key(nb));
         }
       }
     }
@@ -254,10 +257,12 @@ MPVONCResult SortMPVONC(const float* points4, const uint32_t* tets, size_t numTe
   }
   const int64_t n = static_cast<int64_t>(numTets);
   std::vector<int8_t> rel;
-  std::vector<uint64_t> keys;
-  BehindRelation(points4, tets, n, neighbors, eye, parallel, rel, keys, result);
+  BehindRelation(points4, tets, n, neighbors, eye, parallel, rel, result);
   std::vector<uint8_t> indeg = InDegrees(rel, n);
-  TopologicalOrder(neighbors, rel, keys, indeg, order, emitted, result);
+  const auto key = [&](uint32_t t) {
+    return CentroidKey(points4, tets + 4 * static_cast<size_t>(t), t, eye, parallel);
+  };
+  TopologicalOrder(key, neighbors, rel, indeg, order, emitted, result);
   if (emitted)
   {
     emitted(numTets);
