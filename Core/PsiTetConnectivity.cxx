@@ -145,7 +145,7 @@ TetConnectivityResult ComputeTetNeighbors(const uint32_t* tets, size_t numTets,
   // The buckets in passes of at most `budget` faces (at least one bucket each): a table of all
   // faces would take 16 bytes per face, 164 MB at 2.56M tetrahedra, on top of the mesh.
   const size_t budget =
-    facesPerPass > 0 ? facesPerPass : std::max<size_t>(numFaces / 4, size_t(1) << 20);
+    facesPerPass > 0 ? facesPerPass : std::max<size_t>(numFaces / 8, size_t(1) << 20);
   std::vector<FaceEntry> entries;
   for (size_t lo = 0; lo < numPoints;)
   {

@@ -32,7 +32,7 @@ struct TetConnectivityResult
 /// or -1 for a boundary face. Faces shared by more than two tetrahedra (non-manifold) are counted
 /// and get -1 on every side: no pairing of them is right for a visibility order.
 /// numPoints may be 0 (then it is computed as 1 + the largest id). numTets must be < 2^31.
-/// The faces are paired in passes of at most `facesPerPass` faces (0: a quarter of them, at
+/// The faces are paired in passes of at most `facesPerPass` faces (0: an eighth of them, at
 /// least 2^20), so that the working memory stays a fraction of the mesh's.
 PSIVOLUMECORE_EXPORT TetConnectivityResult ComputeTetNeighbors(const uint32_t* tets,
   size_t numTets, size_t numPoints, std::vector<int32_t>& neighbors, size_t facesPerPass = 0);
