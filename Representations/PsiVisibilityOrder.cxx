@@ -107,9 +107,15 @@ void PsiVisibilityOrder::Finish()
   {
     return;
   }
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
-  this->UploadThrough(this->Size);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  if (this->Uploaded < this->Size)
+  {
+    // Called with a vertex array bound (the compute projector): keep its element buffer.
+    GLint bound = 0;
+    glGetIntegerv(GL_ELEMENT_ARRAY_BUFFER_BINDING, &bound);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
+    this->UploadThrough(this->Size);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLuint>(bound));
+  }
   this->Worker.join();
 }
 

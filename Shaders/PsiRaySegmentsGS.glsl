@@ -21,9 +21,9 @@
 // A face parallel to the rays (n . S = 0 in parallel projection; the eye on its plane in
 // perspective) bounds nothing and gets p = -BIG among the entering faces. Along the ray the linear
 // scalar s = g . X + s0 is s(t) = a + t b with a = g . O + s0 and b = g . S, one constant and
-// the other affine in (x, y): four terms. Four faces to a vec4; all flat outputs. (Interpolating such terms as varyings would
-// save the fragment shader a few multiply-adds, but the rasterizer's clipping of large triangles
-// near the eye does not keep them exact.)
+// the other affine in (x, y): four terms. Four faces to a vec4; all flat outputs.
+// (Interpolating such terms as varyings would save the fragment shader a few multiply-adds, but
+// the rasterizer's clipping of large triangles near the eye does not keep them exact.)
 flat out vec4 rayFace0;    // p0 of each face
 flat out vec4 rayFaceX;    // px
 flat out vec4 rayFaceY;    // py
