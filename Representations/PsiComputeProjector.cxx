@@ -1,6 +1,7 @@
 #include "PsiComputeProjector.h"
 
 #include "PsiComputeProjectorComposer.h"
+#include "PsiVisibilityOrder.h"
 
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -159,19 +160,17 @@ void PsiComputeProjector::ReserveBuffers(size_t tetsPerPass)
   this->ReservedIndices = indices;
 }
 
-void PsiComputeProjector::Draw(vtkOpenGLRenderWindow* renWin, unsigned int orderBuffer,
-  size_t count, unsigned int tetBuffer)
+void PsiComputeProjector::Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder& order)
 {
   const size_t bytesPerTet = size_t(this->SlotVertices) * this->Vec4sPerVertex * 16 +
     size_t(this->SlotTriangles) * 3 * sizeof(GLuint);
   const size_t perPass =
-    std::min<size_t>({ size_t(1) << 16, std::max<size_t>(64, BufferBudget / bytesPerTet),
-      std::max<size_t>(count, 1) });
+    std::min<size_t>({ PsiVisibilityOrder::ChunkTets,
+      std::max<size_t>(64, BufferBudget / bytesPerTet), std::max<size_t>(order.GetSize(), 1) });
   this->ReserveBuffers((perPass + 63) / 64 * 64);
   const GLuint compute = static_cast<GLuint>(this->Compute->GetHandle());
   const GLuint draw = static_cast<GLuint>(this->DrawProgram->GetHandle());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, orderBuffer);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, tetBuffer);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, order.GetStreamBuffer());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, this->Vertices);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, this->Indices);
   glBindVertexArray(this->VAO);
@@ -195,19 +194,22 @@ void PsiComputeProjector::Draw(vtkOpenGLRenderWindow* renWin, unsigned int order
   glEnable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
   const GLint firstLoc = glGetUniformLocation(compute, "firstTet");
   const GLint countLoc = glGetUniformLocation(compute, "tetCount");
-  for (size_t first = 0; first < count; first += perPass)
-  {
-    const size_t n = std::min(perPass, count - first);
-    glUseProgram(compute);
-    glUniform1ui(firstLoc, static_cast<GLuint>(first));
-    glUniform1ui(countLoc, static_cast<GLuint>(n));
-    glDispatchCompute(static_cast<GLuint>((n + 63) / 64), 1, 1);
-    glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
-    glUseProgram(draw);
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(n * this->SlotTriangles * 3),
-      GL_UNSIGNED_INT, nullptr);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); // the next pass rewrites the buffers
-  }
+  // each chunk of the order, as it is streamed, in passes that fit the buffers
+  order.Draw([&](size_t chunkFirst, size_t chunkCount) {
+    for (size_t first = chunkFirst; first < chunkFirst + chunkCount; first += perPass)
+    {
+      const size_t n = std::min(perPass, chunkFirst + chunkCount - first);
+      glUseProgram(compute);
+      glUniform1ui(firstLoc, static_cast<GLuint>(first));
+      glUniform1ui(countLoc, static_cast<GLuint>(n));
+      glDispatchCompute(static_cast<GLuint>((n + 63) / 64), 1, 1);
+      glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+      glUseProgram(draw);
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(n * this->SlotTriangles * 3),
+        GL_UNSIGNED_INT, nullptr);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); // the next pass rewrites the buffers
+    }
+  });
   glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
   for (GLuint loc : attributes)
   {

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <string>
 
+class PsiVisibilityOrder;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkWindow;
@@ -39,11 +40,10 @@ public:
     const psi::ShaderFeatures& f, const char* integrator, std::string& error, bool& built);
   /// The draw program of the last ReadyComputeProgram, made ready (bound) by VTK's shader cache.
   vtkShaderProgram* ReadyDrawProgram(vtkOpenGLRenderWindow* renWin);
-  /// Projects and draws `count` tetrahedra: the order is the uint32 buffer `orderBuffer` of
-  /// tetrahedron ids, `tetBuffer` holds four uint32 point ids per tetrahedron. Both programs'
+  /// Projects and draws the tetrahedra of `order`, chunk by chunk as it streams their point ids
+  /// (PsiVisibilityOrder::Draw), in passes that fit the buffers. Both programs'
   /// uniforms must be set. Leaves no program bound (VTK's shader cache is told).
-  void Draw(vtkOpenGLRenderWindow* renWin, unsigned int orderBuffer, size_t count,
-    unsigned int tetBuffer);
+  void Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder& order);
   void ReleaseGraphicsResources(vtkWindow* win);
 
   /// Bytes of the reused vertex and index buffers (their size bounds the tetrahedra per pass).

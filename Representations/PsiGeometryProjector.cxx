@@ -6,6 +6,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkShaderProgram.h"
+#include "vtk_glew.h"
 
 vtkShaderProgram* PsiGeometryProjector::ReadyProgram(vtkOpenGLRenderWindow* renWin,
   const psi::ShaderFeatures& f, const char* integrator, bool& built)
@@ -25,9 +26,21 @@ vtkShaderProgram* PsiGeometryProjector::ReadyProgram(vtkOpenGLRenderWindow* renW
   return this->Program;
 }
 
-void PsiGeometryProjector::Draw(PsiVisibilityOrder& order) const
+void PsiGeometryProjector::Draw(PsiVisibilityOrder& order, vtkShaderProgram* program) const
 {
-  order.Draw();
+  // each tetrahedron is one point whose attribute is its four point ids (PsiVolumeVS.glsl)
+  const GLint loc = glGetAttribLocation(static_cast<GLuint>(program->GetHandle()), "tetPointIds");
+  if (loc < 0)
+  {
+    return;
+  }
+  glBindBuffer(GL_ARRAY_BUFFER, order.GetStreamBuffer());
+  glEnableVertexAttribArray(static_cast<GLuint>(loc));
+  glVertexAttribIPointer(static_cast<GLuint>(loc), 4, GL_UNSIGNED_INT, 0, nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  order.Draw([](size_t first, size_t count) {
+    glDrawArrays(GL_POINTS, static_cast<GLint>(first), static_cast<GLsizei>(count));
+  });
 }
 
 void PsiGeometryProjector::ReleaseGraphicsResources()

@@ -24,8 +24,9 @@ public:
   /// compile (VTK reports the log).
   vtkShaderProgram* ReadyProgram(vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& f,
     const char* integrator, bool& built);
-  /// Draws every tetrahedron of `order` as a point (the mesh's tetrahedron attribute bound).
-  void Draw(PsiVisibilityOrder& order) const;
+  /// Draws every tetrahedron of `order` as a point with `program` (bound, with the mesh's
+  /// vertex array), its four point ids streamed by the order.
+  void Draw(PsiVisibilityOrder& order, vtkShaderProgram* program) const;
   void ReleaseGraphicsResources();
 
 private:

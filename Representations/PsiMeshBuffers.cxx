@@ -114,14 +114,9 @@ bool PsiMeshBuffers::Update(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBa
   }
   if (!this->OnGPU)
   {
-    glGenBuffers(1, &this->TetBuffer);
     glGenVertexArrays(1, &this->VAO);
   }
-  this->UploadPoints(renWin);
-  glBindBuffer(GL_ARRAY_BUFFER, this->TetBuffer);
-  glBufferData(GL_ARRAY_BUFFER, this->Mesh.Tets.size() * sizeof(uint32_t),
-    this->Mesh.Tets.data(), GL_STATIC_DRAW);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  this->UploadPoints(renWin); // the cells reach the GPU in visibility order (PsiVisibilityOrder)
   this->OnGPU = true;
   this->GradientsOnGPU = false;
   return fits;
@@ -158,13 +153,6 @@ void PsiMeshBuffers::Activate(vtkShaderProgram* program, bool gradients)
     program->SetUniformi("pointGradients", this->GradientTexture->GetTextureUnit());
   }
   glBindVertexArray(this->VAO);
-  glBindBuffer(GL_ARRAY_BUFFER, this->TetBuffer);
-  const GLint loc = glGetAttribLocation(program->GetHandle(), "tetPointIds");
-  if (loc >= 0) // the compute projector reads the ids from the buffer instead
-  {
-    glEnableVertexAttribArray(loc);
-    glVertexAttribIPointer(loc, 4, GL_UNSIGNED_INT, 0, nullptr);
-  }
 }
 
 void PsiMeshBuffers::Deactivate()
@@ -187,10 +175,9 @@ void PsiMeshBuffers::ReleaseGraphicsResources(vtkWindow* win)
 {
   if (this->OnGPU)
   {
-    glDeleteBuffers(1, &this->TetBuffer);
     glDeleteVertexArrays(1, &this->VAO);
   }
-  this->TetBuffer = this->VAO = 0;
+  this->VAO = 0;
   this->PointsBuffer->ReleaseGraphicsResources();
   this->PointsTexture->ReleaseGraphicsResources(win);
   this->OpacityBuffer->ReleaseGraphicsResources();

@@ -1,7 +1,8 @@
-// PsiMeshBuffers: the tetrahedral mesh on the GPU (Maximo et al. 2010 §3.2: the mesh is uploaded
-// once and each tetrahedron streamed as one point). Points (x, y, z, scalar) are a texture
-// buffer the geometry shader fetches by id; each tetrahedron is one uvec4 vertex attribute of
-// its four point ids; the smoothed point gradients (isosurface normals) a second texture buffer,
+// PsiMeshBuffers: the tetrahedral mesh on the GPU (Maximo et al. 2010 §3.2: the points are
+// uploaded once and each tetrahedron streamed as one point). Points (x, y, z, scalar) are a
+// texture buffer the geometry shader fetches by id; the tetrahedra stay on the CPU
+// (psi::TetMesh), and PsiVisibilityOrder streams them in order as uvec4 vertex attributes of their
+// four point ids; the smoothed point gradients (isosurface normals) a second texture buffer,
 // uploaded only when smooth isosurfaces ask for them; a separate opacity array's scalars a third
 // (`opacityScalars`), only when there is one.
 #ifndef PsiMeshBuffers_h
@@ -53,13 +54,11 @@ public:
   /// Uploads the smoothed point gradients once per mesh.
   void UpdateGradients(vtkOpenGLRenderWindow* renWin);
 
-  /// Binds the point texture (and the gradients when `gradients`) and the tetrahedron attribute.
+  /// Binds the point texture (and the gradients when `gradients`) and the vertex array.
   void Activate(vtkShaderProgram* program, bool gradients);
   void Deactivate();
   void ReleaseGraphicsResources(vtkWindow* win);
 
-  /// The buffer of four uint32 point ids per tetrahedron (the compute projector reads it).
-  unsigned int GetTetBuffer() const { return this->TetBuffer; }
   const psi::TetMesh& GetMesh() const { return this->Mesh; }
   /// Bumped when points or cells change (not for new scalars): the visibility order compares it.
   int GetVersion() const { return this->Version; }
@@ -83,7 +82,6 @@ private:
   vtkNew<vtkTextureObject> GradientTexture;
   bool GradientsOnGPU = false;
   bool GradientsActive = false;
-  unsigned int TetBuffer = 0;
   unsigned int VAO = 0;
   bool OnGPU = false;
 };

@@ -48,16 +48,17 @@ void PsiVisibilityOrder::Update(const psi::TetMesh& mesh, int meshVersion,
     this->Sort = method == MPVONC ? psi::NewMPVONCSort() : psi::NewCentroidSort();
     this->Sort->SetMesh(&mesh, std::move(faceNeighbors));
   }
+  this->Mesh = &mesh;
   this->Size = mesh.NumberOfTets();
-  if (!this->IndexBuffer)
+  if (!this->StreamBuffer)
   {
-    glGenBuffers(1, &this->IndexBuffer);
+    glGenBuffers(1, &this->StreamBuffer);
+    glBindBuffer(GL_ARRAY_BUFFER, this->StreamBuffer);
+    glBufferData(GL_ARRAY_BUFFER, InFlight * ChunkTets * 4 * sizeof(uint32_t), nullptr,
+      GL_STREAM_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
   }
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
-  glBufferData(
-    GL_ELEMENT_ARRAY_BUFFER, this->Size * sizeof(uint32_t), nullptr, GL_STREAM_DRAW);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
-  this->Final = this->Uploaded = 0;
+  this->Final = 0;
   std::array<double, 3> eye;
   EyeInModel(mcvc, parallel, eye.data());
   this->Worker = std::thread([this, eye, parallel]() {
@@ -86,37 +87,35 @@ void PsiVisibilityOrder::Emitted(size_t count)
   this->Progress.notify_one();
 }
 
-void PsiVisibilityOrder::UploadThrough(size_t end)
+void PsiVisibilityOrder::StreamChunk(size_t first, size_t count, size_t at)
 {
-  if (end <= this->Uploaded)
-  {
-    return;
-  }
   {
     std::unique_lock<std::mutex> guard(this->Lock);
-    this->Progress.wait(guard, [&] { return this->Final >= end; });
+    this->Progress.wait(guard, [&] { return this->Final >= first + count; });
   }
-  glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, this->Uploaded * sizeof(uint32_t),
-    (end - this->Uploaded) * sizeof(uint32_t), this->Order.data() + this->Uploaded);
-  this->Uploaded = end;
+  this->Staging.resize(ChunkTets * 4);
+  const uint32_t* tets = this->Mesh->Tets.data();
+  for (size_t k = 0; k < count; ++k)
+  {
+    const uint32_t cell = this->Order[first + k];
+    std::copy_n(tets + 4 * size_t(cell), 4, &this->Staging[4 * k]);
+    if (this->RecordDrawn)
+    {
+      this->Drawn.push_back(cell);
+    }
+  }
+  glBindBuffer(GL_ARRAY_BUFFER, this->StreamBuffer);
+  glBufferSubData(GL_ARRAY_BUFFER, at * 4 * sizeof(uint32_t), count * 4 * sizeof(uint32_t),
+    this->Staging.data());
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
 void PsiVisibilityOrder::Finish()
 {
-  if (!this->Worker.joinable())
+  if (this->Worker.joinable())
   {
-    return;
+    this->Worker.join();
   }
-  if (this->Uploaded < this->Size)
-  {
-    // Called with a vertex array bound (the compute projector): keep its element buffer.
-    GLint bound = 0;
-    glGetIntegerv(GL_ELEMENT_ARRAY_BUFFER_BINDING, &bound);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
-    this->UploadThrough(this->Size);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLuint>(bound));
-  }
-  this->Worker.join();
 }
 
 namespace
@@ -133,31 +132,30 @@ void WaitAndDelete(GLsync fence)
 }
 } // namespace
 
-void PsiVisibilityOrder::Draw()
+void PsiVisibilityOrder::Draw(const std::function<void(size_t, size_t)>& drawChunk)
 {
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
-  // Streamed in chunks so that no single draw call is unbounded (huge meshes). Mesa's llvmpipe
-  // bins each chunk's triangles, with all their fragment inputs, until its rasterizer threads
-  // reach them; its geometry stage outruns them, so binned chunks piled up (1.1 GB more peak
-  // memory at 2.56M tetrahedra). A fence after each chunk and a wait for the one InFlight chunks
-  // back keep at most InFlight chunks binned without draining the pipeline (a GPU has long
-  // finished them). Each fence also ends llvmpipe's scene: chunks of 16,384 made the frame 3%
-  // slower at 2.56M; 4 x 32,768 kept its speed and 0.87 GB of peak memory (1.9 GB before),
-  // 2 x 32,768 too with 23 MB less, once each cell was one triangle.
-  constexpr size_t chunk = size_t(1) << 15, InFlight = 2;
+  // Streamed in chunks through InFlight slots of the stream buffer, so that the GPU holds no
+  // copy of the cells and no single draw call is unbounded. Mesa's llvmpipe bins each chunk's
+  // triangles, with all their fragment inputs, until its rasterizer threads reach them; its
+  // geometry stage outruns them, so binned chunks piled up (1.1 GB more peak memory at 2.56M
+  // tetrahedra). A fence after each chunk and a wait for the one InFlight chunks back keep at
+  // most InFlight chunks binned without draining the pipeline, and free that chunk's slot for
+  // the next. Each fence also ends llvmpipe's scene: chunks of 16,384 made the frame 3% slower
+  // at 2.56M; 4 x 32,768 kept its speed and 0.87 GB of peak memory (1.9 GB before), 2 x 32,768
+  // too with 23 MB less, once each cell was one triangle.
   std::array<GLsync, InFlight> fences{};
   const size_t n = this->Size;
-  for (size_t first = 0, i = 0; first < n; first += chunk, ++i)
+  this->Drawn.clear();
+  for (size_t first = 0, i = 0; first < n; first += ChunkTets, ++i)
   {
     GLsync& slot = fences[i % InFlight];
     if (slot)
     {
       WaitAndDelete(slot);
     }
-    const size_t count = std::min(chunk, n - first);
-    this->UploadThrough(first + count);
-    glDrawElements(GL_POINTS, static_cast<GLsizei>(count), GL_UNSIGNED_INT,
-      reinterpret_cast<const void*>(first * sizeof(uint32_t)));
+    const size_t count = std::min(ChunkTets, n - first), at = (i % InFlight) * ChunkTets;
+    this->StreamChunk(first, count, at);
+    drawChunk(at, count);
     slot = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
   }
   for (GLsync fence : fences)
@@ -175,10 +173,10 @@ void PsiVisibilityOrder::ReleaseGraphicsResources(vtkWindow*)
   {
     this->Worker.join(); // the order is dropped with the buffer
   }
-  if (this->IndexBuffer)
+  if (this->StreamBuffer)
   {
-    glDeleteBuffers(1, &this->IndexBuffer);
+    glDeleteBuffers(1, &this->StreamBuffer);
   }
-  this->IndexBuffer = 0;
+  this->StreamBuffer = 0;
   this->OnGPU = false;
 }

@@ -1,5 +1,5 @@
-// PsiVisibilityOrder: the back-to-front order of the tetrahedra on the GPU, as an index buffer
-// of GL_POINTS (one per tetrahedron, Maximo et al. 2010 §3.1). It owns the sort (centroid or
+// PsiVisibilityOrder: the back-to-front order of the tetrahedra, streamed to the GPU as GL_POINTS
+// (one per tetrahedron carrying its four point ids, Maximo et al. 2010 §3.1). It owns the sort (centroid or
 // MPVONC, psi::TetSort) and re-sorts only when the mesh, the view or the sort method changes.
 //
 // The sort runs on a worker thread while the frame draws. MPVONC emits the farthest
@@ -14,6 +14,7 @@
 #include <array>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -41,33 +42,40 @@ public:
   {
     return !this->Sort || meshVersion != this->MeshVersion || method != this->Method;
   }
-  /// Starts sorting `mesh` for the view (on the worker thread); `mesh` must stay unchanged until
-  /// Finish. `faceNeighbors` (may be empty) are offered to the sort when the mesh or the method
-  /// changed (see psi::TetSort::SetMesh).
+  /// Starts sorting `mesh` for the view (on the worker thread); `mesh` must stay unchanged while
+  /// this order draws it. `faceNeighbors` (may be empty) are offered to the sort when the mesh
+  /// or the method changed (see psi::TetSort::SetMesh).
   void Update(const psi::TetMesh& mesh, int meshVersion, std::vector<int32_t> faceNeighbors,
     int method, const double mcvc[16], bool parallel);
-  /// Draws every tetrahedron as a point in order (the VAO of the tetrahedra bound), each chunk
-  /// as soon as the sort has finished it.
-  void Draw();
-  /// Waits for the sort and uploads the whole order (before the index buffer is used otherwise,
-  /// and before GetOrder, GetLastCycles and GetLastSortSeconds are read).
+  /// Streams the tetrahedra in order, chunk by chunk, each as soon as the sort has finished it:
+  /// writes the chunk's four point ids per tetrahedron to the stream buffer (GetStreamBuffer)
+  /// and calls drawChunk(first, count), `first` being the chunk's first tetrahedron there.
+  void Draw(const std::function<void(size_t first, size_t count)>& drawChunk);
+  /// Waits for the sort (before GetOrder, GetLastCycles and GetLastSortSeconds are read).
   void Finish();
   void ReleaseGraphicsResources(vtkWindow* win);
 
-  /// The order on the GPU: a buffer of uint32 tetrahedron ids, and their number.
-  unsigned int GetIndexBuffer() const { return this->IndexBuffer; }
+  /// The buffer Draw streams the ordered tetrahedra through: InFlight chunks of ChunkTets uvec4
+  /// point ids (the GPU keeps no copy of the mesh's cells).
+  unsigned int GetStreamBuffer() const { return this->StreamBuffer; }
+  static constexpr size_t ChunkTets = size_t(1) << 15;
+  static constexpr size_t InFlight = 2;
+  /// Tetrahedra in the order.
   size_t GetSize() const { return this->Size; }
   size_t GetLastCycles() const { return this->LastCycles; }
-  /// The order last uploaded, farthest first (what Draw draws).
-  const std::vector<uint32_t>& GetOrder() const { return this->Order; }
+  /// Testing aid, off by default: keep the tetrahedra in the order the last Draw streamed them
+  /// to the GPU (GetDrawn).
+  void SetRecordDrawn(bool on) { this->RecordDrawn = on; }
+  const std::vector<uint32_t>& GetDrawn() const { return this->Drawn; }
   double GetLastSortSeconds() const { return this->LastSortSeconds; }
 
 private:
   PsiVisibilityOrder(const PsiVisibilityOrder&) = delete;
   void operator=(const PsiVisibilityOrder&) = delete;
 
-  /// Uploads the order up to entry `end`, once the sort has emitted it.
-  void UploadThrough(size_t end);
+  /// Writes the point ids of Order[first, first + count) to the stream buffer at tetrahedron
+  /// `at`, once the sort has emitted them.
+  void StreamChunk(size_t first, size_t count, size_t at);
   /// The sort's report from its thread: entries of Order that are final.
   void Emitted(size_t count);
 
@@ -76,14 +84,17 @@ private:
   std::mutex Lock;
   std::condition_variable Progress;
   size_t Final = 0;    ///< entries of Order the sort has emitted (guarded by Lock)
-  size_t Uploaded = 0; ///< entries of Order in IndexBuffer
   int Method = -1;
   int MeshVersion = -1;
   std::array<double, 16> View{};
   bool Parallel = false;
   std::vector<uint32_t> Order;
   size_t Size = 0; ///< tetrahedra in the order being drawn
-  unsigned int IndexBuffer = 0;
+  const psi::TetMesh* Mesh = nullptr;
+  std::vector<uint32_t> Staging; ///< one chunk's point ids on their way to StreamBuffer
+  bool RecordDrawn = false;
+  std::vector<uint32_t> Drawn;
+  unsigned int StreamBuffer = 0;
   bool OnGPU = false;
   size_t LastCycles = 0;
   double LastSortSeconds = 0;

@@ -208,12 +208,11 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
       }
       if (compute)
       {
-        I.Order.Finish(); // the projection pass reads the whole order
-        I.Compute.Draw(renWin, I.Order.GetIndexBuffer(), I.Order.GetSize(), I.Mesh.GetTetBuffer());
+        I.Compute.Draw(renWin, I.Order);
       }
       else
       {
-        I.Geometry.Draw(I.Order);
+        I.Geometry.Draw(I.Order, draw);
       }
     };
     I.Target.DrawAndComposite(renWin, drawImage, I.Peeling.GetStage(),
@@ -467,9 +466,14 @@ int vtkPsiVolumeMapper::GetMeshVersion() const
   return this->Impl->Mesh.GetVersion();
 }
 
+void vtkPsiVolumeMapper::SetRecordDrawOrder(bool on)
+{
+  this->Impl->Order.SetRecordDrawn(on);
+}
+
 const std::vector<uint32_t>& vtkPsiVolumeMapper::GetLastDrawOrder() const
 {
-  return this->Impl->Order.GetOrder();
+  return this->Impl->Order.GetDrawn();
 }
 
 void vtkPsiVolumeMapper::ResetStatistics()

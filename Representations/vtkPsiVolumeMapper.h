@@ -235,8 +235,12 @@ public:
   /// Cycles MPVONC had to break in the last sort.
   vtkIdType GetLastSortCycles() const { return this->Stats.LastSortCycles; }
   double GetLastRenderSeconds() const { return this->Stats.LastRenderSeconds; }
+  /// Testing aid, off by default: record the tetrahedra in the order each frame streams them to
+  /// the GPU (GetLastDrawOrder; 4 bytes per tetrahedron).
+  void SetRecordDrawOrder(bool on);
   /// The tetrahedra in the order the last frame drew them (farthest first; ids of the gathered
-  /// mesh, which are the input's cell ids when every cell is a drawable tetrahedron).
+  /// mesh, which are the input's cell ids when every cell is a drawable tetrahedron), when
+  /// recorded (SetRecordDrawOrder); empty otherwise.
   const std::vector<uint32_t>& GetLastDrawOrder() const;
   /// Bumped when the mesh is gathered again (points or cells changed), not for new scalars.
   int GetMeshVersion() const;

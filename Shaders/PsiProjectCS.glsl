@@ -16,11 +16,11 @@
 // provoking vertex of a strip would, and unused indices are the primitive-restart index.
 layout(local_size_x = 64) in;
 
-layout(std430, binding = 0) readonly buffer PsiVisibilityOrder { uint visibilityOrder[]; };
+// the point ids of the tetrahedra in visibility order, as PsiVisibilityOrder streams them
 layout(std430, binding = 1) readonly buffer PsiTetPoints { uvec4 tetPoints[]; };
 layout(std430, binding = 2) writeonly buffer PsiProjectedVertices { uvec4 projectedVertices[]; };
 layout(std430, binding = 3) writeonly buffer PsiProjectedIndices { uint projectedIndices[]; };
-uniform uint firstTet; // this pass draws visibilityOrder[firstTet, firstTet + tetCount)
+uniform uint firstTet; // this pass draws tetPoints[firstTet, firstTet + tetCount)
 uniform uint tetCount;
 
 vec4 psiPosition; // gl_Position of the geometry code
@@ -76,7 +76,7 @@ void main()
   psiEmitted = 0;
   psiStrip = 0;
   psiTriangles = 0;
-  tetPointIds = tetPoints[visibilityOrder[firstTet + psiSlot]];
+  tetPointIds = tetPoints[firstTet + psiSlot];
   psiVertexMain();
   psiGeometryMain();
   for (int t = psiTriangles; t < PSI_SLOT_TRIANGLES; ++t)

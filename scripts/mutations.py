@@ -182,8 +182,8 @@ MUTATIONS = [
              "vec2 front = vec2(-outer.x, -inner.x), back = vec2(inner.y, outer.y);",
              "vec2 front = vec2(-outer.x, -inner.x), back = vec2(-outer.x, outer.y);", PEELED),
     Mutation("draw_chunks_every_other", "Representations/PsiVisibilityOrder.cxx",
-             "  for (size_t first = 0, i = 0; first < n; first += chunk, ++i)",
-             "  for (size_t first = 0, i = 0; first < n; first += 2 * chunk, ++i)", GL),
+             "  for (size_t first = 0, i = 0; first < n; first += ChunkTets, ++i)",
+             "  for (size_t first = 0, i = 0; first < n; first += 2 * ChunkTets, ++i)", GL),
     Mutation("time_step_gathers_mesh", "Representations/PsiMeshBuffers.cxx",
              "  return { { ug->GetPoints(), ug->GetCells(), ug->GetCellTypesArray() } };",
              "  return { { input, nullptr, nullptr } };", GL),
@@ -244,16 +244,16 @@ MUTATIONS = [
              "const double d = t.Axis.Length(k);", GL),
     # --- Visibility sorts (Maximo et al. 2010 §3.1; Williams 1992 §4-7) and their tie-breaks.
     Mutation("draw_order_adjacent_pairs_swapped", "Representations/PsiVisibilityOrder.cxx",
-             "  glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, this->Uploaded * sizeof(uint32_t),\n",
-             "  for (size_t i = this->Uploaded; i + 1 < end; i += 50)\n"
-             "  {\n"
-             "    std::swap(this->Order[i], this->Order[i + 1]); // 2% of adjacent pairs\n"
-             "  }\n"
-             "  glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, this->Uploaded * sizeof(uint32_t),\n", ORDER),
+             "    const uint32_t cell = this->Order[first + k];\n",
+             "    const size_t j = k % 50 == 0 && k + 1 < count ? k + 1 : k % 50 == 1 ? k - 1 : k;\n"
+             "    const uint32_t cell = this->Order[first + j]; // 2% of adjacent pairs swapped\n",
+             ORDER),
     Mutation("draw_order_chunk_not_uploaded", "Representations/PsiVisibilityOrder.cxx",
-             "  glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, this->Uploaded * sizeof(uint32_t),\n"
-             "    (end - this->Uploaded) * sizeof(uint32_t), this->Order.data() + this->Uploaded);\n",
+             "  glBufferSubData(GL_ARRAY_BUFFER, at * 4 * sizeof(uint32_t), count * 4 * sizeof(uint32_t),\n"
+             "    this->Staging.data());\n",
              "", GL),
+    Mutation("draw_order_chunk_drawn_from_other_slot", "Representations/PsiVisibilityOrder.cxx",
+             "    drawChunk(at, count);", "    drawChunk(0, count);", GL),
     Mutation("centroid_distance_ignores_z", "Core/PsiVisibilitySort.cxx",
              "d = dx * dx + dy * dy + dz * dz;", "d = dx * dx + dy * dy;", ORDER),
     Mutation("centroid_front_to_back", "Core/PsiVisibilitySort.cxx",

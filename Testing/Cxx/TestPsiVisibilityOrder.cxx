@@ -296,6 +296,7 @@ int main()
   prop->SetColor(color);
   prop->SetScalarOpacity(opacity);
   vtkNew<vtkPsiVolumeMapper> mapper;
+  mapper->SetRecordDrawOrder(true); // what each frame streams to the GPU
   vtkNew<vtkVolume> vol;
   vol->SetMapper(mapper);
   vol->SetProperty(prop);
