@@ -23,6 +23,7 @@
 #ifndef PsiMPVONCSort_h
 #define PsiMPVONCSort_h
 
+#include "PsiTetCells.h"
 #include "PsiVolumeCoreModule.h"
 
 #include <cstddef>
@@ -54,7 +55,7 @@ struct MPVONCResult
 /// `emitted`, when set, is called with the number of entries of `order` that are final (every
 /// EmittedStep tetrahedra, and once with numTets at the end). `order` has its final size before
 /// the first call, so another thread may read the entries reported so far.
-PSIVOLUMECORE_EXPORT MPVONCResult SortMPVONC(const float* points4, const uint32_t* tets,
+PSIVOLUMECORE_EXPORT MPVONCResult SortMPVONC(const float* points4, TetCells tets,
   size_t numTets, const int32_t* neighbors, const double eye[3], bool parallel,
   std::vector<uint32_t>& order, const std::function<void(size_t)>& emitted = {});
 

@@ -40,7 +40,7 @@ void SortedFace(const uint32_t* v, int f, uint32_t s[3])
 // (`start`: bucket offsets by smallest id) with the (middle, largest) key, then per bucket (in
 // parallel) sorts by key and pairs equal runs. Every face belongs to exactly one bucket, so each
 // neighbour slot is written by one thread only.
-void PairFaces(const uint32_t* tets, size_t numTets, const std::vector<uint32_t>& start,
+void PairFaces(TetCells tets, size_t numTets, const std::vector<uint32_t>& start,
   size_t lo, size_t hi, std::vector<FaceEntry>& entries, std::vector<int32_t>& neighbors,
   TetConnectivityResult& result)
 {
@@ -51,8 +51,9 @@ void PairFaces(const uint32_t* tets, size_t numTets, const std::vector<uint32_t>
   {
     for (int f = 0; f < 4; ++f)
     {
-      uint32_t s[3];
-      SortedFace(tets + 4 * t, f, s);
+      uint32_t v[4], s[3];
+      tets.Get(t, v);
+      SortedFace(v, f, s);
       if (s[0] >= lo && s[0] < hi)
       {
         entries[fill[s[0] - lo]++ - base] = { (static_cast<uint64_t>(s[1]) << 32) | s[2],
@@ -106,7 +107,7 @@ void PairFaces(const uint32_t* tets, size_t numTets, const std::vector<uint32_t>
 }
 } // namespace
 
-TetConnectivityResult ComputeTetNeighbors(const uint32_t* tets, size_t numTets,
+TetConnectivityResult ComputeTetNeighbors(TetCells tets, size_t numTets,
   size_t numPoints, std::vector<int32_t>& neighbors, size_t facesPerPass)
 {
   TetConnectivityResult result;
@@ -120,7 +121,7 @@ TetConnectivityResult ComputeTetNeighbors(const uint32_t* tets, size_t numTets,
     uint32_t maxId = 0;
     for (size_t i = 0; i < 4 * numTets; ++i)
     {
-      maxId = std::max(maxId, tets[i]);
+      maxId = std::max(maxId, tets(i / 4, static_cast<int>(i % 4)));
     }
     numPoints = static_cast<size_t>(maxId) + 1;
   }
@@ -133,8 +134,9 @@ TetConnectivityResult ComputeTetNeighbors(const uint32_t* tets, size_t numTets,
   {
     for (int f = 0; f < 4; ++f)
     {
-      uint32_t s[3];
-      SortedFace(tets + 4 * t, f, s);
+      uint32_t v[4], s[3];
+      tets.Get(t, v);
+      SortedFace(v, f, s);
       ++start[s[0] + 1];
     }
   }

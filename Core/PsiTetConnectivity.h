@@ -17,6 +17,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "PsiTetCells.h"
+
 namespace psi
 {
 
@@ -34,7 +36,7 @@ struct TetConnectivityResult
 /// numPoints may be 0 (then it is computed as 1 + the largest id). numTets must be < 2^31.
 /// The faces are paired in passes of at most `facesPerPass` faces (0: an eighth of them, at
 /// least 2^20), so that the working memory stays a fraction of the mesh's.
-PSIVOLUMECORE_EXPORT TetConnectivityResult ComputeTetNeighbors(const uint32_t* tets,
+PSIVOLUMECORE_EXPORT TetConnectivityResult ComputeTetNeighbors(TetCells tets,
   size_t numTets, size_t numPoints, std::vector<int32_t>& neighbors, size_t facesPerPass = 0);
 
 /// Bit i set (1 << i) where face i of the tetrahedron is a boundary face (neighbour -1).

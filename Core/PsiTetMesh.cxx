@@ -1,9 +1,11 @@
 #include "PsiTetMesh.h"
 
+#include "vtkCellArray.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -132,6 +134,43 @@ void GatherTets(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cell
   }
 }
 
+// Point data on cells that are all tetrahedra with finite scalars: the mesh's cells are the
+// input's own connectivity (tetrahedron i is cell i, its points the input's), which the mesh
+// then reads in place. False, borrowing nothing, otherwise.
+bool BorrowTets(
+  vtkUnstructuredGridBase* input, const std::vector<char>& pointFinite, TetMesh& m)
+{
+  vtkUnstructuredGrid* ug = vtkUnstructuredGrid::SafeDownCast(input);
+  vtkCellArray* cells = ug ? ug->GetCells() : nullptr;
+  vtkUnsignedCharArray* types = ug ? ug->GetCellTypesArray() : nullptr;
+  const vtkIdType nc = input->GetNumberOfCells();
+  if (!cells || !types || nc == 0 || types->GetNumberOfValues() != nc ||
+    cells->GetNumberOfConnectivityIds() != 4 * nc ||
+    input->GetNumberOfPoints() >= (vtkIdType(1) << 31))
+  {
+    return false;
+  }
+  const unsigned char* type = types->GetPointer(0);
+  if (std::any_of(type, type + nc, [](unsigned char t) { return t != VTK_TETRA; }) ||
+    std::find(pointFinite.begin(), pointFinite.end(), 0) != pointFinite.end())
+  {
+    return false; // cells to skip: gather a copy
+  }
+  if (cells->IsStorage64Bit())
+  {
+    m.Borrowed = cells->GetConnectivityArray64();
+    m.BorrowedCells = TetCells(cells->GetConnectivityArray64()->GetPointer(0));
+  }
+  else // ids below 2^31, read as unsigned
+  {
+    m.Borrowed = cells->GetConnectivityArray32();
+    m.BorrowedCells =
+      TetCells(reinterpret_cast<const uint32_t*>(cells->GetConnectivityArray32()->GetPointer(0)));
+  }
+  m.BorrowedTets = static_cast<size_t>(nc);
+  return true;
+}
+
 // [lo, hi] made a non-empty range (0..1 when nothing was seen).
 void SetRange(double lo, double hi, double range[2])
 {
@@ -156,21 +195,24 @@ void MeasureTets(TetMesh& m, bool edges = true)
   double olo = lo, ohi = hi;
   double minEdge2 = std::numeric_limits<double>::infinity();
   const bool opacity = !m.Opacity.empty();
-  for (size_t t = 0; t < m.Tets.size(); t += 4)
+  const TetCells cells = m.Cells();
+  for (size_t t = 0; t < m.NumberOfTets(); ++t)
   {
+    uint32_t v[4];
+    cells.Get(t, v);
     for (int a = 0; a < 4; ++a)
     {
-      const float* p = &m.Points4[4 * static_cast<size_t>(m.Tets[t + a])];
+      const float* p = &m.Points4[4 * static_cast<size_t>(v[a])];
       lo = std::min<double>(lo, p[3]);
       hi = std::max<double>(hi, p[3]);
       if (opacity)
       {
-        olo = std::min<double>(olo, m.Opacity[m.Tets[t + a]]);
-        ohi = std::max<double>(ohi, m.Opacity[m.Tets[t + a]]);
+        olo = std::min<double>(olo, m.Opacity[v[a]]);
+        ohi = std::max<double>(ohi, m.Opacity[v[a]]);
       }
       for (int c = a + 1; c < 4 && edges; ++c)
       {
-        const float* q = &m.Points4[4 * static_cast<size_t>(m.Tets[t + c])];
+        const float* q = &m.Points4[4 * static_cast<size_t>(v[c])];
         const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
           (p[2] - q[2]) * (p[2] - q[2]);
         maxEdge2 = std::max(maxEdge2, d2);
@@ -222,7 +264,10 @@ TetMesh GatherTetMesh(vtkUnstructuredGridBase* input, vtkDataArray* scalars, boo
   {
     GatherPoints(input, scalars, component, m, pointFinite);
   }
-  GatherTets(input, scalars, cellScalars, component, pointFinite, m);
+  if (cellScalars || !BorrowTets(input, pointFinite, m))
+  {
+    GatherTets(input, scalars, cellScalars, component, pointFinite, m);
+  }
   MeasureTets(m);
   return m;
 }
@@ -303,7 +348,7 @@ bool FaceNeighborsFromArray(const TetMesh& mesh, vtkDataArray* cellNeighbors,
 std::string DescribeSkippedCells(const TetMesh& m)
 {
   std::string out;
-  if (m.NonTetCells && m.Tets.empty() && !m.NonFiniteTets)
+  if (m.NonTetCells && m.NumberOfTets() == 0 && !m.NonFiniteTets)
   {
     return "found no volume cells in the input (" + std::to_string(m.NonTetCells) +
       " surface, line or vertex cells): nothing to volume-render. Use a Surface representation.";
@@ -331,13 +376,16 @@ std::vector<float> PointGradients(const TetMesh& m)
     o[1] = a[2] * b[0] - a[0] * b[2];
     o[2] = a[0] * b[1] - a[1] * b[0];
   };
-  for (size_t t = 0; t + 3 < m.Tets.size(); t += 4)
+  const TetCells cells = m.Cells();
+  for (size_t t = 0; t < m.NumberOfTets(); ++t)
   {
-    const float* p0 = &m.Points4[4 * static_cast<size_t>(m.Tets[t])];
+    uint32_t ids[4];
+    cells.Get(t, ids);
+    const float* p0 = &m.Points4[4 * static_cast<size_t>(ids[0])];
     double e[3][3], ds[3];
     for (int k = 0; k < 3; ++k)
     {
-      const float* pk = &m.Points4[4 * static_cast<size_t>(m.Tets[t + k + 1])];
+      const float* pk = &m.Points4[4 * static_cast<size_t>(ids[k + 1])];
       for (int c = 0; c < 3; ++c)
       {
         e[k][c] = static_cast<double>(pk[c]) - p0[c];
@@ -357,7 +405,7 @@ std::vector<float> PointGradients(const TetMesh& m)
     const double w = std::abs(det) / 6.0; // the tetrahedron's volume
     for (int v = 0; v < 4; ++v)
     {
-      double* a = &acc[4 * static_cast<size_t>(m.Tets[t + v])];
+      double* a = &acc[4 * static_cast<size_t>(ids[v])];
       for (int k = 0; k < 3; ++k)
       {
         a[k] += w * (ds[0] * c23[k] + ds[1] * c31[k] + ds[2] * c12[k]) / det;

@@ -8,7 +8,11 @@
 #ifndef PsiTetMesh_h
 #define PsiTetMesh_h
 
+#include "PsiTetCells.h"
 #include "PsiVolumeCoreModule.h"
+
+#include "vtkDataArray.h"
+#include "vtkSmartPointer.h"
 
 #include <cmath>
 #include <cstddef>
@@ -32,7 +36,13 @@ struct PSIVOLUMECORE_EXPORT TetMesh
   /// empty otherwise.
   std::vector<float> Opacity;
   double OpacityRange[2] = { 0, 1 }; ///< of Opacity over the drawn tetrahedra (never empty)
-  std::vector<uint32_t> Tets;              ///< 4 point ids per tetrahedron
+  /// 4 point ids per tetrahedron; empty when they are the input's own connectivity (Borrowed)
+  std::vector<uint32_t> Tets;
+  /// The input's connectivity array, when every input cell is a drawable tetrahedron of point
+  /// data: the mesh then reads its cells there (Cells) instead of copying them.
+  vtkSmartPointer<vtkDataArray> Borrowed;
+  TetCells BorrowedCells; ///< Borrowed's values
+  size_t BorrowedTets = 0;
   /// Input cell of each tetrahedron; empty when tetrahedron i is input cell i for every i.
   std::vector<uint32_t> SourceCells;
   int64_t NonTetCells = 0;   ///< input cells skipped for not being tetrahedra
@@ -41,7 +51,9 @@ struct PSIVOLUMECORE_EXPORT TetMesh
   double MinEdgeLength = 0;  ///< shortest edge (sets the pre-integration table's length axis)
   bool CellScalars = false;  ///< gathered with cell scalars (private points per tetrahedron)
 
-  size_t NumberOfTets() const { return this->Tets.size() / 4; }
+  size_t NumberOfTets() const { return this->Borrowed ? this->BorrowedTets : this->Tets.size() / 4; }
+  /// The four point ids of each tetrahedron, wherever they are kept.
+  TetCells Cells() const { return this->Borrowed ? this->BorrowedCells : TetCells(this->Tets.data()); }
   size_t NumberOfPoints() const { return this->Points4.size() / 4; }
 };
 

@@ -19,7 +19,7 @@ class CentroidSort : public TetSort
 public:
   void SetMesh(const TetMesh* mesh, std::vector<int32_t>) override
   {
-    this->Centroids = ComputeCentroids(mesh->Points4.data(), mesh->Tets.data(), mesh->NumberOfTets());
+    this->Centroids = ComputeCentroids(mesh->Points4.data(), mesh->Cells(), mesh->NumberOfTets());
   }
   size_t Sort(const double eye[3], bool parallel, std::vector<uint32_t>& order,
     const std::function<void(size_t)>& emitted) override
@@ -54,9 +54,9 @@ public:
     const size_t n = this->Mesh->NumberOfTets();
     if (this->Neighbors.size() != 4 * n)
     {
-      ComputeTetNeighbors(this->Mesh->Tets.data(), n, this->Mesh->NumberOfPoints(), this->Neighbors);
+      ComputeTetNeighbors(this->Mesh->Cells(), n, this->Mesh->NumberOfPoints(), this->Neighbors);
     }
-    const MPVONCResult r = SortMPVONC(this->Mesh->Points4.data(), this->Mesh->Tets.data(), n,
+    const MPVONCResult r = SortMPVONC(this->Mesh->Points4.data(), this->Mesh->Cells(), n,
       this->Neighbors.data(), eye, parallel, order, emitted);
     return r.CyclesBroken;
   }
@@ -72,7 +72,7 @@ bool HasPointAt(const TetMesh& m, uint32_t other, uint32_t p)
   const float* q = &m.Points4[4 * static_cast<size_t>(p)];
   for (int v = 0; v < 4; ++v)
   {
-    const float* r = &m.Points4[4 * static_cast<size_t>(m.Tets[4 * static_cast<size_t>(other) + v])];
+    const float* r = &m.Points4[4 * static_cast<size_t>(m.Cells()(other, v))];
     if (r[0] == q[0] && r[1] == q[1] && r[2] == q[2])
     {
       return true;
@@ -103,7 +103,7 @@ bool FaceNeighborsMatch(const TetMesh& m, const std::vector<int32_t>& nb)
         bool match = static_cast<size_t>(j) < n && j != t;
         for (int v = 0; v < 4 && match; ++v) // face f is opposite vertex f
         {
-          match = v == f || HasPointAt(m, static_cast<uint32_t>(j), m.Tets[4 * t + v]);
+          match = v == f || HasPointAt(m, static_cast<uint32_t>(j), m.Cells()(t, v));
         }
         if (!match)
         {

@@ -37,7 +37,7 @@ uint32_t OrderedBits(float f)
 }
 } // namespace
 
-std::vector<float> ComputeCentroids(const float* points4, const uint32_t* tets, size_t numTets)
+std::vector<float> ComputeCentroids(const float* points4, TetCells tets, size_t numTets)
 {
   std::vector<float> c(3 * numTets);
   Parallel(
@@ -51,7 +51,7 @@ std::vector<float> ComputeCentroids(const float* points4, const uint32_t* tets, 
                            float s[3] = { 0, 0, 0 };
                            for (int v = 0; v < 4; ++v)
                            {
-                             const float* p = points4 + 4 * static_cast<size_t>(tets[4 * t + v]);
+                             const float* p = points4 + 4 * static_cast<size_t>(tets(t, v));
                              s[0] += p[0];
                              s[1] += p[1];
                              s[2] += p[2];

@@ -8,6 +8,7 @@
 #ifndef PsiVisibilitySort_h
 #define PsiVisibilitySort_h
 
+#include "PsiTetCells.h"
 #include "PsiVolumeCoreModule.h"
 
 #include <cstddef>
@@ -19,7 +20,7 @@ namespace psi
 
 /// Centroids (x, y, z per tetrahedron) of `numTets` cells given by 4 point ids each.
 PSIVOLUMECORE_EXPORT std::vector<float> ComputeCentroids(
-  const float* points4, const uint32_t* tets, size_t numTets);
+  const float* points4, TetCells tets, size_t numTets);
 
 /// Fills `order` with the ids of all tetrahedra, farthest first.
 /// eye: camera position (perspective) or, with parallel = true, the view direction (from the eye

@@ -94,11 +94,11 @@ void PsiVisibilityOrder::StreamChunk(size_t first, size_t count, size_t at)
     this->Progress.wait(guard, [&] { return this->Final >= first + count; });
   }
   this->Staging.resize(ChunkTets * 4);
-  const uint32_t* tets = this->Mesh->Tets.data();
+  const psi::TetCells tets = this->Mesh->Cells();
   for (size_t k = 0; k < count; ++k)
   {
     const uint32_t cell = this->Order[first + k];
-    std::copy_n(tets + 4 * size_t(cell), 4, &this->Staging[4 * k]);
+    tets.Get(cell, &this->Staging[4 * k]);
     if (this->RecordDrawn)
     {
       this->Drawn.push_back(cell);

@@ -15,10 +15,12 @@
 #include "PsiTransferFunctionAnalysis.h"
 #include "vtkPsiConformingTetrahedralize.h"
 
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
+#include "vtkIdList.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -63,8 +65,72 @@ vtkSmartPointer<vtkUnstructuredGrid> Tetrahedralized(int n)
 std::vector<int32_t> Computed(const psi::TetMesh& m)
 {
   std::vector<int32_t> nb;
-  psi::ComputeTetNeighbors(m.Tets.data(), m.NumberOfTets(), m.NumberOfPoints(), nb);
+  psi::ComputeTetNeighbors(m.Cells(), m.NumberOfTets(), m.NumberOfPoints(), nb);
   return nb;
+}
+
+// The four point ids of every tetrahedron, wherever the mesh keeps them.
+std::vector<uint32_t> CellIds(const psi::TetMesh& m)
+{
+  std::vector<uint32_t> ids(4 * m.NumberOfTets());
+  for (size_t t = 0; t < m.NumberOfTets(); ++t)
+  {
+    m.Cells().Get(t, &ids[4 * t]);
+  }
+  return ids;
+}
+
+// The input's connectivity, cell by cell.
+std::vector<uint32_t> InputIds(vtkUnstructuredGrid* ug)
+{
+  std::vector<uint32_t> ids;
+  vtkNew<vtkIdList> pts;
+  for (vtkIdType c = 0; c < ug->GetNumberOfCells(); ++c)
+  {
+    ug->GetCellPoints(c, pts);
+    for (vtkIdType k = 0; k < pts->GetNumberOfIds(); ++k)
+    {
+      ids.push_back(static_cast<uint32_t>(pts->GetId(k)));
+    }
+  }
+  return ids;
+}
+
+// A mesh of tetrahedra with point data reads its cells from the input's connectivity (64- or
+// 32-bit storage) instead of copying them; one with a cell to skip keeps its own copy.
+void TestBorrowedCells()
+{
+  auto ug = Tetrahedralized(4);
+  vtkDataArray* s = ug->GetPointData()->GetArray("s");
+  const psi::TetMesh m = psi::GatherTetMesh(ug, s, false);
+  PSI_CHECK(m.Borrowed && m.Tets.empty(), "tetrahedra with point data: cells borrowed");
+  PSI_CHECK(m.NumberOfTets() == static_cast<size_t>(ug->GetNumberOfCells()) &&
+      CellIds(m) == InputIds(ug),
+    "borrowed cells are the input's");
+  vtkNew<vtkUnstructuredGrid> narrow;
+  narrow->DeepCopy(ug);
+  narrow->GetCells()->ConvertTo32BitStorage();
+  const psi::TetMesh m32 = psi::GatherTetMesh(narrow, narrow->GetPointData()->GetArray("s"), false);
+  PSI_CHECK(m32.Borrowed && CellIds(m32) == InputIds(ug), "32-bit connectivity borrowed too");
+  PSI_CHECK(m32.ScalarRange[0] == m.ScalarRange[0] && m32.ScalarRange[1] == m.ScalarRange[1] &&
+      m32.MaxEdgeLength == m.MaxEdgeLength && m32.MinEdgeLength == m.MinEdgeLength,
+    "same measures from either storage");
+  vtkNew<vtkDoubleArray> holed;
+  holed->DeepCopy(s);
+  holed->SetComponent(17, 0, std::numeric_limits<double>::quiet_NaN());
+  const psi::TetMesh nan = psi::GatherTetMesh(ug, holed, false);
+  PSI_CHECK(!nan.Borrowed && nan.NonFiniteTets > 0 &&
+      nan.NumberOfTets() + nan.NonFiniteTets == static_cast<size_t>(ug->GetNumberOfCells()),
+    "a NaN scalar: its tetrahedra skipped, the rest copied");
+  const std::vector<uint32_t> ids = CellIds(m); // before the input changes below
+  const psi::TetMesh copied = psi::GatherTetMesh(ug, ug->GetCellData()->GetArray("c"), true);
+  PSI_CHECK(!copied.Borrowed && copied.Tets.size() == 4 * copied.NumberOfTets(),
+    "cell scalars: private points, cells copied");
+  const vtkIdType tri[3] = { 0, 1, 2 };
+  ug->InsertNextCell(VTK_TRIANGLE, 3, tri);
+  const psi::TetMesh mixed = psi::GatherTetMesh(ug, s, false);
+  PSI_CHECK(!mixed.Borrowed && mixed.NumberOfTets() == ids.size() / 4 && CellIds(mixed) == ids,
+    "a cell to skip: cells copied, the same tetrahedra");
 }
 
 bool Sorts(const psi::TetMesh& m, std::vector<int32_t> nb)
@@ -172,10 +238,10 @@ void TestTimeStep()
   {
     next->SetValue(i, 3.0 * s->GetComponent(i, 0) + 1.0);
   }
-  const std::vector<uint32_t> tets = m.Tets;
+  const std::vector<uint32_t> tets = CellIds(m);
   PSI_CHECK(psi::UpdateTetMeshScalars(m, next), "scalars replaced");
   const psi::TetMesh fresh = psi::GatherTetMesh(ug, next, false);
-  PSI_CHECK(m.Points4 == fresh.Points4 && m.Tets == tets &&
+  PSI_CHECK(m.Points4 == fresh.Points4 && CellIds(m) == tets &&
       m.ScalarRange[0] == fresh.ScalarRange[0] && m.ScalarRange[1] == fresh.ScalarRange[1] &&
       m.MaxEdgeLength == fresh.MaxEdgeLength,
     "a time step equals the mesh gathered again");
@@ -230,6 +296,7 @@ void TestVectorComponents()
 int main()
 {
   TestFilterNeighbors();
+  TestBorrowedCells();
   TestSkippedCells();
   TestCellScalars();
   TestStaleArray();
