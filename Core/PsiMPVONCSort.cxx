@@ -208,7 +208,8 @@ std::vector<uint8_t> InDegrees(const std::vector<uint8_t>& rel, int64_t n)
 // the ready tetrahedron taken next is always the farthest one (min-heap on the key, computed when
 // the tetrahedron becomes ready); when none is ready (a cycle, Williams §7) the farthest
 // remaining one is taken.
-void TopologicalOrder(const std::function<uint64_t(uint32_t)>& key, const int32_t* neighbors,
+template <class Key>
+void TopologicalOrder(const Key& key, const int32_t* neighbors,
   const std::vector<uint8_t>& rel, std::vector<uint8_t>& indeg, std::vector<uint32_t>& order,
   const std::function<void(size_t)>& emittedSoFar, MPVONCResult& result)
 {
