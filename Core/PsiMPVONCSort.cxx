@@ -1,5 +1,7 @@
 #include "PsiMPVONCSort.h"
 
+#include "PsiParallel.h"
+
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
@@ -298,9 +300,12 @@ MPVONCResult SortMPVONC(const float* points4, TetCells tets, size_t numTets,
     return result;
   }
   const int64_t n = static_cast<int64_t>(numTets);
-  std::vector<uint8_t> rel;
-  BehindRelation(points4, tets, n, neighbors, eye, parallel, rel, result);
-  std::vector<uint8_t> indeg = InDegrees(rel, n);
+  std::vector<uint8_t> rel, indeg;
+  // Phases I and II on all cores: nothing is emitted, so nothing is drawn, until they end.
+  Parallel([&] {
+    BehindRelation(points4, tets, n, neighbors, eye, parallel, rel, result);
+    indeg = InDegrees(rel, n);
+  });
   const auto key = [&](uint32_t t) {
     uint32_t v[4];
     tets.Get(t, v);

@@ -1,6 +1,7 @@
 #include "PsiTetSort.h"
 
 #include "PsiMPVONCSort.h"
+#include "PsiParallel.h"
 #include "PsiTetConnectivity.h"
 #include "PsiVisibilitySort.h"
 
@@ -54,7 +55,9 @@ public:
     const size_t n = this->Mesh->NumberOfTets();
     if (this->Neighbors.size() != 4 * n)
     {
-      ComputeTetNeighbors(this->Mesh->Cells(), n, this->Mesh->NumberOfPoints(), this->Neighbors);
+      Parallel([&] {
+        ComputeTetNeighbors(this->Mesh->Cells(), n, this->Mesh->NumberOfPoints(), this->Neighbors);
+      });
     }
     const MPVONCResult r = SortMPVONC(this->Mesh->Points4.data(), this->Mesh->Cells(), n,
       this->Neighbors.data(), eye, parallel, order, emitted);

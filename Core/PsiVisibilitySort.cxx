@@ -1,5 +1,7 @@
 #include "PsiVisibilitySort.h"
 
+#include "PsiParallel.h"
+
 #include "vtkSMPTools.h"
 
 #include <cstring>
@@ -9,24 +11,6 @@ namespace psi
 {
 namespace
 {
-// Debian's ParaView 5.11 defaults vtkSMPTools to the Sequential backend
-// (STDThread is built in): the sort runs its own work with STDThread in a local
-// scope, leaving the process-wide choice to ParaView.
-template <typename F>
-void Parallel(F&& work)
-{
-  if (vtkSMPTools::GetBackend() && std::string(vtkSMPTools::GetBackend()) == "Sequential")
-  {
-    vtkSMPTools::Config config;
-    config.Backend = "STDThread";
-    vtkSMPTools::LocalScope(config, work);
-  }
-  else
-  {
-    work();
-  }
-}
-
 // Maps a float onto uint32 so that unsigned order equals float order
 // (sign-magnitude flip).
 uint32_t OrderedBits(float f)

@@ -160,12 +160,13 @@ void PsiComputeProjector::ReserveBuffers(size_t tetsPerPass)
   this->ReservedIndices = indices;
 }
 
-void PsiComputeProjector::Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder& order)
+void PsiComputeProjector::Draw(
+  vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder& order, size_t targetPixels)
 {
   const size_t bytesPerTet = size_t(this->SlotVertices) * this->Vec4sPerVertex * 16 +
     size_t(this->SlotTriangles) * 3 * sizeof(GLuint);
   const size_t perPass =
-    std::min<size_t>({ PsiVisibilityOrder::ChunkTets,
+    std::min<size_t>({ PsiVisibilityOrder::MaxChunkTets,
       std::max<size_t>(64, BufferBudget / bytesPerTet), std::max<size_t>(order.GetSize(), 1) });
   this->ReserveBuffers((perPass + 63) / 64 * 64);
   const GLuint compute = static_cast<GLuint>(this->Compute->GetHandle());
@@ -195,21 +196,23 @@ void PsiComputeProjector::Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder
   const GLint firstLoc = glGetUniformLocation(compute, "firstTet");
   const GLint countLoc = glGetUniformLocation(compute, "tetCount");
   // each chunk of the order, as it is streamed, in passes that fit the buffers
-  order.Draw([&](size_t chunkFirst, size_t chunkCount) {
-    for (size_t first = chunkFirst; first < chunkFirst + chunkCount; first += perPass)
-    {
-      const size_t n = std::min(perPass, chunkFirst + chunkCount - first);
-      glUseProgram(compute);
-      glUniform1ui(firstLoc, static_cast<GLuint>(first));
-      glUniform1ui(countLoc, static_cast<GLuint>(n));
-      glDispatchCompute(static_cast<GLuint>((n + 63) / 64), 1, 1);
-      glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
-      glUseProgram(draw);
-      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(n * this->SlotTriangles * 3),
-        GL_UNSIGNED_INT, nullptr);
-      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); // the next pass rewrites the buffers
-    }
-  });
+  order.Draw(
+    [&](size_t chunkFirst, size_t chunkCount) {
+      for (size_t first = chunkFirst; first < chunkFirst + chunkCount; first += perPass)
+      {
+        const size_t n = std::min(perPass, chunkFirst + chunkCount - first);
+        glUseProgram(compute);
+        glUniform1ui(firstLoc, static_cast<GLuint>(first));
+        glUniform1ui(countLoc, static_cast<GLuint>(n));
+        glDispatchCompute(static_cast<GLuint>((n + 63) / 64), 1, 1);
+        glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+        glUseProgram(draw);
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(n * this->SlotTriangles * 3),
+          GL_UNSIGNED_INT, nullptr);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); // the next pass rewrites the buffers
+      }
+    },
+    targetPixels);
   glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
   for (GLuint loc : attributes)
   {

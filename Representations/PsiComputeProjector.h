@@ -43,7 +43,7 @@ public:
   /// Projects and draws the tetrahedra of `order`, chunk by chunk as it streams their point ids
   /// (PsiVisibilityOrder::Draw), in passes that fit the buffers. Both programs'
   /// uniforms must be set. Leaves no program bound (VTK's shader cache is told).
-  void Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder& order);
+  void Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder& order, size_t targetPixels);
   void ReleaseGraphicsResources(vtkWindow* win);
 
   /// Bytes of the reused vertex and index buffers (their size bounds the tetrahedra per pass).

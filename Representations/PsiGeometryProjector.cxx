@@ -26,7 +26,8 @@ vtkShaderProgram* PsiGeometryProjector::ReadyProgram(vtkOpenGLRenderWindow* renW
   return this->Program;
 }
 
-void PsiGeometryProjector::Draw(PsiVisibilityOrder& order, vtkShaderProgram* program) const
+void PsiGeometryProjector::Draw(
+  PsiVisibilityOrder& order, vtkShaderProgram* program, size_t targetPixels) const
 {
   // each tetrahedron is one point whose attribute is its four point ids (PsiVolumeVS.glsl)
   const GLint loc = glGetAttribLocation(static_cast<GLuint>(program->GetHandle()), "tetPointIds");
@@ -38,9 +39,11 @@ void PsiGeometryProjector::Draw(PsiVisibilityOrder& order, vtkShaderProgram* pro
   glEnableVertexAttribArray(static_cast<GLuint>(loc));
   glVertexAttribIPointer(static_cast<GLuint>(loc), 4, GL_UNSIGNED_INT, 0, nullptr);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
-  order.Draw([](size_t first, size_t count) {
-    glDrawArrays(GL_POINTS, static_cast<GLint>(first), static_cast<GLsizei>(count));
-  });
+  order.Draw(
+    [](size_t first, size_t count) {
+      glDrawArrays(GL_POINTS, static_cast<GLint>(first), static_cast<GLsizei>(count));
+    },
+    targetPixels);
 }
 
 void PsiGeometryProjector::ReleaseGraphicsResources()

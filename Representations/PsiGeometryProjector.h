@@ -6,6 +6,7 @@
 #ifndef PsiGeometryProjector_h
 #define PsiGeometryProjector_h
 
+#include <cstddef>
 #include <string>
 
 class PsiVisibilityOrder;
@@ -25,8 +26,8 @@ public:
   vtkShaderProgram* ReadyProgram(vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& f,
     const char* integrator, bool& built);
   /// Draws every tetrahedron of `order` as a point with `program` (bound, with the mesh's
-  /// vertex array), its four point ids streamed by the order.
-  void Draw(PsiVisibilityOrder& order, vtkShaderProgram* program) const;
+  /// vertex array), its four point ids streamed by the order, on a target of `targetPixels`.
+  void Draw(PsiVisibilityOrder& order, vtkShaderProgram* program, size_t targetPixels) const;
   void ReleaseGraphicsResources();
 
 private:

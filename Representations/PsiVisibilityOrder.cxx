@@ -54,7 +54,7 @@ void PsiVisibilityOrder::Update(const psi::TetMesh& mesh, int meshVersion,
   {
     glGenBuffers(1, &this->StreamBuffer);
     glBindBuffer(GL_ARRAY_BUFFER, this->StreamBuffer);
-    glBufferData(GL_ARRAY_BUFFER, InFlight * ChunkTets * 4 * sizeof(uint32_t), nullptr,
+    glBufferData(GL_ARRAY_BUFFER, InFlight * MaxChunkTets * 4 * sizeof(uint32_t), nullptr,
       GL_STREAM_DRAW);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
   }
@@ -93,7 +93,7 @@ void PsiVisibilityOrder::StreamChunk(size_t first, size_t count, size_t at)
     std::unique_lock<std::mutex> guard(this->Lock);
     this->Progress.wait(guard, [&] { return this->Final >= first + count; });
   }
-  this->Staging.resize(ChunkTets * 4);
+  this->Staging.resize(count * 4);
   const psi::TetCells tets = this->Mesh->Cells();
   for (size_t k = 0; k < count; ++k)
   {
@@ -132,10 +132,11 @@ void WaitAndDelete(GLsync fence)
 }
 } // namespace
 
-void PsiVisibilityOrder::Draw(const std::function<void(size_t, size_t)>& drawChunk)
+void PsiVisibilityOrder::Draw(
+  const std::function<void(size_t, size_t)>& drawChunk, size_t targetPixels)
 {
-  // Streamed in chunks through InFlight slots of the stream buffer, so that the GPU holds no
-  // copy of the cells and no single draw call is unbounded. Mesa's llvmpipe bins each chunk's
+  // Streamed in chunks (ChunkTetsFor) through InFlight slots of the stream buffer, so that the
+  // GPU holds no copy of the cells and no single draw call is unbounded. Mesa's llvmpipe bins each chunk's
   // triangles, with all their fragment inputs, until its rasterizer threads reach them; its
   // geometry stage outruns them, so binned chunks piled up (1.1 GB more peak memory at 2.56M
   // tetrahedra). A fence after each chunk and a wait for the one InFlight chunks back keep at
@@ -144,16 +145,16 @@ void PsiVisibilityOrder::Draw(const std::function<void(size_t, size_t)>& drawChu
   // at 2.56M; 4 x 32,768 kept its speed and 0.87 GB of peak memory (1.9 GB before), 2 x 32,768
   // too with 23 MB less, once each cell was one triangle.
   std::array<GLsync, InFlight> fences{};
-  const size_t n = this->Size;
+  const size_t n = this->Size, chunk = ChunkTetsFor(n, targetPixels);
   this->Drawn.clear();
-  for (size_t first = 0, i = 0; first < n; first += ChunkTets, ++i)
+  for (size_t first = 0, i = 0; first < n; first += chunk, ++i)
   {
     GLsync& slot = fences[i % InFlight];
     if (slot)
     {
       WaitAndDelete(slot);
     }
-    const size_t count = std::min(ChunkTets, n - first), at = (i % InFlight) * ChunkTets;
+    const size_t count = std::min(chunk, n - first), at = (i % InFlight) * MaxChunkTets;
     this->StreamChunk(first, count, at);
     drawChunk(at, count);
     slot = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);

@@ -198,6 +198,7 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   }
   if (draw)
   {
+    const size_t pixels = size_t(I.Target.GetSize()[0]) * size_t(I.Target.GetSize()[1]);
     auto drawImage = [&](int image) {
       if (features.DepthPeel)
       {
@@ -208,11 +209,11 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
       }
       if (compute)
       {
-        I.Compute.Draw(renWin, I.Order);
+        I.Compute.Draw(renWin, I.Order, pixels);
       }
       else
       {
-        I.Geometry.Draw(I.Order, draw);
+        I.Geometry.Draw(I.Order, draw, pixels);
       }
     };
     I.Target.DrawAndComposite(renWin, drawImage, I.Peeling.GetStage(),
