@@ -51,9 +51,15 @@ struct PSIVOLUMECORE_EXPORT TetMesh
   double MinEdgeLength = 0;  ///< shortest edge (sets the pre-integration table's length axis)
   bool CellScalars = false;  ///< gathered with cell scalars (private points per tetrahedron)
 
-  size_t NumberOfTets() const { return this->Borrowed ? this->BorrowedTets : this->Tets.size() / 4; }
+  size_t NumberOfTets() const
+  {
+    return this->Borrowed ? this->BorrowedTets : this->Tets.size() / 4;
+  }
   /// The four point ids of each tetrahedron, wherever they are kept.
-  TetCells Cells() const { return this->Borrowed ? this->BorrowedCells : TetCells(this->Tets.data()); }
+  TetCells Cells() const
+  {
+    return this->Borrowed ? this->BorrowedCells : TetCells(this->Tets.data());
+  }
   size_t NumberOfPoints() const { return this->Points4.size() / 4; }
 };
 

@@ -136,14 +136,13 @@ void PsiVisibilityOrder::Draw(
   const std::function<void(size_t, size_t)>& drawChunk, size_t targetPixels)
 {
   // Streamed in chunks (ChunkTetsFor) through InFlight slots of the stream buffer, so that the
-  // GPU holds no copy of the cells and no single draw call is unbounded. Mesa's llvmpipe bins each chunk's
-  // triangles, with all their fragment inputs, until its rasterizer threads reach them; its
-  // geometry stage outruns them, so binned chunks piled up (1.1 GB more peak memory at 2.56M
-  // tetrahedra). A fence after each chunk and a wait for the one InFlight chunks back keep at
-  // most InFlight chunks binned without draining the pipeline, and free that chunk's slot for
-  // the next. Each fence also ends llvmpipe's scene: chunks of 16,384 made the frame 3% slower
-  // at 2.56M; 4 x 32,768 kept its speed and 0.87 GB of peak memory (1.9 GB before), 2 x 32,768
-  // too with 23 MB less, once each cell was one triangle.
+  // GPU holds no copy of the cells and no single draw call is unbounded. Mesa's llvmpipe bins
+  // each chunk's triangles, with all their fragment inputs, until its rasterizer threads reach
+  // them; its geometry stage outruns them, so binned chunks piled up (1.1 GB more peak memory
+  // at 2.56M tetrahedra). A fence after each chunk and a wait for the one InFlight chunks back
+  // keep at most InFlight chunks binned without draining the pipeline (2 x 32,768 kept the
+  // speed of 4 with 23 MB less; 3 or 4 small chunks were slower than 2), and free that chunk's
+  // slot for the next. Each fence also ends llvmpipe's scene (see ChunkTetsFor).
   std::array<GLsync, InFlight> fences{};
   const size_t n = this->Size, chunk = ChunkTetsFor(n, targetPixels);
   this->Drawn.clear();

@@ -1,6 +1,7 @@
 // PsiVisibilityOrder: the back-to-front order of the tetrahedra, streamed to the GPU as GL_POINTS
-// (one per tetrahedron carrying its four point ids, Maximo et al. 2010 §3.1). It owns the sort (centroid or
-// MPVONC, psi::TetSort) and re-sorts only when the mesh, the view or the sort method changes.
+// (one per tetrahedron carrying its four point ids, Maximo et al. 2010 §3.1). It owns the sort
+// (centroid or MPVONC, psi::TetSort) and re-sorts only when the mesh, the view or the sort
+// method changes.
 //
 // The sort runs on a worker thread while the frame draws. MPVONC emits the farthest
 // tetrahedra first, so Draw uploads and draws each chunk as soon as the sort has finished it:
