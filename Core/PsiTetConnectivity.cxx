@@ -49,10 +49,11 @@ void PairFaces(TetCells tets, size_t numTets, const std::vector<uint32_t>& start
   std::vector<uint32_t> fill(start.begin() + lo, start.begin() + hi);
   for (size_t t = 0; t < numTets; ++t)
   {
+    uint32_t v[4];
+    tets.Get(t, v);
     for (int f = 0; f < 4; ++f)
     {
-      uint32_t v[4], s[3];
-      tets.Get(t, v);
+      uint32_t s[3];
       SortedFace(v, f, s);
       if (s[0] >= lo && s[0] < hi)
       {
@@ -132,10 +133,11 @@ TetConnectivityResult ComputeTetNeighbors(TetCells tets, size_t numTets,
   std::vector<uint32_t> start(numPoints + 1, 0);
   for (size_t t = 0; t < numTets; ++t)
   {
+    uint32_t v[4];
+    tets.Get(t, v);
     for (int f = 0; f < 4; ++f)
     {
-      uint32_t v[4], s[3];
-      tets.Get(t, v);
+      uint32_t s[3];
       SortedFace(v, f, s);
       ++start[s[0] + 1];
     }

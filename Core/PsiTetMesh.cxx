@@ -167,7 +167,6 @@ bool BorrowTets(
     m.BorrowedCells =
       TetCells(reinterpret_cast<const uint32_t*>(cells->GetConnectivityArray32()->GetPointer(0)));
   }
-  m.BorrowedTets = static_cast<size_t>(nc);
   return true;
 }
 

@@ -42,7 +42,6 @@ struct PSIVOLUMECORE_EXPORT TetMesh
   /// data: the mesh then reads its cells there (Cells) instead of copying them.
   vtkSmartPointer<vtkDataArray> Borrowed;
   TetCells BorrowedCells; ///< Borrowed's values
-  size_t BorrowedTets = 0;
   /// Input cell of each tetrahedron; empty when tetrahedron i is input cell i for every i.
   std::vector<uint32_t> SourceCells;
   int64_t NonTetCells = 0;   ///< input cells skipped for not being tetrahedra
@@ -53,7 +52,9 @@ struct PSIVOLUMECORE_EXPORT TetMesh
 
   size_t NumberOfTets() const
   {
-    return this->Borrowed ? this->BorrowedTets : this->Tets.size() / 4;
+    const size_t ids =
+      this->Borrowed ? static_cast<size_t>(this->Borrowed->GetNumberOfValues()) : this->Tets.size();
+    return ids / 4;
   }
   /// The four point ids of each tetrahedron, wherever they are kept.
   TetCells Cells() const
