@@ -141,8 +141,8 @@ std::string GeometryStage(const std::string& gs, const std::set<std::string>& ve
     "^\\s*((flat|smooth|noperspective|centroid)\\s+)*out\\s+(\\w+)\\s+(\\w+)\\s*;(.*)");
   for (std::string line; std::getline(lines, line);)
   {
-    if (line.find("//VTK::System::Dec") != std::string::npos || std::regex_match(line, layout) ||
-      vertexUniforms.count(line))
+    if (line.find("//VTK::System::Dec") != std::string::npos || line.rfind("#extension", 0) == 0 ||
+      std::regex_match(line, layout) || vertexUniforms.count(line))
     {
       continue;
     }

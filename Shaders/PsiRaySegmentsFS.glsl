@@ -7,10 +7,9 @@
 // through and leaves at the smallest p of those it leaves through. Along the ray the scalar is
 // s(t) = a + t b: a is affine in the window position and b constant in parallel projection,
 // the reverse in perspective.
-flat in vec4 rayFace0;
+flat in vec4 rayFace0; // lowest bit: the ray enters through the face (PsiRaySegmentsGS.glsl)
 flat in vec4 rayFaceX;
 flat in vec4 rayFaceY;
-flat in vec4 rayEnters;
 flat in vec4 scalarRay; // a0, b0, c_x, c_y (PsiRaySegmentsGS.glsl)
 smooth in vec3 isoNormal;
 
@@ -26,7 +25,7 @@ void readSegment(out float sf, out float sb, out float D)
   rayOrigin = pixelRayOrigin[0] + x.x * pixelRayOrigin[1] + x.y * pixelRayOrigin[2];
   rayStep = pixelRayStep[0] + x.x * pixelRayStep[1] + x.y * pixelRayStep[2];
   vec4 p = rayFace0 + x.x * rayFaceX + x.y * rayFaceY;
-  bvec4 enters = greaterThan(rayEnters, vec4(0.5));
+  bvec4 enters = notEqual(floatBitsToUint(rayFace0) & 1u, uvec4(0u));
   vec4 pin = mix(vec4(-3.0e38), p, enters);
   vec4 pout = mix(p, vec4(3.0e38), enters);
   float a = max(max(pin.x, pin.y), max(pin.z, pin.w));

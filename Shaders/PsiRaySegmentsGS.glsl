@@ -24,10 +24,9 @@
 // the other affine in (x, y): four terms. Four faces to a vec4; all flat outputs.
 // (Interpolating such terms as varyings would save the fragment shader a few multiply-adds, but
 // the rasterizer's clipping of large triangles near the eye does not keep them exact.)
-flat out vec4 rayFace0;    // p0 of each face
+flat out vec4 rayFace0;    // p0 of each face, its lowest bit 1 where the ray enters (below)
 flat out vec4 rayFaceX;    // px
 flat out vec4 rayFaceY;    // py
-flat out vec4 rayEnters;   // 1 where the ray enters through the face, 0 where it leaves
 flat out vec4 scalarRay;   // a0, b0, c_x, c_y: a = a0 + k u, b = b0 + (1 - k) u with
                            // u = x c_x + y c_y and k = 1 in parallel projection, else 0
 smooth out vec3 isoNormal; // marching-tetrahedra surface vertices only
@@ -35,7 +34,17 @@ smooth out vec3 isoNormal; // marching-tetrahedra surface vertices only
 uniform vec3 pixelRayOrigin[3]; // O = [0] + x [1] + y [2]
 uniform vec3 pixelRayStep[3];   // S likewise
 
-vec4 faceP0, facePX, facePY, faceEnters, scalarTerms;
+vec4 faceP0, facePX, facePY, scalarTerms;
+
+// Whether the ray enters through each face rides in the lowest mantissa bit of the face's p0
+// instead of an output of its own: the rasterizer's setup and the fragment's interpolation cost
+// per output (one vec4 less is 5-7% of the frame on llvmpipe). The bit moves p0 by at most one
+// unit in the last place, less than the rounding of p0 itself; a flat output reaches the
+// fragment shader bit for bit.
+vec4 withEnterFlags(vec4 p0, bvec4 enters)
+{
+  return uintBitsToFloat((floatBitsToUint(p0) & ~1u) | uvec4(enters));
+}
 
 vec4 outwardPlane(int i)
 {
@@ -51,7 +60,6 @@ void setVertexSegment(vec3 p, vec3 seg)
   rayFace0 = faceP0;
   rayFaceX = facePX;
   rayFaceY = facePY;
-  rayEnters = faceEnters;
   scalarRay = scalarTerms;
 //PSI::SeparateOpacity::Vertex
 }
@@ -84,10 +92,10 @@ void setRayTerms()
   vec4 constant = parallel ? den0 : num0; // the term that does not depend on (x, y)
   bvec4 bounds = notEqual(constant, vec4(0.0));
   vec4 scale = mix(vec4(0.0), (parallel ? 1.0 : -1.0) / constant, bounds);
-  faceP0 = mix(vec4(-3.0e38), (parallel ? num0 : den0) * scale, bounds);
+  bvec4 enters = bvec4(mix(vec4(1.0), vec4(lessThan(constant, vec4(0.0))), bounds));
+  faceP0 = withEnterFlags(mix(vec4(-3.0e38), (parallel ? num0 : den0) * scale, bounds), enters);
   facePX = (parallel ? numX : denX) * scale;
   facePY = (parallel ? numY : denY) * scale;
-  faceEnters = mix(vec4(1.0), vec4(lessThan(constant, vec4(0.0))), bounds);
   float s0 = scalar[0] - dot(gradient, viewP[0]);
   // O varies in parallel projection, S in perspective (psi::PixelRaysOf)
   vec3 movingX = parallel ? pixelRayOrigin[1] : pixelRayStep[1];

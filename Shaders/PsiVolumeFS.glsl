@@ -1,4 +1,5 @@
 //VTK::System::Dec
+#extension GL_ARB_shader_bit_encoding : enable
 //PSI::Counts::Dec
 //VTK::Output::Dec
 // PsiVolumeFS: integrates the ray segment through one tetrahedron (front scalar, back scalar,

@@ -1,4 +1,5 @@
 //VTK::System::Dec
+#extension GL_ARB_shader_bit_encoding : enable
 //PSI::Counts::Dec
 // PsiVolumeGS: projects one tetrahedron and emits its Shirley-Tuchman decomposition
 // (1-4 triangles, Maximo et al. 2010 §3.2) carrying front scalar, back scalar and thickness.

@@ -195,6 +195,8 @@ MUTATIONS = [
     Mutation("ray_enters_where_it_leaves", "Shaders/PsiRaySegmentsGS.glsl",
              "vec4(lessThan(constant, vec4(0.0)))", "vec4(greaterThan(constant, vec4(0.0)))",
              GEOMETRY),
+    Mutation("ray_enter_flags_not_written", "Shaders/PsiRaySegmentsGS.glsl",
+             "(floatBitsToUint(p0) & ~1u) | uvec4(enters)", "floatBitsToUint(p0) & ~1u", GEOMETRY),
     Mutation("peeling_blend_equation_kept", "Representations/PsiRenderTarget.cxx",
              "    ostate->vtkglBlendEquation(GL_FUNC_ADD);\n", "", TRANSLUCENT),
     # --- Near-plane clipping, opaque clipping, scene depth.

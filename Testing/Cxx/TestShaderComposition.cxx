@@ -106,8 +106,8 @@ void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
     { &fs, "noperspective in vec3 segment;", !exact && !sil },
     { &gs, "flat out vec4 backPlane;", exact },
     { &fs, "flat in vec4 backPlane;", exact },
-    { &gs, "flat out vec4 rayEnters;", sil },
-    { &fs, "flat in vec4 rayEnters;", sil },
+    { &gs, "vec4 withEnterFlags(vec4 p0, bvec4 enters)", sil },
+    { &fs, "floatBitsToUint(rayFace0) & 1u", sil },
     { &gs, "emitSilhouette();", sil },
     { &gs, "emitFan();", !sil },
     { &vs, "out vec4 vsOpacity;", separate },
@@ -163,11 +163,11 @@ void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
   const int projection = sil ? 4 : 8; // a silhouette quad; the fan's strips of 5 and 3
   PSI_CHECK(vertices == (tri ? projection * (niso + 1) + 4 * niso : projection),
     "vertices %d:\n%s", vertices, what.c_str());
-  // Per-vertex components: gl_Position, the segment (the four faces' ray terms and enter flags,
-  // the scalar's two ray terms and the surface normal; frontPoint + backPlane + scalarGrad; or
+  // Per-vertex components: gl_Position, the segment (the four faces' ray terms, their enter flags
+  // in the low bits of p0, the scalar's two ray terms and the surface normal; frontPoint + backPlane + scalarGrad; or
   // segment), the flat data of the features (piece, clipTet, isoG0 + isoJ + isoV0).
   const int components = psi::GeometryOutputComponentsPerVertex(f);
-  const int expected = 4 + (sil ? 23 : exact ? 12 : 3) + (separate ? 4 : 0) + (tri ? 1 : 0) + (f.NearClip ? 4 : 0) +
+  const int expected = 4 + (sil ? 19 : exact ? 12 : 3) + (separate ? 4 : 0) + (tri ? 1 : 0) + (f.NearClip ? 4 : 0) +
     (perFragment ? 15 : 0);
   PSI_CHECK(components == expected, "components %d, expected %d:\n%s", components, expected,
     what.c_str());
