@@ -1,0 +1,155 @@
+"""Benchmark (not a test): where a frame's time goes, thread by thread. One mapper renders an orbit
+in its own pvpython process while this script reads every thread's CPU time from
+/proc/<pid>/task/<tid>/schedstat every few milliseconds.
+
+pvpython Benchmarks/bench_threads.py [--data 40] [--mapper "Psi Volume GS"] [--frames 4]
+                                     [--size 512] [--bin 0.05]
+
+--data: a Wavelet half-extent (20: 320,000 tets, 40: 2,560,000, 60: 8,640,000) or bluntfin.
+--mapper: as in bench_scale.py ("Psi Volume GS", "Psi Volume CS", "Projected tetra", ...).
+Threads are grouped as: main (the process's first thread: ParaView, the draw calls and, in Mesa's
+llvmpipe, the vertex and geometry shaders, clipping, triangle setup and binning), raster (the
+llvmpipe-N threads: rasterization and fragment shading) and other (the visibility sort's worker
+and helper threads). It prints CPU seconds per frame of each group, the share of the cores in
+use, and the last frame as a timeline of --bin seconds: the busy fraction of each group per bin
+(1.00 is one core). The README's "Session 9" reads it."""
+import argparse
+import os
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def worker(args):
+    """Renders the scene, printing READY before the orbit and DONE after it."""
+    sys.path.insert(0, os.path.join(HERE, "..", "Python"))
+    from paraview import simple
+    import psi_bench
+    import psi_data
+    import psi_testing
+
+    psi_data.load_plugin(globals())
+    src, array = (psi_bench.load("bluntfin") if args.data == "bluntfin"
+                  else psi_data.wavelet(int(args.data)))
+    src.UpdatePipeline()
+    view = simple.CreateRenderView()
+    view.ViewSize = [args.size, args.size]
+    view.OrientationAxesVisibility = 0
+    rep = psi_data.show_volume(src, array, view, representation="Volume")
+    if args.mapper.startswith("Psi Volume"):
+        rep.SetRepresentationType("Psi Volume")
+        rep.Projector = "Compute Shader" if args.mapper.endswith("CS") else "Geometry Shader"
+    else:
+        rep.SelectMapper = args.mapper
+    view.ResetCamera()
+    view.GetActiveCamera().Elevation(25)
+    view.ResetCamera()
+    for _ in range(2):
+        simple.Render(view)
+        psi_data.wait(view)
+    print("READY", flush=True)
+    for _ in range(args.frames):
+        view.GetActiveCamera().Azimuth(360.0 / args.frames)
+        print("FRAME %.6f" % time.monotonic(), flush=True)
+        simple.Render(view)
+        psi_data.wait(view)
+    print("DONE %.6f" % time.monotonic(), flush=True)
+    psi_testing.exit_now(0)
+
+
+def group_of(pid, tid, name):
+    if name.startswith("llvmpipe"):
+        return "raster"
+    return "main" if tid == str(pid) else "other"
+
+
+def sample(pid, seen):
+    """(monotonic time, {group: CPU seconds so far}). `seen` keeps each thread's last reading, so
+    that a thread that ended (the sort's worker is joined every frame) still counts."""
+    for tid in os.listdir("/proc/%d/task" % pid):
+        try:
+            with open("/proc/%d/task/%s/comm" % (pid, tid)) as f:
+                name = f.read().strip()
+            with open("/proc/%d/task/%s/schedstat" % (pid, tid)) as f:
+                ns = int(f.read().split()[0])
+        except (OSError, ValueError):
+            continue  # the thread ended
+        seen[tid] = (group_of(pid, tid, name), ns * 1e-9)
+    totals = {"main": 0.0, "raster": 0.0, "other": 0.0}
+    for group, seconds in seen.values():
+        totals[group] += seconds
+    return time.monotonic(), totals
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("--worker", action="store_true")
+    p.add_argument("--data", default="40")
+    p.add_argument("--mapper", default="Psi Volume GS")
+    p.add_argument("--frames", type=int, default=4)
+    p.add_argument("--size", type=int, default=512)
+    p.add_argument("--bin", type=float, default=0.05)
+    args = p.parse_args()
+    if args.worker:
+        worker(args)
+        return
+    pvpython = os.environ.get("PVPYTHON", "pvpython")
+    cmd = [pvpython, "--force-offscreen-rendering", os.path.abspath(__file__), "--worker",
+           "--data", args.data, "--mapper", args.mapper, "--frames", str(args.frames),
+           "--size", str(args.size)]
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, text=True)
+    for line in proc.stdout:
+        if line.startswith("READY"):
+            break
+    os.set_blocking(proc.stdout.fileno(), False)
+    samples, marks, seen = [], [], {}
+    while proc.poll() is None:
+        samples.append(sample(proc.pid, seen))
+        for line in iter(proc.stdout.readline, ""):
+            marks.append(line.split())
+        if marks and marks[-1][0] == "DONE":
+            break
+        time.sleep(0.004)
+    proc.wait()
+    frames = [float(m[1]) for m in marks if m[0] == "FRAME"]
+    done = [float(m[1]) for m in marks if m[0] == "DONE"]
+    if not frames or not done or len(samples) < 2:
+        print("no frames measured")
+        sys.exit(1)
+    report(args, samples, frames, done[0])
+
+
+def cpu_at(samples, t):
+    """Group CPU seconds at time t, from the nearest sample at or before it."""
+    best = samples[0]
+    for s in samples:
+        if s[0] > t:
+            break
+        best = s
+    return best[1]
+
+
+def report(args, samples, frames, end):
+    groups = ("main", "raster", "other")
+    wall = (end - frames[0]) / len(frames)
+    c0, c1 = cpu_at(samples, frames[0]), cpu_at(samples, end)
+    cpu = {g: (c1[g] - c0[g]) / len(frames) for g in groups}
+    cores = os.cpu_count() or 1
+    print("%s on %s, %d frames: %.3f s/frame" % (args.mapper, args.data, len(frames), wall))
+    print("CPU s/frame: " + ", ".join("%s %.3f" % (g, cpu[g]) for g in groups) +
+          "; %.0f%% of %d cores busy" % (100.0 * sum(cpu.values()) / (wall * cores), cores))
+    print("last frame, busy cores per %.3f s:" % args.bin)
+    print("%7s %6s %6s %6s" % (("t (s)",) + groups))
+    t = frames[-1]
+    while t < end - 1e-9:
+        a, b = cpu_at(samples, t), cpu_at(samples, min(t + args.bin, end))
+        width = min(args.bin, end - t)
+        print("%7.3f " % (t - frames[-1]) +
+              " ".join("%6.2f" % ((b[g] - a[g]) / width) for g in groups))
+        t += args.bin
+
+
+if __name__ == "__main__":
+    main()
