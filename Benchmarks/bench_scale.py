@@ -47,12 +47,6 @@ out.GetPointData().AddArray(a)
 """
 
 
-# 'Psi Volume' with each projector (vtkPsiVolumeMapper::Projectors); plain 'Psi Volume' is Auto.
-# A " fan" suffix draws Shirley and Tuchman's fan instead of the default silhouettes
-# (vtkPsiVolumeMapper::Decompositions).
-PROJECTORS = {"Psi Volume GS": "Geometry Shader", "Psi Volume CS": "Compute Shader"}
-
-
 def worker(args):
     """One mapper on one mesh: prints one JSON line."""
     sys.path.insert(0, os.path.join(HERE, "..", "Python"))
@@ -70,20 +64,7 @@ def worker(args):
     prog.Script = STEP_SCRIPT.format(array=array, k=0)
     prog.CopyArrays = 0
     prog.UpdatePipeline()
-    view = simple.CreateRenderView()
-    view.ViewSize = [args.size, args.size]
-    view.OrientationAxesVisibility = 0
-    rep = psi_data.show_volume(prog, "step", view, representation="Volume")
-    if args.mapper.startswith("Psi Volume"):
-        rep.SetRepresentationType("Psi Volume")
-        base = args.mapper[:-len(" fan")] if args.mapper.endswith(" fan") else args.mapper
-        rep.Projector = PROJECTORS.get(base, "Auto")
-        rep.Decomposition = "Fan" if args.mapper.endswith(" fan") else "Silhouette"
-    else:
-        rep.SelectMapper = args.mapper
-    view.ResetCamera()
-    view.GetActiveCamera().Elevation(25)
-    view.ResetCamera()
+    view, _ = psi_bench.scale_view(prog, "step", args.mapper, args.size)
     cells = prog.GetDataInformation().GetNumberOfCells()
     t = time.perf_counter()
     simple.Render(view)

@@ -34,18 +34,7 @@ def worker(args):
     src, array = (psi_bench.load("bluntfin") if args.data == "bluntfin"
                   else psi_data.wavelet(int(args.data)))
     src.UpdatePipeline()
-    view = simple.CreateRenderView()
-    view.ViewSize = [args.size, args.size]
-    view.OrientationAxesVisibility = 0
-    rep = psi_data.show_volume(src, array, view, representation="Volume")
-    if args.mapper.startswith("Psi Volume"):
-        rep.SetRepresentationType("Psi Volume")
-        rep.Projector = "Compute Shader" if args.mapper.endswith("CS") else "Geometry Shader"
-    else:
-        rep.SelectMapper = args.mapper
-    view.ResetCamera()
-    view.GetActiveCamera().Elevation(25)
-    view.ResetCamera()
+    view, _ = psi_bench.scale_view(src, array, args.mapper, args.size)
     for _ in range(2):
         simple.Render(view)
         psi_data.wait(view)

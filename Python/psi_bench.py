@@ -36,6 +36,32 @@ def set_mapper(rep, name):
         rep.SelectMapper = name
 
 
+# 'Psi Volume' with each projector (vtkPsiVolumeMapper::Projectors); plain 'Psi Volume' is Auto.
+PROJECTORS = {"Psi Volume GS": "Geometry Shader", "Psi Volume CS": "Compute Shader"}
+
+
+def scale_view(source, array, mapper, size):
+    """The scene of bench_scale.py and bench_threads.py: `source` colored by `array` in a
+    size x size view, drawn by `mapper` ("Psi Volume GS", "Psi Volume CS", either with " fan"
+    for Shirley and Tuchman's fan, "Psi Volume" for the Auto projector, or one of ParaView's
+    SelectMapper values), the camera reset and raised 25 degrees. Returns (view, rep)."""
+    view = simple.CreateRenderView()
+    view.ViewSize = [size, size]
+    view.OrientationAxesVisibility = 0
+    rep = psi_data.show_volume(source, array, view, representation="Volume")
+    if mapper.startswith("Psi Volume"):
+        rep.SetRepresentationType("Psi Volume")
+        fan = mapper.endswith(" fan")
+        rep.Projector = PROJECTORS.get(mapper[:-len(" fan")] if fan else mapper, "Auto")
+        rep.Decomposition = "Fan" if fan else "Silhouette"
+    else:
+        rep.SelectMapper = mapper
+    view.ResetCamera()
+    view.GetActiveCamera().Elevation(25)
+    view.ResetCamera()
+    return view, rep
+
+
 def time_frames(view, frames, jitter=0.5, budget=30.0):
     """Mean wall-clock seconds of `frames` renders after a warm-up one (tables, shaders), or of
     fewer (at least one) once `budget` seconds are spent. The camera turns by +-`jitter` degrees
