@@ -23,7 +23,8 @@
 // scalar s = g . X + s0 is s(t) = a + t b with a = g . O + s0 and b = g . S, one constant and
 // the other affine in (x, y): four terms. Four faces to a vec4; all flat outputs.
 // (Interpolating such terms as varyings would save the fragment shader a few multiply-adds, but
-// the rasterizer's clipping of large triangles near the eye does not keep them exact.)
+// the rasterizer's clipping of large triangles near the eye does not keep them exact, and on
+// llvmpipe the interpolated inputs' setup costs what the flat ones save.)
 flat out vec4 rayFace0;    // p0 of each face, its lowest bit 1 where the ray enters (below)
 flat out vec4 rayFaceX;    // px
 flat out vec4 rayFaceY;    // py
@@ -38,7 +39,7 @@ vec4 faceP0, facePX, facePY, scalarTerms;
 
 // Whether the ray enters through each face rides in the lowest mantissa bit of the face's p0
 // instead of an output of its own: the rasterizer's setup and the fragment's interpolation cost
-// per output (one vec4 less is 5-7% of the frame on llvmpipe). The bit moves p0 by at most one
+// per output (one vec4 less: 2-6% of the frame on llvmpipe). The bit moves p0 by at most one
 // unit in the last place, less than the rounding of p0 itself; a flat output reaches the
 // fragment shader bit for bit.
 vec4 withEnterFlags(vec4 p0, bvec4 enters)

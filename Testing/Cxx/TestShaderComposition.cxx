@@ -163,9 +163,10 @@ void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
   const int projection = sil ? 4 : 8; // a silhouette quad; the fan's strips of 5 and 3
   PSI_CHECK(vertices == (tri ? projection * (niso + 1) + 4 * niso : projection),
     "vertices %d:\n%s", vertices, what.c_str());
-  // Per-vertex components: gl_Position, the segment (the four faces' ray terms, their enter flags
-  // in the low bits of p0, the scalar's two ray terms and the surface normal; frontPoint + backPlane + scalarGrad; or
-  // segment), the flat data of the features (piece, clipTet, isoG0 + isoJ + isoV0).
+  // Per-vertex components: gl_Position, the segment (the four faces' ray terms with their enter
+  // flags in the low bits of p0, the scalar's two ray terms and the surface normal; frontPoint +
+  // backPlane + scalarGrad; or segment), the flat data of the features (piece, clipTet, isoG0 +
+  // isoJ + isoV0).
   const int components = psi::GeometryOutputComponentsPerVertex(f);
   const int expected = 4 + (sil ? 19 : exact ? 12 : 3) + (separate ? 4 : 0) + (tri ? 1 : 0) + (f.NearClip ? 4 : 0) +
     (perFragment ? 15 : 0);
