@@ -92,6 +92,7 @@ def main():
     for line in proc.stdout:
         if line.startswith("READY"):
             break
+        print(line, end="")  # the worker's own messages (SKIP when a dataset is absent)
     os.set_blocking(proc.stdout.fileno(), False)
     samples, marks, seen = [], [], {}
     while proc.poll() is None:
