@@ -156,16 +156,13 @@ bool BorrowTets(
   {
     return false; // cells to skip: gather a copy
   }
-  if (cells->IsStorage64Bit())
+  if (cells->IsStorage64Bit()) // TetMesh::Cells reads either width
   {
     m.Borrowed = cells->GetConnectivityArray64();
-    m.BorrowedCells = TetCells(cells->GetConnectivityArray64()->GetPointer(0));
   }
-  else // ids below 2^31, read as unsigned
+  else // ids below 2^31 (checked above)
   {
     m.Borrowed = cells->GetConnectivityArray32();
-    m.BorrowedCells =
-      TetCells(reinterpret_cast<const uint32_t*>(cells->GetConnectivityArray32()->GetPointer(0)));
   }
   return true;
 }

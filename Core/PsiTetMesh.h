@@ -41,7 +41,6 @@ struct PSIVOLUMECORE_EXPORT TetMesh
   /// The input's connectivity array, when every input cell is a drawable tetrahedron of point
   /// data: the mesh then reads its cells there (Cells) instead of copying them.
   vtkSmartPointer<vtkDataArray> Borrowed;
-  TetCells BorrowedCells; ///< Borrowed's values
   /// Input cell of each tetrahedron; empty when tetrahedron i is input cell i for every i.
   std::vector<uint32_t> SourceCells;
   int64_t NonTetCells = 0;   ///< input cells skipped for not being tetrahedra
@@ -56,10 +55,17 @@ struct PSIVOLUMECORE_EXPORT TetMesh
       this->Borrowed ? static_cast<size_t>(this->Borrowed->GetNumberOfValues()) : this->Tets.size();
     return ids / 4;
   }
-  /// The four point ids of each tetrahedron, wherever they are kept.
+  /// The four point ids of each tetrahedron, wherever they are kept. A borrowed connectivity
+  /// holds vtkCellArray's 64- or 32-bit ids; 32-bit ids are below 2^31 and read as unsigned.
   TetCells Cells() const
   {
-    return this->Borrowed ? this->BorrowedCells : TetCells(this->Tets.data());
+    if (!this->Borrowed)
+    {
+      return TetCells(this->Tets.data());
+    }
+    const void* ids = this->Borrowed->GetVoidPointer(0);
+    return this->Borrowed->GetDataTypeSize() == 8 ? TetCells(static_cast<const vtkTypeInt64*>(ids))
+                                                  : TetCells(static_cast<const uint32_t*>(ids));
   }
   size_t NumberOfPoints() const { return this->Points4.size() / 4; }
 };

@@ -70,12 +70,12 @@ private:
 };
 
 // Whether tetrahedron `other` has a point at the position of point id `p`.
-bool HasPointAt(const TetMesh& m, uint32_t other, uint32_t p)
+bool HasPointAt(const TetMesh& m, TetCells cells, uint32_t other, uint32_t p)
 {
   const float* q = &m.Points4[4 * static_cast<size_t>(p)];
   for (int v = 0; v < 4; ++v)
   {
-    const float* r = &m.Points4[4 * static_cast<size_t>(m.Cells()(other, v))];
+    const float* r = &m.Points4[4 * static_cast<size_t>(cells(other, v))];
     if (r[0] == q[0] && r[1] == q[1] && r[2] == q[2])
     {
       return true;
@@ -92,6 +92,7 @@ bool FaceNeighborsMatch(const TetMesh& m, const std::vector<int32_t>& nb)
   {
     return false;
   }
+  const TetCells cells = m.Cells();
   std::atomic<bool> ok(true);
   vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType t = begin; t < end && ok.load(std::memory_order_relaxed); ++t)
@@ -106,7 +107,7 @@ bool FaceNeighborsMatch(const TetMesh& m, const std::vector<int32_t>& nb)
         bool match = static_cast<size_t>(j) < n && j != t;
         for (int v = 0; v < 4 && match; ++v) // face f is opposite vertex f
         {
-          match = v == f || HasPointAt(m, static_cast<uint32_t>(j), m.Cells()(t, v));
+          match = v == f || HasPointAt(m, cells, static_cast<uint32_t>(j), cells(t, v));
         }
         if (!match)
         {
