@@ -30,7 +30,8 @@ p.add_argument("--error-views", type=int, default=2)
 p.add_argument("--plot", default="integration_cost.png")
 args = p.parse_args()
 
-exe = os.environ.get("PSI_BENCH_CPU") or (glob.glob(os.path.join(here, "..", "build", "bin",
+build = os.environ.get("PSI_BUILD_DIR") or os.path.join(here, "..", "build")
+exe = os.environ.get("PSI_BENCH_CPU") or (glob.glob(os.path.join(build, "bin",
                                                                   "bench_integration_cpu")) or [""])[0]
 if not exe:
     raise SystemExit("bench_integration_cpu not built (scripts/build.sh)")

@@ -102,12 +102,17 @@ bool StandardCellFaces(int linearType, const vtkIdType* pts, FaceSet& faces)
   }
 }
 
-void PolyhedronFaces(vtkIdType nfaces, const vtkIdType* stream, FaceSet& faces)
+void PolyhedronFaces(vtkIdType nfaces, const vtkIdType* stream, vtkIdType length, FaceSet& faces)
 {
   faces.Clear();
-  for (vtkIdType f = 0; f < nfaces && stream; ++f)
+  const vtkIdType* end = stream ? stream + length : stream;
+  for (vtkIdType f = 0; f < nfaces && stream < end; ++f)
   {
     const vtkIdType n = *stream++;
+    if (n < 0 || n > end - stream)
+    {
+      break; // a truncated stream: keep the whole faces read so far
+    }
     faces.Ids.insert(faces.Ids.end(), stream, stream + n);
     stream += n;
     faces.Close();

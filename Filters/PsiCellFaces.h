@@ -36,8 +36,9 @@ int LinearCellType(int type);
 /// Returns false, with `faces` untouched, for any other type.
 bool StandardCellFaces(int linearType, const vtkIdType* pts, FaceSet& faces);
 
-/// The faces of a polyhedron from its face stream: nfaces x (npts, ids...).
-void PolyhedronFaces(vtkIdType nfaces, const vtkIdType* stream, FaceSet& faces);
+/// The faces of a polyhedron from its face stream: nfaces x (npts, ids...), `length` ids in all;
+/// a stream shorter than its counts say yields the whole faces it holds.
+void PolyhedronFaces(vtkIdType nfaces, const vtkIdType* stream, vtkIdType length, FaceSet& faces);
 
 /// The point ids of hexahedron `cellId` of a structured grid of `dims` points (VTK corner order,
 /// cells numbered with i fastest); returns i + j + k.

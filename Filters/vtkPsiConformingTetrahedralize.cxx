@@ -152,6 +152,7 @@ struct vtkPsiConformingTetrahedralize::Execution
   std::vector<double> Coordinates;
   psi::OrientedTetrahedra Tets;
   psi::FaceSet Faces;           // scratch: the faces of the current cell
+  vtkNew<vtkIdList> FaceStream; // scratch: a polyhedron's face stream
   vtkNew<vtkIdList> CellPoints; // scratch: the points of the current cell
   bool WarnedUnsupported = false;
 };
@@ -343,10 +344,17 @@ void vtkPsiConformingTetrahedralize::SplitCell(
       ++this->NumberOfSkippedCells;
       return;
     }
-    vtkIdType nfaces = 0;
-    const vtkIdType* stream = nullptr;
-    exec.UGrid->GetFaceStream(cellId, nfaces, stream);
-    psi::PolyhedronFaces(nfaces, stream, exec.Faces);
+    // The vtkIdList form (numFaces, numFace0Pts, ids..., numFace1Pts, ...) reads both face
+    // storages: the legacy face stream of VTK 9.2 and the vtkCellArray faces of VTK 9.4+.
+    exec.UGrid->GetFaceStream(cellId, exec.FaceStream);
+    if (exec.FaceStream->GetNumberOfIds() < 1)
+    {
+      ++this->NumberOfSkippedCells;
+      return;
+    }
+    vtkIdList* stream = exec.FaceStream;
+    psi::PolyhedronFaces(
+      stream->GetId(0), stream->GetPointer(1), stream->GetNumberOfIds() - 1, exec.Faces);
     psi::ConeSplit(exec.Faces, cellId, exec.Tets);
   }
   else

@@ -46,7 +46,8 @@ def find_reference_renderer():
     if os.environ.get("PSI_REFERENCE_RENDER"):
         return os.environ["PSI_REFERENCE_RENDER"]
     plugin = psi_data.find_plugin()
-    build = plugin.split(os.sep + "lib")[0]
+    # <build>/lib*/paraview-X.Y/plugins/PsiVolume/PsiVolume.so
+    build = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(plugin)))))
     hits = glob.glob(os.path.join(build, "bin", "psi_reference_render"))
     if not hits:
         raise RuntimeError("psi_reference_render not built: run scripts/build.sh")

@@ -4,7 +4,7 @@ tetrahedra). Shared by the render command, the benchmarks and the tests."""
 import glob
 import os
 
-from paraview import simple
+from paraview import servermanager, simple
 
 SHARED_DATA = os.environ.get("PSI_DATA") or os.path.normpath(
     os.path.join(os.path.dirname(__file__), "..", "..", "shared", "data"))
@@ -25,10 +25,16 @@ def find_plugin():
     if os.environ.get("PSI_PLUGIN"):
         return os.environ["PSI_PLUGIN"]
     here = os.path.dirname(os.path.abspath(__file__))
-    hits = glob.glob(os.path.join(here, "..", "build", "lib*", "paraview-5.11", "plugins",
-                                  "PsiVolume", "PsiVolume.so"))
+    build = os.environ.get("PSI_BUILD_DIR") or os.path.join(here, "..", "build")
+    # The plugin directory is named for the ParaView it was built against (CMakeLists.txt):
+    # only a build for the running ParaView can load.
+    sm = servermanager.vtkSMProxyManager
+    version = "paraview-%d.%d" % (sm.GetVersionMajor(), sm.GetVersionMinor())
+    pattern = os.path.join(build, "lib*", version, "plugins", "PsiVolume", "PsiVolume.so")
+    hits = glob.glob(pattern)
     if not hits:
-        raise RuntimeError("PsiVolume plugin not built: run scripts/build.sh (or set PSI_PLUGIN)")
+        raise RuntimeError("PsiVolume plugin for %s not built in %s: run scripts/build.sh "
+                           "(or set PSI_PLUGIN)" % (version, os.path.abspath(build)))
     return os.path.abspath(hits[0])
 
 

@@ -65,20 +65,25 @@ void vtkPsiOFFTetReader::SetInputString(const std::string& s)
 
 int vtkPsiOFFTetReader::CanReadFile(const char* filename)
 {
+  return vtkPsiOFFTetReader::IsTetrahedralOFF(filename) ? 1 : 0;
+}
+
+bool vtkPsiOFFTetReader::IsTetrahedralOFF(const char* filename)
+{
   if (!filename)
   {
-    return 0;
+    return false;
   }
   std::ifstream in(filename, std::ios::binary);
   if (!in)
   {
-    return 0;
+    return false;
   }
   std::string head(4096, '\0');
   in.read(&head[0], static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<size_t>(in.gcount()));
   psi::OFFParser parser(head.data(), head.size());
-  return parser.ReadHeader() ? 1 : 0;
+  return parser.ReadHeader();
 }
 
 void vtkPsiOFFTetReader::Fail(unsigned long code, const std::string& message)

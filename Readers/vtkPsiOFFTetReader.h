@@ -73,8 +73,12 @@ public:
   ///@}
 
   /// 1 when the file's header looks like a tetrahedral OFF mesh (two counts), 0 otherwise
-  /// (e.g. a polygonal OFF surface, whose header has three counts).
+  /// (e.g. a polygonal OFF surface, whose header has three counts). ParaView's reader factory
+  /// calls it to choose between this reader and its own surface OFF reader.
   virtual int CanReadFile(const char* filename);
+
+  /// The test behind CanReadFile, shared with vtkPsiOFFSurfaceReader (its complement).
+  static bool IsTetrahedralOFF(const char* filename);
 
   ///@{
   /// What the last read found: declared counts, points with a NaN/Inf coordinate, points with a

@@ -6,7 +6,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkShaderProgram.h"
-#include "vtk_glew.h"
+#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 vtkShaderProgram* PsiGeometryProjector::ReadyProgram(vtkOpenGLRenderWindow* renWin,
   const psi::ShaderFeatures& f, const char* integrator, bool& built)

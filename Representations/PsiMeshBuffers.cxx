@@ -9,7 +9,7 @@
 #include "vtkPoints.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtk_glew.h"
+#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 #include <algorithm>
 #include <sstream>

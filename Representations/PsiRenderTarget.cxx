@@ -13,7 +13,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkVolume.h"
-#include "vtk_glew.h"
+#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 PsiRenderTarget::PsiRenderTarget() = default;
 

@@ -1,7 +1,7 @@
 #include "PsiVisibilityOrder.h"
 
 #include "vtkMatrix4x4.h"
-#include "vtk_glew.h"
+#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 #include <algorithm>
 #include <array>

@@ -25,7 +25,7 @@
 #include "vtkUnstructuredGridBase.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
-#include "vtk_glew.h"
+#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 #include <algorithm>
 #include <array>

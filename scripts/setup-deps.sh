@@ -1,23 +1,68 @@
 #!/usr/bin/env bash
-# Installs everything needed to build and test the PsiVolume plugin on Debian 12.
-# Debian's ParaView 5.11 ships its own VTK (9.2-dev); we build against find_package(ParaView).
-# Idempotent: skips apt when every package is already installed.
+# Installs everything needed to build and test the PsiVolume plugin against the ParaView of this
+# Debian: 12 (ParaView 5.11, Qt 5, its own VTK 9.2), 13 (5.13, Qt 6, its own VTK 9.3) or unstable
+# (6.1, Qt 6, on the system VTK 9.6). Idempotent: skips apt when every package is installed.
+# Then mends what Debian's packaging leaves broken for find_package(ParaView) (see
+# scripts/lib/mend-paraview-cmake.sh), saying what it did.
 set -euo pipefail
-PKGS=(paraview paraview-dev python3-paraview qtbase5-dev libutfcpp-dev qttools5-dev libqt5svg5-dev
-  qtxmlpatterns5-dev-tools libqt5x11extras5-dev libhdf5-dev libogg-dev libtheora-dev libtiff-dev
-  libpng-dev libnetcdf-dev libopenmpi-dev libxml2-dev liblzma-dev liblz4-dev libjpeg-dev libglew-dev
+here=$(cd "$(dirname "$0")" && pwd)
+SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+
+apt_update() {
+  # Debian unstable's Release file can be past its Valid-Until date on a mirror that lags; apt
+  # then refuses it. Retry once without the check, and say so.
+  if ! $SUDO apt-get update -qq 2>/tmp/psi-apt-update.err; then
+    if grep -qi "is no longer valid\|expired" /tmp/psi-apt-update.err; then
+      echo "[setup] this mirror's Release file is past its Valid-Until date; updating without that check"
+      $SUDO apt-get -o Acquire::Check-Valid-Until=false update -qq
+    else
+      cat /tmp/psi-apt-update.err >&2
+      return 1
+    fi
+  fi
+}
+
+# The ParaView this Debian ships: installed, else the candidate (after an update on a fresh system).
+paraview_series() {
+  local v
+  v=$(dpkg-query -W -f='${Version}' paraview 2>/dev/null || true)
+  if [ -z "$v" ]; then
+    v=$(apt-cache policy paraview 2>/dev/null | sed -n 's/^ *Candidate: *//p')
+    if [ -z "$v" ] || [ "$v" = "(none)" ]; then
+      apt_update >&2
+      v=$(apt-cache policy paraview | sed -n 's/^ *Candidate: *//p')
+    fi
+  fi
+  [ -n "$v" ] && [ "$v" != "(none)" ] || { echo "[setup] this system offers no paraview package" >&2; exit 1; }
+  echo "$v" | sed -E 's/^([0-9]+:)?([0-9]+\.[0-9]+).*/\2/'
+}
+
+COMMON=(paraview paraview-dev python3-paraview libutfcpp-dev libhdf5-dev libogg-dev libtheora-dev
+  libtiff-dev libpng-dev libnetcdf-dev libopenmpi-dev libxml2-dev liblzma-dev liblz4-dev libjpeg-dev
   libgl2ps-dev libgdal-dev libfreetype-dev libavcodec-dev libavformat-dev libswscale-dev
   libavutil-dev libeigen3-dev libexpat1-dev libboost-dev python3-dev libx11-dev libgl-dev
-  zlib1g-dev python3-mpi4py libdouble-conversion-dev libcgal-dev libosmesa6-dev xvfb xauth mesa-utils
-  cmake g++ make python3-numpy python3-matplotlib libqt5opengl5-dev clang libclang-rt-14-dev)
+  zlib1g-dev python3-mpi4py libdouble-conversion-dev libcgal-dev xvfb xauth mesa-utils cmake g++
+  make python3-numpy python3-matplotlib clang git)
+QT6=(qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-svg-dev qt6-5compat-dev libxcursor-dev)
+series=$(paraview_series)
+case "$series" in
+  5.11) PKGS=("${COMMON[@]}" qtbase5-dev qttools5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools
+          libqt5x11extras5-dev libglew-dev libosmesa6-dev libqt5opengl5-dev libclang-rt-14-dev) ;;
+  5.13) PKGS=("${COMMON[@]}" "${QT6[@]}" libglew-dev libclang-rt-dev libadios2-mpi-c++11-dev
+          libgmsh-dev) ;;
+  6.*) PKGS=("${COMMON[@]}" "${QT6[@]}" libvtk9-dev libvtk9-qt-dev libclang-rt-dev libegl-dev
+          libgmsh-dev libtbb-dev) ;;
+  *) echo "[setup] ParaView $series: not a version this plugin is built for (5.11, 5.13, 6.1)" >&2
+     exit 1 ;;
+esac
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if [ ${#missing[@]} -gt 0 ]; then
-  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
-  echo "[setup] installing ${#missing[@]} packages: ${missing[*]}"
-  $SUDO apt-get update -qq
+  echo "[setup] ParaView $series: installing ${#missing[@]} packages: ${missing[*]}"
+  apt_update
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
-echo "[setup] dependencies present"
+$SUDO bash "$here/lib/mend-paraview-cmake.sh"
+echo "[setup] dependencies present (ParaView $series)"

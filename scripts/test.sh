@@ -1,20 +1,42 @@
 #!/usr/bin/env bash
-# The test command: installs what is missing (Debian 12), builds, and runs every test with CTest
-# under a virtual X server (Mesa llvmpipe gives OpenGL 4.5 with geometry shaders).
+# The test command: installs what is missing, builds, and runs every test with CTest under a
+# virtual X server (Mesa llvmpipe gives OpenGL 4.5 with geometry shaders).
+#   bash scripts/test.sh                      the ParaView of this Debian (12: 5.11, 13: 5.13,
+#                                             unstable: 6.1)
+#   bash scripts/test.sh --paraview 6.1       the same suite inside a Debian system that ships
+#                                             that ParaView (made once and cached, see
+#                                             scripts/debian-system.sh); 5.11, 5.13, 6.1 or all
+#   bash scripts/test.sh --only REGEX         only the tests whose names match REGEX
+# Further arguments go to each ctest call (e.g. -V).
 #
 # Each test gets its own fresh Xvfb server, started with -noreset: by default Xvfb resets
 # whenever its last client disconnects and refuses connections meanwhile, which made a
 # pvpython/pvbatch process (most often a rank of the 2-rank MPI test) fail with "bad X server
 # connection" now and then (measured: two processes opening and closing the display 3,000 times
 # failed 13-17% of the time by default, 0% with -noreset). Up to two retries remain, each in
-# another fresh server, as a guard; a real failure fails every attempt and fails the run. Extra
-# arguments go to each ctest call (e.g. -V).
+# another fresh server, as a guard; a real failure fails every attempt and fails the run.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+paraview=""
+only=""
+ctest_args=()
+while [ "$#" -gt 0 ]; do
+  case "$1" in
+    --paraview) paraview=${2:?--paraview takes 5.11, 5.13, 6.1 or all}; shift 2 ;;
+    --only) only=${2:?--only takes a regular expression}; shift 2 ;;
+    *) ctest_args+=("$1"); shift ;;
+  esac
+done
+
+if [ -n "$paraview" ]; then
+  exec bash "$root/scripts/test-paraview.sh" "$paraview" ${only:+--only "$only"} "${ctest_args[@]}"
+fi
+
 bash "$root/scripts/setup-deps.sh"
 bash "$root/scripts/build.sh"
-cd "$root/build"
-mapfile -t tests < <(ctest -N | sed -n 's/^ *Test *#[0-9]*: //p')
+cd "${PSI_BUILD_DIR:-$root/build}"
+mapfile -t tests < <(ctest -N | sed -n 's/^ *Test *#[0-9]*: //p' | grep -E -- "${only:-.}" || true)
+[ "${#tests[@]}" -gt 0 ] || { echo "[test.sh] no test matches '${only}'"; exit 1; }
 passed=0
 failed=0
 failures=()
@@ -23,7 +45,7 @@ for t in "${tests[@]}"; do
   ok=0
   for attempt in 1 2 3; do
     if xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
-      ctest --output-on-failure --timeout 900 -R "$pattern" "$@"; then
+      ctest --output-on-failure --timeout 900 -R "$pattern" "${ctest_args[@]}"; then
       ok=1
       break
     fi

@@ -21,7 +21,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 #include <algorithm>
 #include <cmath>

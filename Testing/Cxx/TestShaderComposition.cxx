@@ -3,7 +3,9 @@
 // clip; early discard; isosurfaces none / per fragment / marching tetrahedra, flat and smooth;
 // adaptive sampling) each feature's code is present exactly when the feature is on, no tag is
 // left, the geometry-shader budget matches max_vertices and the outputs of the composed source,
-// and a representative subset compiles and links with the real driver. Needs an X server.
+// and a representative subset compiles and links with the real driver, each stage without a
+// word from the compiler (a warning such as "used uninitialized" reaches ParaView 6.1 users as a
+// GL debug message at every compile). Needs an X server.
 // Usage: TestShaderComposition [output-dir]   (writes the compiled subset's composed sources)
 #include "PsiComputeProjector.h"
 #include "PsiComputeProjectorComposer.h"
@@ -14,9 +16,12 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkRenderWindow.h"
+#include "vtkShader.h"
 #include "vtkShaderProgram.h"
+#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 #include <chrono>
+#include <cstring>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -48,6 +53,50 @@ int Leftovers(const std::string& src)
     }
   }
   return n;
+}
+
+// What the driver says when it compiles one stage on its own: empty for a clean compile, else
+// its warnings or errors (the shader info log).
+std::string CompileLog(GLenum stage, const std::string& source)
+{
+  const GLuint shader = glCreateShader(stage);
+  const char* text = source.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint length = 0;
+  glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+  std::string log(length > 1 ? static_cast<size_t>(length) : 0, '\0');
+  if (length > 1)
+  {
+    glGetShaderInfoLog(shader, length, nullptr, &log[0]);
+    log.resize(std::strlen(log.c_str()));
+  }
+  glDeleteShader(shader);
+  return log.find_first_not_of(" \t\r\n") == std::string::npos ? std::string() : log;
+}
+
+// Fails the test when a stage of `program` (sources as VTK's shader cache completed them) or
+// the compute shader `compute` draws any message from the compiler.
+void CheckQuietCompile(vtkShaderProgram* program, const std::string& compute, const std::string& what)
+{
+  const std::pair<GLenum, vtkShader*> stages[] = { { GL_VERTEX_SHADER, program->GetVertexShader() },
+    { GL_GEOMETRY_SHADER, program->GetGeometryShader() },
+    { GL_FRAGMENT_SHADER, program->GetFragmentShader() } };
+  for (const auto& stage : stages)
+  {
+    if (stage.second && !stage.second->GetSource().empty())
+    {
+      const std::string log = CompileLog(stage.first, stage.second->GetSource());
+      PSI_CHECK(log.empty(), "the compiler speaks (stage 0x%x) for %s:\n%s", stage.first,
+        what.c_str(), log.c_str());
+    }
+  }
+  if (!compute.empty())
+  {
+    const std::string log = CompileLog(GL_COMPUTE_SHADER, compute);
+    PSI_CHECK(log.empty(), "the compiler speaks (compute projector) for %s:\n%s", what.c_str(),
+      log.c_str());
+  }
 }
 
 // Segments: 0 the fan's screen-linear triple, 1 the fan's exact segments, 2 silhouettes (ray
@@ -337,6 +386,10 @@ int main(int argc, char* argv[])
     PSI_CHECK(prog != nullptr && prog->GetCompiled(), "does not compile or link:\n%s",
       Describe(f).c_str());
     compiled += prog != nullptr ? 1 : 0;
+    if (prog)
+    {
+      CheckQuietCompile(prog, psi::ComposeComputeProjector(f).Compute, Describe(f));
+    }
     // The compute-shader projector of the same features: its projection pass and draw program.
     if (!outDir.empty())
     {

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Runs a command of this checkout inside the Debian system of SUITE (scripts/debian-system.sh),
+# as root, in a private mount namespace: the checkout is seen at /psi/src, ../shared (the test
+# data, when present) read-only at /psi/shared, /proc and a fresh /dev/shm are mounted, and all of
+# it is unmounted when the command ends. The build goes to /root/psi-build in that system, so it
+# is kept between runs and never mixed with the host's build/.
+#   bash scripts/in-system.sh trixie bash scripts/test.sh
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+suite=${1:?usage: in-system.sh SUITE COMMAND [ARG...]}
+shift
+[ "$#" -gt 0 ] || { echo "usage: in-system.sh SUITE COMMAND [ARG...]" >&2; exit 2; }
+sys=$(bash "$root/scripts/debian-system.sh" "$suite")
+shared=$(cd "$root/.." && pwd)/shared
+# The system's resolver is the host's (apt inside needs it).
+cp -L /etc/resolv.conf "$sys/etc/resolv.conf"
+mkdir -p "$sys/psi/src" "$sys/psi/shared"
+args=$(printf '%q ' "$@")
+exec unshare --mount --propagation private -- bash -euo pipefail -c '
+  sys=$1 root=$2 shared=$3 args=$4
+  mount -t proc proc "$sys/proc"
+  mount -t tmpfs -o mode=1777 shm "$sys/dev/shm"
+  mount --bind "$root" "$sys/psi/src"
+  if [ -d "$shared" ]; then
+    mount --bind "$shared" "$sys/psi/shared"
+    mount -o remount,bind,ro "$sys/psi/shared"
+  fi
+  exec chroot "$sys" /usr/bin/env -i HOME=/root TERM="${TERM:-dumb}" LANG=C.UTF-8 \
+    PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin CI="${CI:-}" \
+    PSI_BUILD_DIR=/root/psi-build \
+    bash -c "cd /psi/src && exec $args"
+' in-system "$sys" "$root" "$shared" "$args"
