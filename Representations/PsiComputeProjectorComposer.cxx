@@ -120,7 +120,9 @@ std::string VertexStage(std::string vs, std::set<std::string>& uniforms)
     {
       uniforms.insert(line);
     }
-    out += Line(std::regex_replace(line, inDecl, "$1 $2;"));
+    // The vertex attribute becomes a global that main() sets; initialized, so that compilers
+    // that cannot see main() set it first do not warn of a read before a write.
+    out += Line(std::regex_replace(line, inDecl, "$1 $2 = $1(0);"));
   }
   for (const std::string& name : outputs)
   {

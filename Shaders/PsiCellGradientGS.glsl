@@ -1,6 +1,6 @@
 //PSI::CellGradient::Dec
 // The gradient of the cell's linear scalar, view coordinates (exact segments and isosurfaces).
-vec3 gradient;
+vec3 gradient = vec3(0.0);
 
 //PSI::CellGradient::Impl
   {

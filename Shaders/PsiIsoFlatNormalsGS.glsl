@@ -1,6 +1,6 @@
 //PSI::IsoFlatNormals::Dec
 // Isosurface normals, flat shading: the cell's own gradient at all four vertices.
-vec3 pointNormal[4];
+vec3 pointNormal[4] = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
 
 void fetchNormals()
 {

@@ -5,8 +5,8 @@
 flat out vec3 isoG0;
 flat out mat3 isoJ;
 flat out vec3 isoV0;
-vec3 tetIsoG0;
-mat3 tetIsoJ;
+vec3 tetIsoG0 = vec3(0.0);
+mat3 tetIsoJ = mat3(0.0);
 
 //PSI::IsoPerFragment::Flat
   isoG0 = tetIsoG0;

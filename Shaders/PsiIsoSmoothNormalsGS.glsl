@@ -3,7 +3,7 @@
 // point gradients (view coordinates).
 uniform samplerBuffer pointGradients; // model-space (shifted) gradient per point
 uniform mat3 normalMatrix;            // model -> view for gradients (inverse transpose)
-vec3 pointNormal[4];
+vec3 pointNormal[4] = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
 
 void fetchNormals()
 {

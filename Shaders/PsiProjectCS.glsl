@@ -23,7 +23,7 @@ layout(std430, binding = 3) writeonly buffer PsiProjectedIndices { uint projecte
 uniform uint firstTet; // this pass draws tetPoints[firstTet, firstTet + tetCount)
 uniform uint tetCount;
 
-vec4 psiPosition; // gl_Position of the geometry code
+vec4 psiPosition = vec4(0.0); // gl_Position of the geometry code
 uint psiSlot = 0u; // this tetrahedron's slot in this pass
 int psiEmitted = 0;// vertices written to the slot
 int psiStrip = 0;  // vertices of the current strip

@@ -10,7 +10,7 @@
 uniform int classTable[81];
 
 // Projection class and the four vertices in the class's order, from the truth table.
-int cls, p0, p1, p2, p3;
+int cls = 0, p0 = 0, p1 = 0, p2 = 0, p3 = 0;
 
 //PSI::ProjectionClasses::Impl
 // Marroquim et al. 2008, Fig. 3: classifies the projection and computes the thick vertex's

@@ -16,8 +16,8 @@ smooth in vec3 isoNormal;
 uniform vec3 pixelRayOrigin[3]; // O = [0] + x [1] + y [2]
 uniform vec3 pixelRayStep[3];   // S likewise
 
-vec3 rayOrigin, rayStep; // O and S of this pixel's ray
-float rayEntry;          // t where the ray enters the tetrahedron
+vec3 rayOrigin = vec3(0.0), rayStep = vec3(0.0); // O and S of this pixel's ray
+float rayEntry = 0.0; // t where the ray enters the tetrahedron
 
 void readSegment(out float sf, out float sb, out float D)
 {

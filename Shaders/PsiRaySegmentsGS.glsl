@@ -35,7 +35,7 @@ smooth out vec3 isoNormal; // marching-tetrahedra surface vertices only
 uniform vec3 pixelRayOrigin[3]; // O = [0] + x [1] + y [2]
 uniform vec3 pixelRayStep[3];   // S likewise
 
-vec4 faceP0, facePX, facePY, scalarTerms;
+vec4 faceP0 = vec4(0.0), facePX = vec4(0.0), facePY = vec4(0.0), scalarTerms = vec4(0.0);
 
 // Whether the ray enters through each face rides in the lowest mantissa bit of the face's p0
 // instead of an output of its own: the rasterizer's setup and the fragment's interpolation cost

@@ -3,7 +3,7 @@
 // transfer-function nodes (adaptive sampling, PsiAdaptiveFS.glsl) and at isovalue crossings
 // (per-fragment isosurfaces, PsiIsoPerFragmentFS.glsl). PSI_MAX_SPLITS bounds the number of
 // split points (isovalues plus transfer-function nodes).
-vec4 splitAcc;
+vec4 splitAcc = vec4(0.0);
 void addPiece(float sa, float sb, float D)
 {
   if (D > 0.0)

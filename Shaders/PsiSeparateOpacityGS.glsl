@@ -5,7 +5,7 @@
 // scalar's plane at their segment's ends as they do the color scalar's.
 in vec4 vsOpacity[];
 flat out vec4 opacityPlane; // o(x) = g_o . x + o0, view coordinates
-vec3 opacityGradient;
+vec3 opacityGradient = vec3(0.0);
 
 //PSI::SeparateOpacity::Gradient
     // the opacity scalar's gradient, by the same Cramer's rule as the color scalar's

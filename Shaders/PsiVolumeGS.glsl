@@ -25,13 +25,13 @@ in vec4 vsP3[];
 uniform mat4 VCDCMatrix;
 uniform int parallelProjection;
 
-vec4 clipP[4];
-vec3 viewP[4];
-float scalar[4];
-vec2 ndc[4];
+vec4 clipP[4] = vec4[4](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
+vec3 viewP[4] = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+float scalar[4] = float[4](0.0, 0.0, 0.0, 0.0);
+vec2 ndc[4] = vec2[4](vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0));
 
-vec3 thickFront;
-vec3 thickSeg;
+vec3 thickFront = vec3(0.0);
+vec3 thickSeg = vec3(0.0);
 
 //PSI::PointIds::Dec
 //PSI::CellGradient::Dec

@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # Mends a Debian packaging fault that stops find_package(ParaView), and says what it did.
 #
-# Debian 13's ParaView 5.13 CMake files name its Python extension modules without the suffix
-# the package installs them with (…/vtkmodules/vtkCommonCore.so for
+# The CMake files of Debian 13's ParaView 5.13 and of unstable's 6.1 name their Python extension
+# modules without the suffix the packages install them with (…/vtkmodules/vtkCommonCore.so for
 # vtkCommonCore.cpython-313-x86_64-linux-gnu.so), and CMake refuses an imported target whose
 # file is missing. For each such name a symbolic link to the installed module is made; nothing
 # is made where the named file exists or no suffixed module is installed beside it.
 set -euo pipefail
 made=0
-for targets in /usr/lib/*/cmake/paraview-*/vtk/*-targets-*.cmake /usr/lib/*/cmake/paraview-*/*-targets-*.cmake; do
+for targets in /usr/lib/*/cmake/paraview-*/vtk/*-targets-*.cmake /usr/lib/*/cmake/paraview-*/*-targets-*.cmake \
+    /usr/lib/*/cmake/vtk-*/*-targets-*.cmake; do
   [ -f "$targets" ] || continue
   while IFS= read -r named; do
     [ -e "$named" ] && continue
