@@ -12,7 +12,7 @@ llvmpipe, the vertex and geometry shaders, clipping, triangle setup and binning)
 llvmpipe-N threads: rasterization and fragment shading) and other (the visibility sort's worker
 and helper threads). It prints CPU seconds per frame of each group, the share of the cores in
 use, and the last frame as a timeline of --bin seconds: the busy fraction of each group per bin
-(1.00 is one core). The README's "Session 9" reads it."""
+(1.00 is one core). docs/benchmarks.md has its latest output."""
 import argparse
 import os
 import subprocess

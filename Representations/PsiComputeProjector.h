@@ -31,7 +31,7 @@ public:
   static bool IsSupported(vtkOpenGLRenderWindow* renWin);
   /// Whether this frame projects with compute shaders, for vtkPsiVolumeMapper's Projector
   /// (0 geometry shader, 1 compute shader, 2 Auto: the environment's PSI_PROJECTOR, "geometry"
-  /// or "compute", else the geometry shader, measured the faster here; README, "Projectors").
+  /// or "compute", else the geometry shader, measured the faster here; docs/decisions.md, "Projectors").
   /// The compute shader asked for where OpenGL 4.3 is missing gives false, with a warning.
   static bool Chosen(int projector, vtkOpenGLRenderWindow* renWin);
   /// Composes and builds the programs for `f` (once per feature key: `built` tells) and leaves

@@ -95,7 +95,7 @@ public:
   ///    shader is used, with a warning). Compute shaders run on all of a CPU driver's threads.
   ///  - PROJECTOR_AUTO (default): the environment's PSI_PROJECTOR ("geometry" or "compute", a
   ///    site's choice) when set, else the geometry shader, measured the faster of the two with
-  ///    Mesa's llvmpipe (README, "Projectors"; the compute projector needs far less memory
+  ///    Mesa's llvmpipe (docs/decisions.md, "Projectors"; the compute projector needs far less memory
   ///    there).
   enum Projectors
   {
@@ -112,7 +112,7 @@ public:
   ///  - DECOMPOSITION_SILHOUETTE: its silhouette, the convex hull of its projected vertices (1 or
   ///    2 triangles), each fragment intersecting its ray with the four face planes; exact in
   ///    both projections (PsiRaySegments*.glsl). Half the triangles of the fan, and on Mesa's
-  ///    llvmpipe about a fifth less time per frame (README, "Silhouettes").
+  ///    llvmpipe about a fifth less time per frame (docs/decisions.md, "Silhouettes").
   ///  - DECOMPOSITION_FAN: Shirley and Tuchman's 1-4 triangles around the thick vertex, as HAPT
   ///    draws them (Maximo et al. 2010 §3.2), with ExactPerspectiveSegments in perspective.
   ///  - DECOMPOSITION_AUTO (default): the environment's PSI_DECOMPOSITION ("silhouette" or
@@ -173,7 +173,7 @@ public:
   ///    composites the surfaces there (no extra geometry; every fragment pays the search).
   ///  - ISO_AUTO (default): marching tetrahedra when early discard applies (the opacity function
   ///    has zero regions, e.g. plain contours: only the surfaces and the visible pieces are
-  ///    drawn), per fragment otherwise. Both give the same image (the README has the costs).
+  ///    drawn), per fragment otherwise. Both give the same image (docs/benchmarks.md has the costs).
   enum IsosurfaceMethods
   {
     ISO_MARCHING_TETRAHEDRA = 0,

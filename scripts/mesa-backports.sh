@@ -3,10 +3,12 @@
 # installing it, and prints the two variables that make pvpython and pvbatch use its llvmpipe:
 #   eval "$(bash scripts/mesa-backports.sh /tmp/mesa-bpo)"
 #   pvpython Benchmarks/bench_scale.py ...
-# 'Psi Volume' gains more from the newer llvmpipe than 'Projected tetra' does (README, "Session 9").
+# The archive is the one this machine's apt uses. 'Psi Volume' gains more from the newer llvmpipe
+# than 'Projected tetra' does (docs/benchmarks.md).
 set -e
 dir=$(mkdir -p "${1:?usage: mesa-backports.sh DIR}" && cd "$1" && pwd)
-echo "deb http://deb.debian.org/debian bookworm-backports main" > "$dir/backports.list"
+mirror=$(bash "$(dirname "$0")/lib/debian-mirror.sh")
+echo "deb $mirror bookworm-backports main" > "$dir/backports.list"
 mkdir -p "$dir/lists/partial" "$dir/cache/archives/partial"
 opts="-o Dir::Etc::sourcelist=$dir/backports.list -o Dir::Etc::sourceparts=/dev/null
       -o Dir::State::Lists=$dir/lists -o Dir::Cache=$dir/cache"

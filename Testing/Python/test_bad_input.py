@@ -650,6 +650,45 @@ def case_reader():
     t.check(len(errs) > 0 and "line 7" in errs[0], "reader: a malformed file gives an error naming "
             "the line")
     t.check(rb.GetDataInformation().GetNumberOfCells() == 0, "reader: and an empty output")
+    check_off_reader_choice(good, bad, d)
+
+
+def possible_readers(path):
+    """The readers ParaView's reader factory offers for a file, by its extension and each reader's
+    CanReadFile: the GUI's File > Open (pqLoadDataReaction::DetermineFileReader) opens the "choose
+    a reader" dialog when there is more than one, or none."""
+    from paraview import servermanager
+    factory = servermanager.vtkSMProxyManager.GetProxyManager().GetReaderFactory()
+    found = factory.GetReaders(path, servermanager.ActiveConnection.Session)
+    return [found.GetString(i + 1) for i in range(0, found.GetLength(), 3)]
+
+
+def check_off_reader_choice(good, bad, d):
+    """Each .off file has exactly one reader: tetrahedral meshes (well formed or not) this
+    plugin's, polygonal surfaces ParaView's own (5.13 and later; 5.11 has no surface OFF reader)."""
+    surface = os.path.join(d, "surface.off")
+    with open(surface, "w") as fh:
+        fh.write("OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n")
+    for path in (good, bad):
+        t.check(possible_readers(path) == ["PsiOFFTetReader"], "reader: %s has one reader, the "
+                "tetrahedral one (%s)" % (os.path.basename(path), possible_readers(path)))
+    from paraview import servermanager
+    sm = servermanager.vtkSMProxyManager
+    if (sm.GetVersionMajor(), sm.GetVersionMinor()) < (5, 13):
+        t.check(possible_readers(surface) == [], "reader: a surface .off file is not offered to the "
+                "tetrahedral reader (%s)" % possible_readers(surface))
+        return
+    t.check(possible_readers(surface) == ["offreader"], "reader: a surface .off file has one "
+            "reader, ParaView's own (%s)" % possible_readers(surface))
+    rs = simple.OpenDataFile(surface)
+    t.check(rs is not None and rs.GetXMLName() == "offreader", "reader: a surface .off file "
+            "opens with ParaView's OFF reader (%s)" % (rs.GetXMLName() if rs else None))
+    if rs is not None:
+        rs.UpdatePipeline()
+        info = rs.GetDataInformation()
+        t.check(info.GetNumberOfCells() == 4 and info.GetNumberOfPoints() == 4,
+                "reader: the surface read, 4 triangles on 4 points (%d, %d)"
+                % (info.GetNumberOfCells(), info.GetNumberOfPoints()))
 
 
 def case_unitdistance():
