@@ -1,13 +1,14 @@
 #include "PsiPreIntegrationTable.h"
 
 #include "PsiIntegration.h"
+#include "PsiParallel.h"
 #include "PsiTable.h"
 #include "PsiTransferFunctionTable.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <thread>
+#include <vector>
 
 namespace psi
 {
@@ -105,9 +106,9 @@ PreIntegrationTable BuildPreIntegrationTable(const TransferFunctionTable& tf, co
   const double tfStep = (tf.Range[1] - tf.Range[0]) / std::max(tf.Size - 1, 1);
   const double sStep = (t.Range[1] - t.Range[0]) / (ns - 1);
 
-  auto work = [&](int first, int stride) {
+  auto work = [&](vtkIdType first, vtkIdType last) {
     std::vector<double> L(4 * (MaxPiecesPerEntry + 1));
-    for (int j = first; j < ns; j += stride) // back scalar
+    for (int j = static_cast<int>(first); j < last; ++j) // back scalar
     {
       for (int i = 0; i < ns; ++i) // front scalar
       {
@@ -144,16 +145,9 @@ PreIntegrationTable BuildPreIntegrationTable(const TransferFunctionTable& tf, co
       }
     }
   };
-  const int threads = std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::thread> pool;
-  for (int w = 0; w < threads; ++w)
-  {
-    pool.emplace_back(work, w, threads);
-  }
-  for (auto& th : pool)
-  {
-    th.join();
-  }
+  // Rows of back scalars on vtkSMPTools' threads (psi::Parallel), in chunks small enough that
+  // the costly rows (far from the diagonal: more pieces) spread over the threads.
+  psi::Parallel([&] { vtkSMPTools::For(0, ns, std::max(1, ns / 64), work); });
   t.BuildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return t;
 }

@@ -1,13 +1,12 @@
 #include "PsiTable.h"
 
 #include "PsiIntegration.h"
+#include "PsiParallel.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
-#include <thread>
 
 namespace psi
 {
@@ -45,12 +44,11 @@ PsiTable BuildPsiTable(int n)
   PsiTable t;
   t.N = std::max(n, 2);
   t.Values.resize(static_cast<size_t>(t.N) * t.N);
-  const int threads = std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::thread> pool;
-  for (int w = 0; w < threads; ++w)
-  {
-    pool.emplace_back([&t, w, threads] {
-      for (int j = w; j < t.N; j += threads)
+  // Rows on vtkSMPTools' threads (psi::Parallel): as many as the process allows, not one per core
+  // in each MPI rank.
+  psi::Parallel([&t] {
+    vtkSMPTools::For(0, t.N, [&t](vtkIdType first, vtkIdType last) {
+      for (vtkIdType j = first; j < last; ++j)
       {
         const double taufD = TauDOfWarp(static_cast<double>(j) / (t.N - 1));
         for (int i = 0; i < t.N; ++i)
@@ -60,25 +58,14 @@ PsiTable BuildPsiTable(int n)
         }
       }
     });
-  }
-  for (auto& th : pool)
-  {
-    th.join();
-  }
+  });
   t.BuildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return t;
 }
 
 const PsiTable& GetDefaultPsiTable()
 {
-  static const PsiTable table = [] {
-    int n = 512;
-    if (const char* e = std::getenv("PSI_TABLE_SIZE"))
-    {
-      n = std::max(2, std::atoi(e));
-    }
-    return BuildPsiTable(n);
-  }();
+  static const PsiTable table = BuildPsiTable(512);
   return table;
 }
 

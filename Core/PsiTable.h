@@ -38,11 +38,9 @@ PSIVOLUMECORE_EXPORT double TauDOfWarp(double u);
 /// Builds the table by quadrature (psi::Psi), using all hardware threads.
 PSIVOLUMECORE_EXPORT PsiTable BuildPsiTable(int n);
 
-/// One table per process, built on first use at the default resolution (512, or the
-/// PSI_TABLE_SIZE environment variable). With the warped samples 512^2 looks up Psi within 2e-5
-/// everywhere (TestPsiMath), far below an 8-bit step; 1024^2 took four times as long to build
-/// (0.09 s of a first frame at 320k tetrahedra) and four times the memory (4 MB), for nothing an
-/// image shows.
+/// One table per process, built on first use at 512^2. With the warped samples 512^2 looks up
+/// Psi within 2e-5 everywhere (TestPsiMath), far below an 8-bit step; a finer table costs build
+/// time and memory for nothing an image shows (docs/decisions.md, "The Ψ table").
 PSIVOLUMECORE_EXPORT const PsiTable& GetDefaultPsiTable();
 
 } // namespace psi

@@ -45,9 +45,8 @@ void SetSilhouetteShaderParameters(vtkShaderProgram* program, const int size[2])
 
 /// Pixels of extra coverage worth one triangle less. A silhouette drawn as one triangle instead
 /// of two halves llvmpipe's per-triangle setup, binning and rasterization, which dominate for
-/// small cells; the extra fragments see an empty segment and are discarded. Measured (512^2,
-/// CPU s/frame): 320k tets 0.97 -> 0.85 with any bound from 32 pixels up; 2.56M 5.28 -> 4.25;
-/// the Blunt Fin 0.50 -> 0.46 with 16-128 pixels, but 0.50 unbounded (its large cells).
+/// small cells; the extra fragments see an empty segment and are discarded. Without a bound,
+/// meshes with large cells lose what small ones gain (docs/decisions.md, "Silhouettes").
 constexpr double PsiSilhouetteCoverPixels = 32.0;
 
 struct PsiIsosurfaceStyle

@@ -140,8 +140,8 @@ void PsiVisibilityOrder::Draw(
   // each chunk's triangles, with all their fragment inputs, until its rasterizer threads reach
   // them; its geometry stage outruns them, so binned chunks piled up (1.1 GB more peak memory
   // at 2.56M tetrahedra). A fence after each chunk and a wait for the one InFlight chunks back
-  // keep at most InFlight chunks binned without draining the pipeline (2 x 32,768 kept the
-  // speed of 4 with 23 MB less; 3 or 4 small chunks were slower than 2), and free that chunk's
+  // keep at most InFlight chunks binned without draining the pipeline (more in flight were no
+  // faster: docs/decisions.md, "Draw chunks and threads"), and free that chunk's
   // slot for the next. Each fence also ends llvmpipe's scene (see ChunkTetsFor).
   std::array<GLsync, InFlight> fences{};
   const size_t n = this->Size, chunk = ChunkTetsFor(n, targetPixels);

@@ -5,8 +5,8 @@
 //
 // The sort runs on a worker thread while the frame draws. MPVONC emits the farthest
 // tetrahedra first, so Draw uploads and draws each chunk as soon as the sort has finished it:
-// the rasterizer starts on the far chunks instead of waiting for the whole sort (at 2.56M
-// tetrahedra, 0.37 s in which llvmpipe's threads had nothing to draw).
+// the rasterizer starts on the far chunks instead of waiting for the whole sort, in which
+// llvmpipe's threads would have nothing to draw (docs/decisions.md, "Visibility order").
 #ifndef PsiVisibilityOrder_h
 #define PsiVisibilityOrder_h
 
@@ -67,10 +67,9 @@ public:
   /// ends one of llvmpipe's scenes, whose binned triangles its rasterizer threads read back.
   /// Where cells are small (more than SmallCellsPerPixel tetrahedra per pixel) a triangle covers
   /// a few pixels, and reading its binned data (about 450 bytes with the ray terms) costs more
-  /// than shading it: chunks of 4,096 keep a scene within the rasterizer's cache (2.56M
-  /// tetrahedra at 512^2: rasterizer CPU 2.8 -> 2.1 s, frame 2.32 -> 2.17 s; 8.64M: 6.37 ->
-  /// 5.64 s). Where cells are larger, each scene's end costs more than that saves (320k: 0.455
-  /// -> 0.48 s), and chunks stay at 32,768.
+  /// than shading it: chunks of 4,096 keep a scene within the rasterizer's cache. Where cells
+  /// are larger, each scene's end costs more than that saves, and chunks stay at 32,768
+  /// (docs/decisions.md, "Draw chunks and threads", has the figures).
   static constexpr size_t ChunkTetsFor(size_t tets, size_t pixels)
   {
     return tets > SmallCellsPerPixel * pixels ? size_t(1) << 12 : MaxChunkTets;

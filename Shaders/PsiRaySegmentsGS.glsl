@@ -39,9 +39,9 @@ vec4 faceP0 = vec4(0.0), facePX = vec4(0.0), facePY = vec4(0.0), scalarTerms = v
 
 // Whether the ray enters through each face rides in the lowest mantissa bit of the face's p0
 // instead of an output of its own: the rasterizer's setup and the fragment's interpolation cost
-// per output (one vec4 less: 2-6% of the frame on llvmpipe). The bit moves p0 by at most one
-// unit in the last place, less than the rounding of p0 itself; a flat output reaches the
-// fragment shader bit for bit.
+// per output (docs/decisions.md, "Silhouettes": enter flags). The bit moves p0 by at
+// most one unit in the last place, less than the rounding of p0 itself; a flat output reaches
+// the fragment shader bit for bit.
 vec4 withEnterFlags(vec4 p0, bvec4 enters)
 {
   return uintBitsToFloat((floatBitsToUint(p0) & ~1u) | uvec4(enters));

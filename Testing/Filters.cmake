@@ -2,8 +2,6 @@
 # Tests that read the shared data exit with 77 when it is absent: reported as skipped, not passed.
 set(CGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE TRUE)
 find_package(CGAL REQUIRED)
-get_filename_component(_psi_default_data "${CMAKE_CURRENT_LIST_DIR}/../../shared/data" ABSOLUTE)
-set(PSI_DATA_DIR "${_psi_default_data}" CACHE PATH "Shared test data (see its MANIFEST.md)")
 
 add_executable(TestConformingTetrahedralize Cxx/TestConformingTetrahedralize.cxx)
 target_link_libraries(TestConformingTetrahedralize PRIVATE PsiVolume::Filters

@@ -39,10 +39,6 @@ if (PSI_BUILD_FUZZERS)
 endif ()
 
 # --- pvpython tests: bad input to 'Psi Volume' (and to the reader) and MPI ordered compositing.
-if (NOT DEFINED PSI_DATA_DIR)
-  get_filename_component(_psi_default_data "${CMAKE_CURRENT_LIST_DIR}/../../shared/data" ABSOLUTE)
-  set(PSI_DATA_DIR "${_psi_default_data}" CACHE PATH "Shared test data (see its MANIFEST.md)")
-endif ()
 find_program(PVPYTHON_EXECUTABLE NAMES pvpython REQUIRED)
 # One test per case, each in its own pvpython, so that a crash or a hang names its case.
 set(psi_bad_input_cases nontet surface cellscalars nonfinite empty degenerate quadratic multiblock
