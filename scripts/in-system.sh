@@ -16,8 +16,11 @@ shared=$(cd "$root/.." && pwd)/shared
 cp -L /etc/resolv.conf "$sys/etc/resolv.conf"
 mkdir -p "$sys/psi/src" "$sys/psi/shared"
 args=$(printf '%q ' "$@")
+# X display numbers of this system's Xvfb servers: apart from the host's (99 up) and the other
+# systems', since X's abstract sockets are shared across chroots.
+case "$suite" in bookworm) xvfb=200 ;; trixie) xvfb=300 ;; sid) xvfb=400 ;; *) xvfb=500 ;; esac
 exec unshare --mount --propagation private -- bash -euo pipefail -c '
-  sys=$1 root=$2 shared=$3 args=$4
+  sys=$1 root=$2 shared=$3 args=$4 xvfb=$5
   mount -t proc proc "$sys/proc"
   mount -t tmpfs -o mode=1777 shm "$sys/dev/shm"
   mount --bind "$root" "$sys/psi/src"
@@ -27,6 +30,6 @@ exec unshare --mount --propagation private -- bash -euo pipefail -c '
   fi
   exec chroot "$sys" /usr/bin/env -i HOME=/root TERM="${TERM:-dumb}" LANG=C.UTF-8 \
     PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin CI="${CI:-}" \
-    PSI_BUILD_DIR=/root/psi-build \
+    PSI_BUILD_DIR=/root/psi-build PSI_XVFB_DISPLAY="$xvfb" \
     bash -c "cd /psi/src && exec $args"
-' in-system "$sys" "$root" "$shared" "$args"
+' in-system "$sys" "$root" "$shared" "$args" "$xvfb"

@@ -15,6 +15,9 @@
 # connection" now and then (measured: two processes opening and closing the display 3,000 times
 # failed 13-17% of the time by default, 0% with -noreset). Up to two retries remain, each in
 # another fresh server, as a guard; a real failure fails every attempt and fails the run.
+# xvfb-run -a takes the first display number from PSI_XVFB_DISPLAY (default 99) whose lock file
+# is free; a Debian system of scripts/in-system.sh has a /tmp of its own but shares X's abstract
+# sockets with the host, so in-system.sh starts each system's numbers elsewhere.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 paraview=""
@@ -48,7 +51,7 @@ for t in "${tests[@]}"; do
   pattern="^$(printf '%s' "$t" | sed 's/[.[\*^$()+?{|]/\\&/g')\$"
   ok=0
   for attempt in 1 2 3; do
-    if xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
+    if xvfb-run -a -n "${PSI_XVFB_DISPLAY:-99}" -s "-screen 0 1280x1024x24 -noreset" \
       ctest --output-on-failure --timeout 900 -R "$pattern" "${ctest_args[@]}" 2>&1 | tee "$out"; then
       ok=1
       break
