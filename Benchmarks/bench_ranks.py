@@ -76,7 +76,9 @@ def worker(args):
 
 
 def run(n, args, out):
-    env = {k: v for k, v in os.environ.items() if not k.startswith(("OMPI_", "PMIX_"))}
+    sys.path.insert(0, os.path.join(HERE, "..", "Python"))
+    import psi_process
+    env = psi_process.environment_without_mpi()
     cmd = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-n", str(n), "pvbatch",
            "--symmetric", "--force-offscreen-rendering", os.path.abspath(__file__), "--worker",
            "--half", str(args.half), "--size", str(args.size), "--frames", str(args.frames),

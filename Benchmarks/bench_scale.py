@@ -99,7 +99,9 @@ def worker(args):
 
 
 def run_worker(data, mapper, threads, args):
-    env = dict(os.environ)
+    sys.path.insert(0, os.path.join(HERE, "..", "Python"))
+    import psi_process
+    env = psi_process.environment_without_mpi()
     env["LP_NUM_THREADS"] = str(threads)
     cmd = [sys.executable, os.path.abspath(__file__), "--worker", "--data", str(data),
            "--mapper", mapper, "--size", str(args.size), "--frames", str(args.frames)]

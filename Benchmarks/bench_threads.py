@@ -88,7 +88,10 @@ def main():
     cmd = [pvpython, "--force-offscreen-rendering", os.path.abspath(__file__), "--worker",
            "--data", args.data, "--mapper", args.mapper, "--frames", str(args.frames),
            "--size", str(args.size)]
-    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, text=True)
+    sys.path.insert(0, os.path.join(HERE, "..", "Python"))
+    import psi_process
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, text=True,
+                            env=psi_process.environment_without_mpi())
     for line in proc.stdout:
         if line.startswith("READY"):
             break

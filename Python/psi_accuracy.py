@@ -34,6 +34,7 @@ from vtkmodules.vtkRenderingCore import vtkColorTransferFunction
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import psi_bench  # noqa: E402
 import psi_data  # noqa: E402
+import psi_process  # noqa: E402
 import psi_testing  # noqa: E402
 
 PARAVIEW_MAPPERS = ["Projected tetra", "Z sweep", "Bunyk ray cast"]
@@ -203,7 +204,8 @@ def measure_paraview(cap, mappers, frames, timeout=120):
         cmd = [find_pvpython(), "--force-offscreen-rendering", os.path.abspath(__file__),
                "--child-mapper", name, "--child-scene", scene, "--child-out", out]
         try:
-            p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+            p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout,
+                               env=psi_process.environment_without_mpi())
             result = [l for l in p.stdout.splitlines() if l.startswith("PSI_CHILD ")]
             if result and os.path.exists(out):
                 spf = json.loads(result[-1][len("PSI_CHILD "):])["seconds_per_frame"]

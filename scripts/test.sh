@@ -37,6 +37,9 @@ fi
 
 bash "$root/scripts/setup-deps.sh"
 bash "$root/scripts/build.sh"
+# pvpython 5.13+ loses buffered output when a script leaves through os._exit into a pipe
+# (Python/psi_process.py): unbuffered, a failing test's check lines reach the log.
+export PYTHONUNBUFFERED=1
 cd "${PSI_BUILD_DIR:-$root/build}"
 mapfile -t tests < <(ctest -N | sed -n 's/^ *Test *#[0-9]*: //p' | grep -E -- "${only:-.}" || true)
 [ "${#tests[@]}" -gt 0 ] || { echo "[test.sh] no test matches '${only}'"; exit 1; }

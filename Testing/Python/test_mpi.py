@@ -21,6 +21,7 @@ import time
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
 import numpy as np  # noqa: E402
 import psi_data  # noqa: E402
+import psi_process  # noqa: E402
 import psi_testing  # noqa: E402
 from paraview import servermanager, simple  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
@@ -89,8 +90,7 @@ def serial_main(out):
 
 def serial_reference(out):
     """Runs this script serially in a clean environment (no MPI launcher variables)."""
-    env = {k: v for k, v in os.environ.items()
-           if not k.startswith(("OMPI_", "PMIX_", "PMI_", "OPAL_", "ORTE_", "HYDRA_", "MPI_"))}
+    env = psi_process.environment_without_mpi()
     exe = os.environ.get("PSI_PVBATCH") or "pvbatch"
     cmd = [exe, "--force-offscreen-rendering", os.path.abspath(__file__), "--serial", out]
     t0 = time.time()

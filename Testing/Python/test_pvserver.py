@@ -46,6 +46,7 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(HERE, "..", "..", "Python"))
 import numpy as np  # noqa: E402
 import psi_data  # noqa: E402
+import psi_process  # noqa: E402
 import psi_testing  # noqa: E402
 import test_mpi  # noqa: E402  (the scene, camera, capture and tolerance of the MPI test)
 from paraview import servermanager, simple  # noqa: E402
@@ -102,10 +103,8 @@ def start_server(port, logfile):
     pvserver = os.environ.get("PSI_PVSERVER") or shutil.which("pvserver") or "pvserver"
     cmd = [mpiexec, "--allow-run-as-root", "-n", str(NRANKS), pvserver,
            "--server-port=%d" % port, "--force-offscreen-rendering"]
-    # pvpython initialized MPI as a singleton, which put OMPI_*/PMIX_* variables in this
-    # environment; with them mpiexec exits 1 at once, printing nothing. Same clean-up as test_mpi.
-    env = {k: v for k, v in os.environ.items()
-           if not k.startswith(("OMPI_", "PMIX_", "PMI_", "OPAL_", "ORTE_", "HYDRA_", "MPI_"))}
+    # pvpython initialized MPI as a singleton: mpiexec must not inherit it (psi_process).
+    env = psi_process.environment_without_mpi()
     env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")  # 2 ranks on a machine with 1 core
     log("server: %s" % " ".join(cmd))
     return subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=logfile,
