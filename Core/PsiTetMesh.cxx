@@ -1,10 +1,13 @@
 #include "PsiTetMesh.h"
 
+#include "PsiCellTypes.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
+#include "vtkType.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -16,22 +19,35 @@ namespace psi
 {
 namespace
 {
-// The four point ids of cell c.
-void CellPoints(vtkUnstructuredGridBase* input, vtkIdType c, vtkIdList* ids, vtkIdType pts[4])
+// The four point ids of cell c; false when the cell does not have four points (a grid whose
+// types disagree with its cells: seen in VTK 9.6 after InsertNextCell on a grid made with
+// SetCells(VTK_TETRA, ...), whose types array is a constant).
+bool CellPoints(vtkUnstructuredGridBase* input, vtkIdType c, vtkIdList* ids, vtkIdType pts[4])
 {
   if (vtkUnstructuredGrid* ug = vtkUnstructuredGrid::SafeDownCast(input))
   {
-    vtkIdType npts;
-    const vtkIdType* p;
-    ug->GetCellPoints(c, npts, p);
+    // The form with a list: VTK 9.4+ may store 32-bit or fixed-size cells, whose ids it copies
+    // there instead of pointing into its own storage.
+    vtkIdType npts = 0;
+    const vtkIdType* p = nullptr;
+    ug->GetCellPoints(c, npts, p, ids);
+    if (npts != 4)
+    {
+      return false;
+    }
     std::copy(p, p + 4, pts);
-    return;
+    return true;
   }
   input->GetCellPoints(c, ids);
+  if (ids->GetNumberOfIds() != 4)
+  {
+    return false;
+  }
   for (int v = 0; v < 4; ++v)
   {
     pts[v] = ids->GetId(v);
   }
+  return true;
 }
 
 // Color and, with a separate opacity array, opacity scalar of tuple i; false if either is not
@@ -94,13 +110,12 @@ void GatherTets(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cell
   vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < nc; ++c)
   {
-    if (input->GetCellType(c) != VTK_TETRA)
+    vtkIdType pts[4];
+    if (input->GetCellType(c) != VTK_TETRA || !CellPoints(input, c, ids, pts))
     {
       ++m.NonTetCells;
       continue;
     }
-    vtkIdType pts[4];
-    CellPoints(input, c, ids, pts);
     double cellScalar = 0.0, cellOpacity = 0.0;
     const bool finite = cellScalars
       ? TupleScalars(scalars, c, component, cellScalar, cellOpacity)
@@ -142,7 +157,7 @@ bool BorrowTets(
 {
   vtkUnstructuredGrid* ug = vtkUnstructuredGrid::SafeDownCast(input);
   vtkCellArray* cells = ug ? ug->GetCells() : nullptr;
-  vtkUnsignedCharArray* types = ug ? ug->GetCellTypesArray() : nullptr;
+  vtkDataArray* types = ug ? CellTypesOf(ug) : nullptr;
   const vtkIdType nc = input->GetNumberOfCells();
   if (!cells || !types || nc == 0 || types->GetNumberOfValues() != nc ||
     cells->GetNumberOfConnectivityIds() != 4 * nc ||
@@ -150,20 +165,27 @@ bool BorrowTets(
   {
     return false;
   }
-  const unsigned char* type = types->GetPointer(0);
-  if (std::any_of(type, type + nc, [](unsigned char t) { return t != VTK_TETRA; }) ||
+  double typeRange[2];
+  types->GetRange(typeRange, 0); // all tetrahedra: the smallest and largest type are VTK_TETRA
+  if (typeRange[0] != VTK_TETRA || typeRange[1] != VTK_TETRA ||
     std::find(pointFinite.begin(), pointFinite.end(), 0) != pointFinite.end())
   {
     return false; // cells to skip: gather a copy
   }
-  if (cells->IsStorage64Bit()) // TetMesh::Cells reads either width
+  // TetMesh::Cells reads the ids in place, from a contiguous array of either width (32-bit ids
+  // are below 2^31, checked above). VTK 9.2 stores them so (Int32 or Int64 storage); VTK 9.4+
+  // may also use its fixed-size storages (same connectivity arrays) or a generic array, which
+  // is gathered as a copy instead.
+  vtkDataArray* ids = cells->GetConnectivityArray();
+  const int type = ids ? ids->GetDataType() : VTK_VOID;
+  const bool integral = type == VTK_INT || type == VTK_LONG || type == VTK_LONG_LONG ||
+    type == VTK_ID_TYPE || type == VTK_TYPE_INT32 || type == VTK_TYPE_INT64;
+  if (!integral || !ids->HasStandardMemoryLayout() || ids->GetNumberOfComponents() != 1 ||
+    (ids->GetDataTypeSize() != 4 && ids->GetDataTypeSize() != 8))
   {
-    m.Borrowed = cells->GetConnectivityArray64();
+    return false;
   }
-  else // ids below 2^31 (checked above)
-  {
-    m.Borrowed = cells->GetConnectivityArray32();
-  }
+  m.Borrowed = ids;
   return true;
 }
 

@@ -1,5 +1,7 @@
 #include "PsiMeshBuffers.h"
 
+#include "PsiCellTypes.h"
+
 #include "vtkDataArray.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -25,12 +27,12 @@ namespace
 vtkMTimeType GeometryTimeOf(vtkUnstructuredGridBase* input)
 {
   vtkUnstructuredGrid* ug = vtkUnstructuredGrid::SafeDownCast(input);
-  if (!ug || !ug->GetPoints() || !ug->GetCells() || !ug->GetCellTypesArray())
+  if (!ug || !ug->GetPoints() || !ug->GetCells() || !psi::CellTypesOf(ug))
   {
     return input->GetMTime();
   }
   return std::max({ ug->GetPoints()->GetMTime(), ug->GetCells()->GetMTime(),
-    ug->GetCellTypesArray()->GetMTime() });
+    psi::CellTypesOf(ug)->GetMTime() });
 }
 
 // The objects that hold the points and cells. A new time step of the same mesh is often a new
@@ -39,11 +41,11 @@ vtkMTimeType GeometryTimeOf(vtkUnstructuredGridBase* input)
 std::array<const void*, 3> GeometryOf(vtkUnstructuredGridBase* input)
 {
   vtkUnstructuredGrid* ug = vtkUnstructuredGrid::SafeDownCast(input);
-  if (!ug || !ug->GetPoints() || !ug->GetCells() || !ug->GetCellTypesArray())
+  if (!ug || !ug->GetPoints() || !ug->GetCells() || !psi::CellTypesOf(ug))
   {
     return { { input, nullptr, nullptr } };
   }
-  return { { ug->GetPoints(), ug->GetCells(), ug->GetCellTypesArray() } };
+  return { { ug->GetPoints(), ug->GetCells(), psi::CellTypesOf(ug) } };
 }
 } // namespace
 
