@@ -185,7 +185,7 @@ MUTATIONS = [
              "  for (size_t first = 0, i = 0; first < n; first += chunk, ++i)",
              "  for (size_t first = 0, i = 0; first < n; first += 2 * chunk, ++i)", GL),
     Mutation("time_step_gathers_mesh", "Representations/PsiMeshBuffers.cxx",
-             "  return { { ug->GetPoints(), ug->GetCells(), ug->GetCellTypesArray() } };",
+             "  return { { ug->GetPoints(), ug->GetCells(), psi::CellTypesOf(ug) } };",
              "  return { { input, nullptr, nullptr } };", GL),
     Mutation("opaque_props_without_data", "Representations/PsiRenderTarget.cxx",
              "    if (!b || !vtkMath::AreBoundsInitialized(b))", "    if (!b)", GL),
