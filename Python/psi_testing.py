@@ -34,6 +34,18 @@ def exit_now(code):
     os._exit(code)
 
 
+def apply_preset(function, *names):
+    """Applies the first of `names` this ParaView knows: ParaView 6 renamed presets ('Viridis
+    (matplotlib)' is 'Viridis') and raises on an unknown name where 5.11 returned False."""
+    for name in names:
+        try:
+            if function.ApplyPreset(name, True):
+                return name
+        except RuntimeError:
+            pass
+    raise RuntimeError("none of the presets %s exists in this ParaView" % (names,))
+
+
 def black_view(size):
     """A size x size render view on a black background, without orientation axes: premultiplied
     volume colors read back as they are."""

@@ -65,8 +65,7 @@ for width in (0.1, 0.01, 0.003, 0.001, 0.0003, 0.0001):
         t.check(n_auto > 0, "w = %.2f%%: Auto samples adaptively" % (100 * width))
 
 # ParaView's default transfer function has no feature the table misses: Auto draws as Off.
-pwf.ApplyPreset("Linear Ramp (Default)", True) if hasattr(pwf, "ApplyPreset") else None
-pwf.Points = [0.0, 0.0, 0.5, 0.0, 1.0, 1.0, 0.5, 0.0]
+pwf.Points = [0.0, 0.0, 0.5, 0.0, 1.0, 1.0, 0.5, 0.0]  # the default linear ramp
 lut.ApplyPreset("Cool to Warm", True)
 d.ScalarOpacityUnitDistance = 1.0
 d.AdaptiveSampling = "Auto"

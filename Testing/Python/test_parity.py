@@ -87,7 +87,7 @@ step("another array", calc2, lambda d: color(d, name="Other"))
 step("vector magnitude", calc2, lambda d: color(d, name="V", comp="Magnitude"))
 step("vector component Z", calc2, lambda d: color(d, name="V", comp="Z"))
 step("cell data", cells, lambda d: color(d, assoc="CELLS"))
-step("color map preset", calc2, lambda d: (color(d), lut.ApplyPreset("Viridis (matplotlib)", True)),
+step("color map preset", calc2, lambda d: (color(d), psi_testing.apply_preset(lut, "Viridis (matplotlib)", "Viridis")),
      undo=lambda: lut.ApplyPreset("Cool to Warm", True))
 saved = list(pwf.Points)
 step("opacity function", calc2,
