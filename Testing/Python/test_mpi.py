@@ -33,6 +33,8 @@ MEAN_TOL = 1.0  # 1/255 units
 OUTLIER = 24.0  # 1/255 units
 OUTLIER_FRACTION = 0.01
 WATCHDOG = 200  # seconds
+# the rank array: ProcessIdScalars' "ProcessId" up to ParaView 5.13, ProcessIds' in ParaView 6
+PROCESS_ID_ARRAY = "ProcessId" if hasattr(simple, "ProcessIdScalars") else "PointProcessIds"
 
 
 def capture(view):
@@ -48,7 +50,11 @@ def build(redistribute):
     src = simple.Tetrahedralize(Input=w)
     if redistribute:
         src = simple.RedistributeDataSet(Input=src)
-    ids = simple.ProcessIdScalars(Input=src)  # point array ProcessId: where the mesh lives
+    # a point array of the rank: where the mesh lives (PROCESS_ID_ARRAY)
+    if hasattr(simple, "ProcessIdScalars"):
+        ids = simple.ProcessIdScalars(Input=src)
+    else:  # ParaView 6
+        ids = simple.ProcessIds(Input=src, GeneratePointData=1)
     ids.UpdatePipeline()
     return src, ids
 
@@ -150,7 +156,7 @@ def parallel_main():
         label = "RedistributeDataSet" if redistribute else "Wavelet pieces"
         src, ids = build(redistribute)
         ntotal = src.GetDataInformation().GetNumberOfCells()
-        prange = ids.PointData["ProcessId"].GetRange()
+        prange = ids.PointData[PROCESS_ID_ARRAY].GetRange()
         t.check(prange[0] == 0 and prange[1] == nranks - 1,
                 "%s: the mesh is spread over the ranks (ProcessId range %s, %d tetrahedra in all)"
                 % (label, prange, ntotal))

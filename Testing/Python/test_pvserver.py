@@ -250,7 +250,7 @@ def remote_checks(t, port, plugin, ref, n_serial):
                 and sum(per_rank) == ntotal == n_serial,
                 "%s: the mesh is split over the ranks: %s tetrahedra per rank, %d in all (serial "
                 "%d)" % (label, per_rank, ntotal, n_serial))
-        prange = ids.PointData["ProcessId"].GetRange()
+        prange = ids.PointData[test_mpi.PROCESS_ID_ARRAY].GetRange()
         t.check(prange[0] == 0 and prange[1] == NRANKS - 1,
                 "%s: ProcessId range over the mesh %s" % (label, prange))
 
