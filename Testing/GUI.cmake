@@ -82,6 +82,12 @@ set(psi_gui_tests PsiVolumeGUI PsiVolumeGUIOpacityState PsiVolumeGUIOpenFile)
 set(PsiVolumeGUIOpenFile_baseline PsiVolumeGUIOpenFile.png)
 set(PsiVolumeGUI_baseline PsiVolumeGUI.png)
 set(PsiVolumeGUIOpacityState_baseline PsiVolumeGUI_Average.png)
+# ParaView 6 draws the same scene on its own default background and color map (its settings
+# changed both), so its images have their own baselines.
+set(psi_gui_baselines "${CMAKE_CURRENT_SOURCE_DIR}/Data/Baseline")
+if (ParaView_VERSION VERSION_GREATER_EQUAL "6.0")
+  set(psi_gui_baselines "${CMAKE_CURRENT_SOURCE_DIR}/Data/Baseline/pv6")
+endif ()
 foreach (name IN LISTS psi_gui_tests)
   add_test(NAME PsiGUI.${name}
     COMMAND "${CMAKE_COMMAND}"
@@ -89,8 +95,8 @@ foreach (name IN LISTS psi_gui_tests)
             "-DPARAVIEW_VERSION=${ParaView_VERSION}"
             "-DPLUGIN_DIR=$<TARGET_FILE_DIR:PsiVolume>"
             "-DSCRIPT=${CMAKE_CURRENT_SOURCE_DIR}/XML/${name}.xml"
-            "-DBASELINE=${CMAKE_CURRENT_SOURCE_DIR}/Data/Baseline/${${name}_baseline}"
-            "-DBASELINE_DIR=${CMAKE_CURRENT_SOURCE_DIR}/Data/Baseline"
+            "-DBASELINE=${psi_gui_baselines}/${${name}_baseline}"
+            "-DBASELINE_DIR=${psi_gui_baselines}"
             "-DDATA_DIR=${CMAKE_CURRENT_SOURCE_DIR}"
             "-DTEST_DIR=${CMAKE_BINARY_DIR}/Testing/Temporary/GUI/${name}"
             -P "${CMAKE_CURRENT_LIST_FILE}")
