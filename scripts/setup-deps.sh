@@ -6,6 +6,7 @@
 # scripts/lib/mend-paraview-cmake.sh), saying what it did.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
+source "$here/lib/paraview-versions.sh"
 SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
 
 apt_update() {
@@ -34,7 +35,7 @@ paraview_series() {
     fi
   fi
   [ -n "$v" ] && [ "$v" != "(none)" ] || { echo "[setup] this system offers no paraview package" >&2; exit 1; }
-  echo "$v" | sed -E 's/^([0-9]+:)?([0-9]+\.[0-9]+).*/\2/'
+  paraview_series_of "$v"
 }
 
 COMMON=(paraview paraview-dev python3-paraview libutfcpp-dev libhdf5-dev libogg-dev libtheora-dev

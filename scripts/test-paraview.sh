@@ -8,15 +8,8 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 want=${1:?usage: test-paraview.sh VERSION|all [--only REGEX] [ctest args]}
 shift
-suite_of() {
-  case "$1" in
-    5.11) echo bookworm ;;
-    5.13) echo trixie ;;
-    6.1) echo sid ;;
-    *) echo "test.sh: ParaView $1 is not one of 5.11, 5.13, 6.1" >&2; return 1 ;;
-  esac
-}
-here_series=$(dpkg-query -W -f='${Version}' paraview 2>/dev/null | sed -E 's/^([0-9]+:)?([0-9]+\.[0-9]+).*/\2/' || true)
+source "$root/scripts/lib/paraview-versions.sh"
+here_series=$(installed_paraview_series)
 versions=("$want")
 [ "$want" = all ] && versions=(5.11 5.13 6.1)
 summary=()
