@@ -386,14 +386,14 @@ int main(int argc, char* argv[])
     PSI_CHECK(prog != nullptr && prog->GetCompiled(), "does not compile or link:\n%s",
       Describe(f).c_str());
     compiled += prog != nullptr ? 1 : 0;
+    // The compute-shader projector of the same features: its projection pass and draw program.
+    const psi::ComputeProjectorSources c = psi::ComposeComputeProjector(f);
     if (prog)
     {
-      CheckQuietCompile(prog, psi::ComposeComputeProjector(f).Compute, Describe(f));
+      CheckQuietCompile(prog, c.Compute, Describe(f));
     }
-    // The compute-shader projector of the same features: its projection pass and draw program.
     if (!outDir.empty())
     {
-      const psi::ComputeProjectorSources c = psi::ComposeComputeProjector(f);
       std::ofstream(outDir + "/projector" + std::to_string(compiled - 1) + ".glsl")
         << "// " << Describe(f) << "\n// ---- compute\n" << c.Compute << "// ---- vertex\n"
         << c.Vertex;
