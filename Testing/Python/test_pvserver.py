@@ -18,7 +18,11 @@ Environment: PSI_PLUGIN (the plugin), PSI_PVSERVER, PSI_MPIEXEC (default: from P
 4. For the Wavelet's own pieces and after RedistributeDataSet, as test_mpi.py does, checks that
    the data is distributed: 2 data partitions; the cells gathered from each rank alone
    (vtkSMSourceProxy::GetRankDataInformation) are non-empty and sum to the serial count; the
-   ProcessId array spans 0..1; 'Psi Volume' on server rank 0 drew exactly rank 0's tetrahedra.
+   ProcessId array spans 0..1; 'Psi Volume' on server rank 0 drew a part of the mesh, between a
+   quarter and three quarters of it. Not exactly rank 0's cells: for ordered compositing the view
+   may redistribute the data over its own k-d tree (ParaView 6.1 cuts the Wavelet's 32 slabs
+   15/17 where the source's pieces are 16/16), and the image check below shows that every
+   tetrahedron was drawn once.
 5. Checks the image was rendered on the server, not on the client: RemoteRenderThreshold = 0 (set
    before the view exists), remote rendering available and used for the render, and the client's
    own 'Psi Volume' drew 0 tetrahedra. 'Volume'-type representations require distributed
@@ -270,9 +274,9 @@ def remote_checks(t, port, plugin, ref, n_serial):
         n_client, n0 = drawn(d)
         t.check(n_client == 0, "%s: the client drew nothing itself (its 'Psi Volume' drew %d "
                 "tetrahedra)" % (label, n_client))
-        t.check(0 < n0 < ntotal and n0 == per_rank[0],
-                "%s: 'Psi Volume' on server rank 0 drew only its part: %d of %d tetrahedra (rank 0 "
-                "holds %d)" % (label, n0, ntotal, per_rank[0]))
+        t.check(0.25 * ntotal <= n0 <= 0.75 * ntotal,
+                "%s: 'Psi Volume' on server rank 0 drew a part: %d of %d tetrahedra (the source "
+                "gave rank 0 %d)" % (label, n0, ntotal, per_rank[0]))
 
         cov_ref, cov = psi_testing.covered(ref, BG), psi_testing.covered(img, BG)
         t.check(cov_ref > 0.2 * SIZE * SIZE and cov > 0.2 * SIZE * SIZE,
