@@ -11,21 +11,22 @@ namespace psi
 IsosurfaceList IsosurfaceList::Normalize(const std::vector<double>& values,
   const std::vector<double>& opacities, double defaultOpacity)
 {
-  std::vector<std::pair<float, float>> list; // (value, opacity)
+  std::vector<std::pair<double, float>> list; // (value, opacity)
   for (size_t i = 0; i < values.size(); ++i)
   {
     const double v = values[i];
     const double o = i < opacities.size() ? opacities[i] : defaultOpacity;
     if (FiniteScalar(v))
     {
-      list.emplace_back(static_cast<float>(v),
+      list.emplace_back(v,
         static_cast<float>(std::isfinite(o) ? std::min(1.0, std::max(0.0, o)) : 1.0));
     }
   }
-  auto byValue = [](const std::pair<float, float>& a, const std::pair<float, float>& b) {
+  using Entry = std::pair<double, float>;
+  auto byValue = [](const Entry& a, const Entry& b) {
     return a.first < b.first;
   };
-  auto sameValue = [](const std::pair<float, float>& a, const std::pair<float, float>& b) {
+  auto sameValue = [](const Entry& a, const Entry& b) {
     return a.first == b.first;
   };
   std::stable_sort(list.begin(), list.end(), byValue);

@@ -16,7 +16,7 @@ struct PSIVOLUMECORE_EXPORT IsosurfaceList
   /// The largest number of isosurfaces drawn; more are dropped (counted in Dropped).
   static constexpr int MaxCount = 32;
 
-  std::vector<float> Values;    ///< ascending, distinct, finite
+  std::vector<double> Values;   ///< ascending, distinct, finite
   std::vector<float> Opacities; ///< of each value, in [0, 1]
   size_t Dropped = 0;           ///< distinct finite values beyond MaxCount
 

@@ -59,51 +59,61 @@ bool TupleScalars(vtkDataArray* scalars, vtkIdType i, ScalarComponent c, double&
   return FiniteScalar(s) && FiniteScalar(o);
 }
 
-void AppendPoint(TetMesh& m, const double p[3], float s, float o, ScalarComponent c)
+// The scalars of the mesh's points as the input holds them, in double, while the mesh is
+// gathered: TetMesh keeps them only as fractions of their range (NormalizeScalars).
+struct RawScalars
+{
+  std::vector<double> S; ///< color scalar per point
+  std::vector<double> O; ///< separate opacity scalar per point (empty without one)
+};
+
+void AppendPoint(
+  TetMesh& m, RawScalars& raw, const double p[3], double s, double o, ScalarComponent c)
 {
   m.Points4.insert(m.Points4.end(),
     { static_cast<float>(p[0] - m.Shift[0]), static_cast<float>(p[1] - m.Shift[1]),
-      static_cast<float>(p[2] - m.Shift[2]), s });
+      static_cast<float>(p[2] - m.Shift[2]), 0.0f });
+  raw.S.push_back(s);
   if (c.Opacity >= 0)
   {
-    m.Opacity.push_back(o);
+    raw.O.push_back(o);
   }
 }
 
 // Point data: every input point once, with its scalar (0 where it is not finite).
 void GatherPoints(vtkUnstructuredGridBase* input, vtkDataArray* scalars,
-  ScalarComponent component, TetMesh& m, std::vector<char>& finite)
+  ScalarComponent component, TetMesh& m, RawScalars& raw, std::vector<char>& finite)
 {
   const vtkIdType np = input->GetNumberOfPoints();
   finite.resize(np);
   m.Points4.reserve(4 * static_cast<size_t>(np));
+  raw.S.reserve(static_cast<size_t>(np));
   for (vtkIdType i = 0; i < np; ++i)
   {
     double s, o;
     finite[i] = TupleScalars(scalars, i, component, s, o);
     double p[3];
     input->GetPoint(i, p);
-    AppendPoint(m, p, finite[i] ? static_cast<float>(s) : 0.0f,
-      finite[i] ? static_cast<float>(o) : 0.0f, component);
+    AppendPoint(m, raw, p, finite[i] ? s : 0.0, finite[i] ? o : 0.0, component);
   }
 }
 
 // Cell data: the tetrahedron's own four points, all carrying the cell's scalars.
 void AppendCellScalarTet(vtkUnstructuredGridBase* input, const vtkIdType pts[4], double s,
-  double o, ScalarComponent c, TetMesh& m)
+  double o, ScalarComponent c, TetMesh& m, RawScalars& raw)
 {
   const uint32_t base = static_cast<uint32_t>(m.NumberOfPoints());
   for (int v = 0; v < 4; ++v)
   {
     double p[3];
     input->GetPoint(pts[v], p);
-    AppendPoint(m, p, static_cast<float>(s), static_cast<float>(o), c);
+    AppendPoint(m, raw, p, s, o, c);
     m.Tets.push_back(base + v);
   }
 }
 
 void GatherTets(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cellScalars,
-  ScalarComponent component, const std::vector<char>& pointFinite, TetMesh& m)
+  ScalarComponent component, const std::vector<char>& pointFinite, TetMesh& m, RawScalars& raw)
 {
   const vtkIdType nc = input->GetNumberOfCells();
   m.Tets.reserve(4 * static_cast<size_t>(nc));
@@ -139,7 +149,7 @@ void GatherTets(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cell
     }
     if (cellScalars)
     {
-      AppendCellScalarTet(input, pts, cellScalar, cellOpacity, component, m);
+      AppendCellScalarTet(input, pts, cellScalar, cellOpacity, component, m, raw);
       continue;
     }
     for (int v = 0; v < 4; ++v)
@@ -207,12 +217,12 @@ void SetRange(double lo, double hi, double range[2])
 
 // Scalar ranges of the drawn tetrahedra (never empty; the separate opacity scalars' too) and,
 // when `edges`, the longest and shortest edge, in one pass.
-void MeasureTets(TetMesh& m, bool edges = true)
+void MeasureTets(TetMesh& m, const RawScalars& raw, bool edges = true)
 {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo, maxEdge2 = 0;
   double olo = lo, ohi = hi;
   double minEdge2 = std::numeric_limits<double>::infinity();
-  const bool opacity = !m.Opacity.empty();
+  const bool opacity = !raw.O.empty();
   const TetCells cells = m.Cells();
   for (size_t t = 0; t < m.NumberOfTets(); ++t)
   {
@@ -221,12 +231,12 @@ void MeasureTets(TetMesh& m, bool edges = true)
     for (int a = 0; a < 4; ++a)
     {
       const float* p = &m.Points4[4 * static_cast<size_t>(v[a])];
-      lo = std::min<double>(lo, p[3]);
-      hi = std::max<double>(hi, p[3]);
+      lo = std::min(lo, raw.S[v[a]]);
+      hi = std::max(hi, raw.S[v[a]]);
       if (opacity)
       {
-        olo = std::min<double>(olo, m.Opacity[v[a]]);
-        ohi = std::max<double>(ohi, m.Opacity[v[a]]);
+        olo = std::min(olo, raw.O[v[a]]);
+        ohi = std::max(ohi, raw.O[v[a]]);
       }
       for (int c = a + 1; c < 4 && edges; ++c)
       {
@@ -245,6 +255,26 @@ void MeasureTets(TetMesh& m, bool edges = true)
   }
   SetRange(lo, hi, m.ScalarRange);
   SetRange(olo, ohi, m.OpacityRange);
+}
+
+// A fraction of the range, kept finite in float for points no drawn tetrahedron uses.
+float UnitFloat(const double range[2], double s)
+{
+  return static_cast<float>(std::min(std::max(UnitScalar(range, s), -1e6), 1e6));
+}
+
+// The points' scalars as fractions of the measured ranges (TetMesh::Points4).
+void NormalizeScalars(TetMesh& m, const RawScalars& raw)
+{
+  for (size_t i = 0; i < raw.S.size(); ++i)
+  {
+    m.Points4[4 * i + 3] = UnitFloat(m.ScalarRange, raw.S[i]);
+  }
+  m.Opacity.resize(raw.O.size());
+  for (size_t i = 0; i < raw.O.size(); ++i)
+  {
+    m.Opacity[i] = UnitFloat(m.OpacityRange, raw.O[i]);
+  }
 }
 } // namespace
 
@@ -278,15 +308,17 @@ TetMesh GatherTetMesh(vtkUnstructuredGridBase* input, vtkDataArray* scalars, boo
     m.Bounds[2 * k + 1] = b[2 * k + 1] - m.Shift[k];
   }
   std::vector<char> pointFinite;
+  RawScalars raw;
   if (!cellScalars)
   {
-    GatherPoints(input, scalars, component, m, pointFinite);
+    GatherPoints(input, scalars, component, m, raw, pointFinite);
   }
   if (cellScalars || !BorrowTets(input, pointFinite, m))
   {
-    GatherTets(input, scalars, cellScalars, component, pointFinite, m);
+    GatherTets(input, scalars, cellScalars, component, pointFinite, m, raw);
   }
-  MeasureTets(m);
+  MeasureTets(m, raw);
+  NormalizeScalars(m, raw);
   return m;
 }
 
@@ -302,26 +334,23 @@ bool UpdateTetMeshScalars(TetMesh& m, vtkDataArray* scalars, ScalarComponent com
   {
     return false; // a separate opacity array came or went: gather again
   }
-  std::vector<float> values(np), opacities(m.Opacity.size());
+  RawScalars raw;
+  raw.S.resize(np);
+  raw.O.resize(m.Opacity.size());
   for (size_t i = 0; i < np; ++i)
   {
-    double s, o;
-    if (!TupleScalars(scalars, static_cast<vtkIdType>(i), component, s, o))
+    double o;
+    if (!TupleScalars(scalars, static_cast<vtkIdType>(i), component, raw.S[i], o))
     {
       return false;
     }
-    values[i] = static_cast<float>(s);
-    if (!opacities.empty())
+    if (!raw.O.empty())
     {
-      opacities[i] = static_cast<float>(o);
+      raw.O[i] = o;
     }
   }
-  for (size_t i = 0; i < np; ++i)
-  {
-    m.Points4[4 * i + 3] = values[i];
-  }
-  m.Opacity.swap(opacities);
-  MeasureTets(m, false);
+  MeasureTets(m, raw, false);
+  NormalizeScalars(m, raw);
   return true;
 }
 

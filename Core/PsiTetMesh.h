@@ -31,9 +31,13 @@ struct PSIVOLUMECORE_EXPORT TetMesh
   double Bounds[6] = { 0, 0, 0, 0, 0, 0 }; ///< of the shifted points
   double Shift[3] = { 0, 0, 0 };           ///< subtracted from every input point
   double ScalarRange[2] = { 0, 1 };        ///< of the drawn tetrahedra (never empty)
-  std::vector<float> Points4;              ///< x, y, z, scalar per point
-  /// The opacity scalar per point, with a separate opacity array (ScalarComponent::Opacity);
-  /// empty otherwise.
+  /// x, y, z, u per point, where u = UnitScalar(ScalarRange, s) is the point's scalar s as a
+  /// fraction of the range, computed in double: 0 and 1 at the range's ends. The GPU never sees
+  /// s itself, whose range may be narrower than the smallest normal float (ParaView widens a
+  /// field of zeros to [0, 1.18e-38], which a GPU flushes to 0) or far from 0 beside its width.
+  std::vector<float> Points4;
+  /// The opacity scalar per point as a fraction of OpacityRange, with a separate opacity array
+  /// (ScalarComponent::Opacity); empty otherwise.
   std::vector<float> Opacity;
   double OpacityRange[2] = { 0, 1 }; ///< of Opacity over the drawn tetrahedra (never empty)
   /// 4 point ids per tetrahedron; empty when they are the input's own connectivity (Borrowed)
@@ -69,6 +73,13 @@ struct PSIVOLUMECORE_EXPORT TetMesh
   }
   size_t NumberOfPoints() const { return this->Points4.size() / 4; }
 };
+
+/// Where s lies in `range`, as a fraction of its width: 0 at range[0], 1 at range[1]. Every
+/// scalar the GPU compares or looks up (points, isovalues, transfer-function nodes) is one.
+inline double UnitScalar(const double range[2], double s)
+{
+  return (s - range[0]) / (range[1] - range[0]);
+}
 
 /// Whether the renderer can draw scalar s: finite and within float range. Tetrahedra touching
 /// another value are skipped; isovalues outside it are dropped.

@@ -173,10 +173,10 @@ void TransferFunctionNodes::Lookup(double s, double out[4]) const
     return;
   }
   const auto j = static_cast<int>(
-    std::upper_bound(this->Scalars.begin(), this->Scalars.end(), static_cast<float>(s)) -
+    std::upper_bound(this->Scalars.begin(), this->Scalars.end(), s) -
     this->Scalars.begin());
   const int a = std::max(j - 1, 0), b = std::min(j, n - 1);
-  const double width = static_cast<double>(this->Scalars[b]) - this->Scalars[a];
+  const double width = this->Scalars[b] - this->Scalars[a];
   const double w = width > 0 ? std::min(std::max((s - this->Scalars[a]) / width, 0.0), 1.0) : 0.0;
   for (int c = 0; c < 4; ++c)
   {
@@ -204,7 +204,7 @@ TransferFunctionNodes SampleTransferFunctionNodes(
   const double unit = OpacityUnitDistance(property);
   for (const Node& n : nodes)
   {
-    out.Scalars.push_back(static_cast<float>(n.S));
+    out.Scalars.push_back(n.S);
     for (int c = 0; c < 4; ++c)
     {
       out.Rgba.push_back(static_cast<float>(c < 3 ? n.V[c] : n.V[3] / unit));

@@ -1,5 +1,6 @@
 #include "PsiAdaptiveNodes.h"
 
+#include "PsiTetMesh.h"
 #include "PsiTransferFunctionTable.h"
 
 #include "vtkObject.h"
@@ -7,6 +8,7 @@
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
+#include <vector>
 
 bool PsiAdaptiveNodes::NeedsUpdate(
   vtkVolumeProperty* property, const double range[2], int tableVersion) const
@@ -40,7 +42,13 @@ void PsiAdaptiveNodes::Activate(vtkShaderProgram* program) const
   program->SetUniformi("tfNodeCount", n);
   if (n > 0)
   {
-    program->SetUniform1fv("tfNodes", n, this->Nodes.Scalars.data());
+    // as fractions of the range, like the points' scalars (psi::TetMesh::Points4)
+    std::vector<float> unit(n);
+    for (int i = 0; i < n; ++i)
+    {
+      unit[i] = static_cast<float>(psi::UnitScalar(this->Range, this->Nodes.Scalars[i]));
+    }
+    program->SetUniform1fv("tfNodes", n, unit.data());
     program->SetUniform4fv(
       "tfNodeValues", n, reinterpret_cast<const float(*)[4]>(this->Nodes.Rgba.data()));
   }

@@ -1,6 +1,7 @@
 #include "PsiShaderParameters.h"
 
 #include "PsiPixelRays.h"
+#include "PsiTetMesh.h"
 #include "PsiTransferFunctionAnalysis.h"
 
 #include "vtkCamera.h"
@@ -161,13 +162,16 @@ void SetSilhouetteShaderParameters(vtkShaderProgram* program, const int size[2])
 }
 
 void SetIsosurfaceShaderParameters(vtkShaderProgram* program, const psi::IsosurfaceList& list,
-  const PsiIsosurfaceStyle& style, vtkVolumeProperty* property, vtkRenderer* ren,
-  const PsiFrameCamera& camera)
+  const double scalarRange[2], const PsiIsosurfaceStyle& style, vtkVolumeProperty* property,
+  vtkRenderer* ren, const PsiFrameCamera& camera)
 {
   const int n = list.Count();
-  std::vector<float> colors(3 * n);
+  std::vector<float> values(n), colors(3 * n);
   for (int i = 0; i < n; ++i)
   {
+    // a value outside the range meets no cell: any fraction outside [0, 1] says so
+    values[i] = static_cast<float>(
+      std::min(std::max(psi::UnitScalar(scalarRange, list.Values[i]), -1.0), 2.0));
     double rgba[4];
     psi::EvaluateTransferFunction(property, list.Values[i], rgba);
     for (int k = 0; k < 3; ++k)
@@ -176,7 +180,7 @@ void SetIsosurfaceShaderParameters(vtkShaderProgram* program, const psi::Isosurf
         style.UseColorMap ? rgba[k] : std::min(1.0, std::max(0.0, style.Color[k])));
     }
   }
-  program->SetUniform1fv("isoValues", n, list.Values.data());
+  program->SetUniform1fv("isoValues", n, values.data());
   program->SetUniform3fv("isoColors", n, reinterpret_cast<const float(*)[3]>(colors.data()));
   program->SetUniform1fv("isoOpacities", n, list.Opacities.data());
   program->SetUniformi("isoLighting", style.Lighting ? 1 : 0);

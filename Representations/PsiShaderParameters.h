@@ -58,11 +58,12 @@ struct PsiIsosurfaceStyle
   int MaxLights = 8;
 };
 
-/// isoValues, isoColors, isoOpacities, isoLighting, the lights (lightCount, lightDirVC,
-/// lightColor) and, for smooth shading, normalMatrix.
+/// isoValues (fractions of `scalarRange`, as the mesh's scalars: psi::TetMesh::Points4),
+/// isoColors, isoOpacities, isoLighting, the lights (lightCount, lightDirVC, lightColor) and,
+/// for smooth shading, normalMatrix.
 void SetIsosurfaceShaderParameters(vtkShaderProgram* program, const psi::IsosurfaceList& list,
-  const PsiIsosurfaceStyle& style, vtkVolumeProperty* property, vtkRenderer* ren,
-  const PsiFrameCamera& camera);
+  const double scalarRange[2], const PsiIsosurfaceStyle& style, vtkVolumeProperty* property,
+  vtkRenderer* ren, const PsiFrameCamera& camera);
 
 /// tfNodes, tfNodeCount: where adaptive sampling splits segments.
 

@@ -72,14 +72,12 @@ void PsiTransferFunctionTexture::Activate(vtkShaderProgram* program)
 {
   this->Texture->Activate();
   program->SetUniformi("transferFunction", this->Texture->GetTextureUnit());
-  // texture coordinate = s * scale + shift, on texel centres
-  const double n = this->Table.Size, r0 = this->Table.Range[0], r1 = this->Table.Range[1];
-  const double scale = (n - 1) / (n * (r1 - r0));
-  SetUniform2(program, "tfScaleShift", scale, 0.5 / n - r0 * scale);
-  // the same for a separate opacity array's scalars, over the attenuation's range
-  const double o0 = this->Table.OpacityRange[0], o1 = this->Table.OpacityRange[1];
-  const double oscale = (n - 1) / (n * (o1 - o0));
-  SetUniform2(program, "tfOpacityScaleShift", oscale, 0.5 / n - o0 * oscale);
+  // texture coordinate = u * scale + shift, on texel centres, for u the scalar as a fraction of
+  // the table's range (psi::TetMesh::Points4: the mesh's range is the table's); the same for a
+  // separate opacity array's scalars, fractions of the attenuation's range
+  const double n = this->Table.Size;
+  SetUniform2(program, "tfScaleShift", (n - 1) / n, 0.5 / n);
+  SetUniform2(program, "tfOpacityScaleShift", (n - 1) / n, 0.5 / n);
 }
 
 void PsiTransferFunctionTexture::Deactivate()
@@ -113,9 +111,8 @@ void PsiOpacityPrefixTexture::Activate(
 {
   this->Texture->Activate();
   program->SetUniformi("opacityPrefix", this->Texture->GetTextureUnit());
-  // opacity scalar -> sample index: (s - r0) (N - 1) / (r1 - r0)
-  const double n = table.Size, r0 = table.OpacityRange[0], r1 = table.OpacityRange[1];
-  SetUniform2(program, "tfIndexScaleShift", (n - 1) / (r1 - r0), -r0 * (n - 1) / (r1 - r0));
+  // opacity scalar, a fraction u of the table's opacity range -> sample index u (N - 1)
+  SetUniform2(program, "tfIndexScaleShift", table.Size - 1.0, 0.0);
   program->SetUniformi("tfSamples", table.Size);
 }
 
@@ -193,10 +190,9 @@ void PsiPreIntegrationTexture::Activate(vtkShaderProgram* program)
 {
   this->Texture->Activate();
   program->SetUniformi("preIntegrated", this->Texture->GetTextureUnit());
+  // the scalars are fractions of the table's range (psi::TetMesh::Points4)
   const double ns = this->Table.ScalarSamples;
-  const double r0 = this->Table.Range[0], r1 = this->Table.Range[1];
-  const double ss = (ns - 1) / (ns * (r1 - r0));
-  SetUniform2(program, "preScalarScaleShift", ss, 0.5 / ns - r0 * ss);
+  SetUniform2(program, "preScalarScaleShift", (ns - 1) / ns, 0.5 / ns);
   float axis[4];
   this->Table.Axis.ShaderUniform(axis);
   program->SetUniform4f("preLengthAxis", axis);

@@ -448,7 +448,8 @@ void vtkPsiVolumeMapper::SetShaderParameters(vtkShaderProgram* program, vtkRende
     style.Lighting = this->IsosurfaceLighting;
     style.Smooth = f.IsoSmooth;
     style.MaxLights = f.MaxLights;
-    SetIsosurfaceShaderParameters(program, this->Isosurfaces, style, property, ren, cam);
+    SetIsosurfaceShaderParameters(
+      program, this->Isosurfaces, I.Mesh.GetMesh().ScalarRange, style, property, ren, cam);
   }
   if (f.Adaptive)
   {

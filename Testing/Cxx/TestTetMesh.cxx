@@ -285,17 +285,71 @@ void TestVectorComponents()
   {
     const double* t = v->GetTuple3(i);
     const double m = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
-    worstMag = std::max(worstMag, std::abs(mm.Points4[4 * i + 3] - m));
-    worstZ = std::max(worstZ, std::abs(mz.Points4[4 * i + 3] - t[2]));
+    worstMag = std::max(worstMag, std::abs(mm.Points4[4 * i + 3] - psi::UnitScalar(mm.ScalarRange, m)));
+    worstZ = std::max(worstZ, std::abs(mz.Points4[4 * i + 3] - psi::UnitScalar(mz.ScalarRange, t[2])));
   }
-  PSI_CHECK(worstMag < 1e-5 && worstZ < 1e-6, "magnitude (%g) and component 2 (%g) gathered",
+  PSI_CHECK(worstMag < 1e-6 && worstZ < 1e-6, "magnitude (%g) and component 2 (%g) gathered",
     worstMag, worstZ);
+}
+
+// The points carry their scalars as fractions of the range, computed in double, whatever the
+// range: constant fields (ParaView widens 0 to [0, 1.18e-38]), ranges narrower than the
+// smallest normal float, and fields far from 0 beside their width all reach the GPU as [0, 1].
+void TestUnitScalars()
+{
+  auto ug = Tetrahedralized(3);
+  const vtkIdType np = ug->GetNumberOfPoints();
+  struct Field
+  {
+    const char* Name;
+    double Offset, Width; // s = Offset + Width * f, f in [0, 1] (0 everywhere when Width is 0)
+  };
+  const Field fields[] = { { "zero", 0, 0 }, { "-2", -2, 0 }, { "1e-30", 1e-30, 0 },
+    { "1e30", 1e30, 0 }, { "denormal width", 0, 1e-39 }, { "1e30 + 1e20 f", 1e30, 1e20 },
+    { "-1e-300 + 1e-310 f", -1e-300, 1e-310 } };
+  for (const Field& field : fields)
+  {
+    vtkNew<vtkDoubleArray> a;
+    a->SetNumberOfTuples(np);
+    for (vtkIdType i = 0; i < np; ++i)
+    {
+      double x[3];
+      ug->GetPoint(i, x);
+      a->SetValue(i, field.Offset + field.Width * (x[0] + 2 * x[1] + 4 * x[2]) / 7.0);
+    }
+    psi::TetMesh m = psi::GatherTetMesh(ug, a, false);
+    double lo = 2, hi = -1, worst = 0;
+    for (vtkIdType i = 0; i < np; ++i)
+    {
+      const float u = m.Points4[4 * i + 3];
+      lo = std::min<double>(lo, u);
+      hi = std::max<double>(hi, u);
+      worst = std::max(worst, std::abs(u - psi::UnitScalar(m.ScalarRange, a->GetValue(i))));
+    }
+    const bool constant = field.Width == 0;
+    PSI_CHECK(m.ScalarRange[0] == a->GetRange()[0] && m.ScalarRange[1] > m.ScalarRange[0] &&
+        lo == 0 && hi == (constant ? 0.0 : 1.0) && worst < 1e-6,
+      "%s: range [%g, %g], the points' fractions span [%g, %g] (off by %g)", field.Name,
+      m.ScalarRange[0], m.ScalarRange[1], lo, hi, worst);
+    // a new time step is normalized over its own range
+    for (vtkIdType i = 0; i < np; ++i)
+    {
+      a->SetValue(i, 3 - a->GetValue(i));
+    }
+    a->Modified();
+    PSI_CHECK(psi::UpdateTetMeshScalars(m, a), "%s: new time step taken", field.Name);
+    PSI_CHECK(m.ScalarRange[0] == a->GetRange()[0] && std::abs(m.Points4[3] -
+        psi::UnitScalar(m.ScalarRange, a->GetValue(0))) < 1e-6,
+      "%s: the new step's range [%g, %g] and fractions", field.Name, m.ScalarRange[0],
+      m.ScalarRange[1]);
+  }
 }
 } // namespace
 
 int main()
 {
   TestFilterNeighbors();
+  TestUnitScalars();
   TestBorrowedCells();
   TestSkippedCells();
   TestCellScalars();
