@@ -20,6 +20,7 @@ GEOMETRY_FAN = DEGENERATE_FAN + ["PsiVolumeRender.fan"]
 SEPARATE = ["PsiPython.separate_opacity"]
 TRANSLUCENT = ["PsiPython.translucent_geometry"]
 PEELED = ["PsiTranslucentGeometry"]
+SCALAR_RANGES = ["PsiPython.scalar_ranges"]
 
 MUTATIONS = [
     # --- Integrators (Shaders/PsiIntegrate*.glsl): Moreland & Angel 2004; Moreland's dissertation.
@@ -332,6 +333,17 @@ MUTATIONS = [
     Mutation("nodes_refinement_too_coarse", "Core/PsiTransferFunctionNodes.cxx",
              "      if (d > tolerance)", "      if (d > 100 * tolerance)",
              ["TransferFunctionNodes"]),
+    # --- Scalars as fractions of their range (psi::UnitScalar): constant fields, denormal widths.
+    Mutation("nodes_uploaded_raw", "Representations/PsiAdaptiveNodes.cxx",
+             "unit[i] = static_cast<float>(psi::UnitScalar(this->Range, this->Nodes.Scalars[i]));",
+             "unit[i] = static_cast<float>(this->Nodes.Scalars[i]);", SCALAR_RANGES),
+    Mutation("isovalues_uploaded_raw", "Representations/PsiShaderParameters.cxx",
+             "std::min(std::max(psi::UnitScalar(scalarRange, list.Values[i]), -1.0), 2.0));",
+             "list.Values[i]);", SCALAR_RANGES),
+    Mutation("points_scalar_in_float", "Core/PsiTetMesh.cxx",
+             "m.Points4[4 * i + 3] = UnitFloat(m.ScalarRange, raw.S[i]);",
+             "m.Points4[4 * i + 3] = UnitFloat(m.ScalarRange, static_cast<float>(raw.S[i]));",
+             ["TetMesh"] + SCALAR_RANGES),
     Mutation("prefix_spike_between_samples_ignored", "Core/PsiTransferFunctionAnalysis.cxx",
              "if (n[1] > 0 && x >= 0 && x <= table.Size - 1)",
              "if (n[1] > 1 && x >= 0 && x <= table.Size - 1)",
