@@ -40,23 +40,32 @@ NICE = ["nice", "-n", "15"]
 
 
 def registered_tests():
-    """CTest name -> executable target, from add_test(NAME x COMMAND target ...) in Testing/."""
+    """CTest name -> the targets it runs, from add_test(NAME x COMMAND target ...) in Testing/:
+    the executable, or for a pvpython test the plugin and the targets its environment names
+    ($<TARGET_FILE:t>)."""
     tests = {}
     for f in sorted((ROOT / "Testing").glob("*.cmake")) + [ROOT / "Testing" / "CMakeLists.txt"]:
         text = f.read_text()
         for name, target in re.findall(r"add_test\(NAME\s+(\S+)\s+COMMAND\s+([^\s)]+)", text):
-            if not name.startswith("${"):  # the function below registers its own names
-                tests[name] = target
+            if name.startswith("${"):  # the function below registers its own names
+                continue
+            if target == '"${PVPYTHON_EXECUTABLE}"':
+                props = re.search(r"set_tests_properties\(%s\s+PROPERTIES([^)]*)\)"
+                                  % re.escape(name), text)
+                extra = re.findall(r"\$<TARGET_FILE:(\w+)>", props.group(1)) if props else []
+                tests[name] = ["PsiVolume"] + [t for t in extra if t != "PsiVolume"]
+            else:
+                tests[name] = [target]
         # psi_add_render_test(NAME TARGET [FAN] ...): NAME, NAME.compute and with FAN NAME.fan
         for name, target, rest in re.findall(
                 r"psi_add_render_test\((\w[\w.]*)\s+(\w+)([^)]*)\)", text):
-            tests[name] = tests[name + ".compute"] = target
+            tests[name] = tests[name + ".compute"] = [target]
             if "FAN" in rest.split():
-                tests[name + ".fan"] = target
+                tests[name + ".fan"] = [target]
         # the pvpython tests, PsiPython.<name> for each name of set(python_tests ...): the plugin
         for names in re.findall(r"set\(python_tests\s+([^)]*)\)", text):
             for name in names.split():
-                tests["PsiPython." + name] = "PsiVolume"
+                tests["PsiPython." + name] = ["PsiVolume"]
     return tests
 
 
@@ -193,7 +202,7 @@ def main():
     needed = sorted({t for m in mutations for t in m.tests})
     print(f"scratch tree {work / 'src'}, build {work / 'build'}, log {log}")
     t0 = time.time()
-    if not build(work, {tests[t] for t in needed}, args.jobs, log):
+    if not build(work, {x for t in needed for x in tests[t]}, args.jobs, log):
         print(f"the unmutated scratch tree does not build: see {log}")
         return 1
     for t in needed:
@@ -211,7 +220,7 @@ def main():
         caught = "survived"
         try:
             path.write_text(original.replace(m.original, m.replacement, 1))
-            if not build(work, {tests[t] for t in m.tests}, args.jobs, log):
+            if not build(work, {x for t in m.tests for x in tests[t]}, args.jobs, log):
                 caught = "(build error)"
             else:
                 for t in m.tests:

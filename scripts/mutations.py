@@ -201,6 +201,16 @@ MUTATIONS = [
     Mutation("peeling_blend_equation_kept", "Representations/PsiRenderTarget.cxx",
              "    ostate->vtkglBlendEquation(GL_FUNC_ADD);\n", "", TRANSLUCENT),
     # --- Near-plane clipping, opaque clipping, scene depth.
+    # The near-plane box: caught by the parallel inside view (in perspective the vertices behind
+    # the eye project off screen and hide it).
+    Mutation("near_box_without_edge_points", "Shaders/PsiNearClipGS.glsl",
+             "      if (di * dj < 0.0)", "      if (di * dj < 0.0 && false)", GL),
+    Mutation("near_box_edge_point_from_wrong_end", "Shaders/PsiNearClipGS.glsl",
+             "includePoint(mix(viewP[i], viewP[j], di / (di - dj)), lo, hi);",
+             "includePoint(mix(viewP[j], viewP[i], di / (di - dj)), lo, hi);", GL),
+    Mutation("time_step_keeps_gradients", "Representations/PsiMeshBuffers.cxx",
+             "  this->UploadPoints(renWin);\n  this->GradientsOnGPU = false;\n  return true;",
+             "  this->UploadPoints(renWin);\n  return true;", ["PsiIsosurfaces"]),
     Mutation("near_cull_needs_two_in_front", "Shaders/PsiNearClipGS.glsl",
              "nearClipped = inFront > 0;", "nearClipped = inFront > 1;", GL),
     Mutation("near_box_clamped_too_far", "Shaders/PsiNearClipGS.glsl",

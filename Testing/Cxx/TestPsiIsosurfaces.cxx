@@ -6,7 +6,8 @@
 //    without it, measured against the exact CPU reference (PsiReferenceRaycaster, which splits
 //    segments at transfer-function breakpoints); Auto turns it on for this transfer function only;
 //  - an opaque isosurface hides the volume behind it, a translucent one does not;
-//  - several isovalues and an isovalue exactly at a vertex value give no NaN.
+//  - several isovalues and an isovalue exactly at a vertex value give no NaN;
+//  - a new time step on the same mesh shades smooth isosurfaces with the new step's gradients.
 // Needs an X server (run under xvfb-run). Usage: TestPsiIsosurfaces [output-dir]
 #include "PsiIntegrationMethods.h"
 #include "PsiReferenceRaycaster.h"
@@ -18,6 +19,7 @@
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataSetTriangleFilter.h"
+#include "vtkDoubleArray.h"
 #include "vtkImageData.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -438,6 +440,56 @@ int main(int argc, char* argv[])
     mapper->SetIsosurfaceOpacities({});
     mapper->SetIsosurfaceShading(vtkPsiVolumeMapper::ISO_SMOOTH);
     mapper->SetIsosurfaceOpacity(1.0);
+  }
+
+  // ---- 6. A new time step on the same mesh with smooth-shaded isosurfaces: the mesh is not
+  // gathered again, but its point gradients (the surfaces' normals) follow the new scalars. The
+  // step's image must be the image of a mapper that sees that step first. The new field tilts the
+  // old one's gradients (a term in x), so stale normals shade the surfaces differently.
+  {
+    setView(0);
+    const double iso = r[0] + 0.6 * span;
+    mapper->SetIsosurfaceValues({ iso });
+    mapper->SetIsosurfaceShading(vtkPsiVolumeMapper::ISO_SMOOTH);
+    for (int method : { vtkPsiVolumeMapper::ISO_MARCHING_TETRAHEDRA,
+           vtkPsiVolumeMapper::ISO_PER_FRAGMENT })
+    {
+      mapper->SetIsosurfaceMethod(method);
+      mapper->SetInputData(grid);
+      Grab(win); // the first step, its gradients on the GPU
+      const int version = mapper->GetMeshVersion();
+      vtkNew<vtkUnstructuredGrid> step;
+      step->ShallowCopy(grid);
+      vtkNew<vtkDoubleArray> tilted;
+      tilted->SetNumberOfTuples(grid->GetNumberOfPoints());
+      for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+      {
+        double x[3];
+        grid->GetPoint(i, x);
+        tilted->SetValue(i, grid->GetPointData()->GetScalars()->GetComponent(i, 0) + 0.08 * span * x[0]);
+      }
+      tilted->SetName(grid->GetPointData()->GetScalars()->GetName()); // the same array, a new step
+      step->GetPointData()->SetScalars(tilted);
+      mapper->SetInputData(step);
+      const std::vector<double> next = Grab(win);
+      const bool sameMesh = mapper->GetMeshVersion() == version;
+      vtkNew<vtkUnstructuredGrid> copy; // new points and cells: gathered from scratch
+      copy->DeepCopy(step);
+      mapper->SetInputData(copy);
+      const std::vector<double> fresh = Grab(win);
+      const Diff d = Compare(next, fresh);
+      std::printf("time step, smooth isosurfaces (%s): vs the step drawn first: mean %.5f max "
+                  "%.3f\n", method == vtkPsiVolumeMapper::ISO_PER_FRAGMENT ? "per fragment"
+                                                                  : "marching tetrahedra",
+        d.Mean, d.Max);
+      PSI_CHECK(sameMesh && mapper->GetMeshVersion() != version,
+        "time step: the same mesh took the new scalars, the copy was gathered anew");
+      PSI_CHECK(d.Mean < 1e-4 && d.Max <= 1.5 / 255, "time step, smooth isosurfaces (method %d): "
+        "the image of the step drawn first (mean %g, max %g)", method, d.Mean, d.Max);
+    }
+    mapper->SetInputData(grid);
+    mapper->SetIsosurfaceValues({});
+    mapper->SetIsosurfaceMethod(vtkPsiVolumeMapper::ISO_AUTO);
   }
 
   PSI_CHECK(psitest::RequestedProjector() < 0 ||

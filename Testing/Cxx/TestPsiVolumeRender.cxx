@@ -294,6 +294,17 @@ int main(int argc, char* argv[])
     PSI_CHECK(r.Max < 0.25 * linear.Max, "exact segments max error %g vs screen-linear %g", r.Max,
       linear.Max);
   }
+  // The same inside view in a parallel projection. In perspective the vertices behind the eye
+  // project off screen and hide a wrong screen box of a clipped cell; here they project onto it.
+  cam->SetParallelProjection(1);
+  cam->SetParallelScale(2.0);
+  {
+    const Result r = Compare("camera_inside_parallel", win, ren, vol, refScene, nullptr, outDir);
+    PSI_CHECK(mapper->GetLastUsedNearPlaneClipping(), "parallel inside view: near-plane path");
+    PSI_CHECK(r.Mean < 0.003 && r.Max < 0.02 && r.Covered > W * H / 2,
+      "camera inside, parallel: mean error %g max %g, %d pixels covered", r.Mean, r.Max, r.Covered);
+  }
+  psitest::SetCameraInside(cam);
 
   // Camera inside, and an opaque square just beyond the near plane, in front of cells that the
   // near plane cuts: their rays enter those cells behind the square, so the scene-depth test of
