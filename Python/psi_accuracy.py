@@ -10,7 +10,10 @@ As a command (scripts/accuracy-report.sh wraps it under Xvfb):
                                     [--size 384] [--frames 3] [--wavelet-half 20]
                                     [--unit-distance U] [--no-paraview] [--paraview-timeout 120]
                                     [--paraview-mappers 'Projected tetra' 'Z sweep' ...]
-Prints the table and writes DIR/report.md, DIR/accuracy.png (error against time),
+                                    [--budget 300]
+Times come from interleaved rounds (Python/psi_timing.py): every method and mapper once per round,
+medians over the rounds, ratios to Average taken round by round, until every ratio's spread is
+within 5% or the budget is spent. Prints the table and writes DIR/report.md, DIR/accuracy.png (error against time),
 DIR/methods.png (each image and its error map) and the rows as DIR/report.json. ParaView's
 mappers run in a child pvpython each (a crash there is a row of the table, not the end of the
 report)."""
@@ -36,9 +39,11 @@ import psi_bench  # noqa: E402
 import psi_data  # noqa: E402
 import psi_process  # noqa: E402
 import psi_testing  # noqa: E402
+import psi_timing  # noqa: E402
 
 PARAVIEW_MAPPERS = ["Projected tetra", "Z sweep", "Bunyk ray cast"]
 REFERENCE = "Exact reference (CPU)"
+BASELINE = "Average"  # ratios to it, round by round: Moreland's Table 6.4 gives the same
 TF_SAMPLES = 512  # extra breakpoints where the color map or opacity is not linear between nodes
 
 
@@ -143,10 +148,10 @@ class Capture:
             for row in rows:
                 f.write("%r %r %r %r %r\n" % row)
 
-    def write_child_scene(self, path, frames):
+    def write_child_scene(self, path):
         v = self.view
         scene = dict(mesh=self.mesh, array=self.array, association=self.association,
-                     size=self.size, background=self.background(), frames=frames,
+                     size=self.size, background=self.background(),
                      unit=float(self.rep.ScalarOpacityUnitDistance),
                      rgb_points=list(self.lut.RGBPoints),
                      color_space=self.lut.GetProperty("ColorSpace").GetData(),
@@ -179,45 +184,39 @@ def reference_image(cap, runs=2):
     return images, min(seconds)
 
 
-def measure_psi(cap, methods, frames):
-    """Rows (name, s/frame, image) of 'Psi Volume' with each method, adaptive sampling off/on."""
-    rows = []
+def psi_contenders(cap, methods):
+    """'Psi Volume' with each method, adaptive sampling off and on: (contenders, images)."""
+    contenders, images = [], {}
     for m in methods:
         for adaptive in ("Off", "On"):
-            psi_bench.set_mapper(cap.rep, "Psi Volume|" + m)
-            cap.rep.AdaptiveSampling = adaptive
-            spf = psi_bench.time_frames(cap.view, frames)
-            rows.append(("%s%s" % (m, " + adaptive" if adaptive == "On" else ""), spf,
-                         psi_testing.grab(cap.view)))
-    cap.rep.AdaptiveSampling = "Off"
-    return rows
+            name = "%s%s" % (m, " + adaptive" if adaptive == "On" else "")
+
+            def prepare(m=m, adaptive=adaptive):
+                psi_bench.set_mapper(cap.rep, "Psi Volume|" + m)
+                cap.rep.AdaptiveSampling = adaptive
+
+            prepare()
+            simple.Render(cap.view)
+            images[name] = psi_testing.grab(cap.view)
+            contenders.append(psi_timing.InProcess(name, cap.view, prepare))
+    return contenders, images
 
 
-def measure_paraview(cap, mappers, frames, timeout=120):
-    """Rows (name, s/frame or None, image or None, note) of ParaView's mappers, each in a child
-    pvpython so that a crash is a row."""
+def paraview_contenders(cap, mappers, timeout=120):
+    """ParaView's mappers, each in a child pvpython that stays up for the rounds (a crash there is
+    a row of the table with its note): (contenders, images)."""
     scene = os.path.join(cap.work, "scene.json")
-    cap.write_child_scene(scene, frames)
-    rows = []
+    cap.write_child_scene(scene)
+    contenders, images = [], {}
     for name in mappers:
         out = os.path.join(cap.work, "pv_%s.npy" % name.replace(" ", "_"))
         cmd = [find_pvpython(), "--force-offscreen-rendering", os.path.abspath(__file__),
                "--child-mapper", name, "--child-scene", scene, "--child-out", out]
-        try:
-            p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout,
-                               env=psi_process.environment_without_mpi())
-            result = [l for l in p.stdout.splitlines() if l.startswith("PSI_CHILD ")]
-            if result and os.path.exists(out):
-                spf = json.loads(result[-1][len("PSI_CHILD "):])["seconds_per_frame"]
-                rows.append(("ParaView " + name, spf, np.load(out), ""))
-            else:
-                tail = (p.stderr.strip().splitlines() or ["no output"])[-1][:80]
-                rows.append(("ParaView " + name, None, None,
-                             "failed (exit code %d: %s)" % (p.returncode, tail)))
-        except subprocess.TimeoutExpired:
-            rows.append(("ParaView " + name, None, None,
-                         "timed out after %d s (--paraview-timeout)" % timeout))
-    return rows
+        proc = psi_timing.ChildProcess(cmd, env=psi_timing.child_environment(), timeout=timeout)
+        row = "ParaView " + name
+        images[row] = np.load(out) if proc.ready and os.path.exists(out) else None
+        contenders.append(psi_timing.Child(row, proc))
+    return contenders, images
 
 
 def errors(img, ref):
@@ -228,7 +227,7 @@ def errors(img, ref):
 
 
 def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
-           paraview_mappers=PARAVIEW_MAPPERS, title=None, paraview_timeout=120):
+           paraview_mappers=PARAVIEW_MAPPERS, title=None, paraview_timeout=120, budget=300.0):
     """Renders the active (or given) view's volume with every method and mapper, measures each
     image against the exact reference at the same view, prints the table and writes
     out_dir/report.md, accuracy.png and methods.png. Returns the rows as dicts."""
@@ -248,28 +247,39 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
         refs, ref_seconds = reference_image(cap)
         ref = refs[0]
         methods = list(rep.GetProperty("IntegrationMethod").Available)
-        rows = [dict(name=n, spf=spf, image=img, note="") for n, spf, img in
-                measure_psi(cap, methods, frames)]
-        rows += [dict(name=n, spf=spf, image=img, note=note) for n, spf, img, note in
-                 measure_paraview(cap, paraview_mappers, frames, paraview_timeout)]
-        rows.append(dict(name=REFERENCE, spf=ref_seconds, image=refs[-1], note=""))
+        psi, images = psi_contenders(cap, methods)
+        pv, pv_images = paraview_contenders(cap, paraview_mappers, paraview_timeout)
+        images.update(pv_images)
+        timing = psi_timing.interleaved(psi + pv, BASELINE, frames=frames, budget=budget,
+                                        log=lambda m: print("  " + m, flush=True))
+        rows = []
+        for c in psi + pv:
+            rows.append(dict(name=c.name, image=images.get(c.name),
+                             note=timing.notes[c.name], **timing.row(c.name)))
+        rows.append(dict(name=REFERENCE, spf=ref_seconds, image=refs[-1], note="",
+                         spf_min=ref_seconds, spf_max=ref_seconds, cpu=None, ratio=None,
+                         ratio_spread=None, rounds=1))
     rep.SetRepresentationType(saved_type)
     simple.Render(view)
     for r in rows:
         r["mean"], r["max"] = errors(r["image"], ref)
         r["err_s"] = r["mean"] * r["spf"] if r["spf"] is not None else float("nan")
     info = dict(title=title or "%s (%s)" % (src.GetXMLLabel(), cap.array), cells=cap.cells,
-                size=cap.size, frames=frames)
+                size=cap.size, frames=frames, timing=timing.summary(), baseline=BASELINE,
+                rounds=timing.rounds, converged=timing.converged,
+                threads=os.environ.get("LP_NUM_THREADS", "all"))
     print(psi_accuracy_plots.table_text(rows, info))
     psi_accuracy_plots.write_all(rows, ref, info, out_dir)
     return [{k: v for k, v in r.items() if k != "image"} for r in rows]
 
 
 def child_main(args):
-    """One of ParaView's mappers on the captured scene: prints PSI_CHILD {seconds_per_frame},
-    saves the image as .npy."""
+    """One mapper on the captured scene (one of ParaView's, or 'Psi Volume|<method>'): saves its
+    image as .npy, then draws the timing rounds it is asked for (psi_timing.serve_rounds)."""
     with open(args.child_scene) as f:
         s = json.load(f)
+    if args.child_mapper.startswith("Psi Volume"):
+        psi_data.load_plugin(globals())
     reader = simple.XMLUnstructuredGridReader(FileName=[s["mesh"]])
     view = simple.CreateRenderView()
     view.ViewSize = s["size"]
@@ -294,9 +304,9 @@ def child_main(args):
     view.CameraViewAngle = c["angle"]
     view.CameraParallelProjection = c["parallel"]
     view.CameraParallelScale = c["scale"]
-    spf = psi_bench.time_frames(view, s["frames"])
+    simple.Render(view)
     np.save(args.child_out, psi_testing.grab(view))
-    print("PSI_CHILD " + json.dumps(dict(seconds_per_frame=spf)))
+    psi_timing.serve_rounds(view, d)
     psi_testing.exit_now(0)
 
 
@@ -342,6 +352,9 @@ def main():
                    help="which of ParaView's mappers (default: %s)" % ", ".join(PARAVIEW_MAPPERS))
     p.add_argument("--paraview-timeout", type=float, default=120,
                    help="seconds each ParaView mapper may take (Z sweep is slow on big meshes)")
+    p.add_argument("--budget", type=float, default=300,
+                   help="seconds of timing rounds at most (they stop earlier once every ratio "
+                        "to Average is within 5%%)")
     p.add_argument("--child-mapper", help=argparse.SUPPRESS)
     p.add_argument("--child-scene", help=argparse.SUPPRESS)
     p.add_argument("--child-out", help=argparse.SUPPRESS)
@@ -351,7 +364,8 @@ def main():
     psi_data.load_plugin(globals())
     view, rep, src, title = command_scene(args)
     report(view, rep, src, args.out, args.frames,
-           [] if args.no_paraview else args.paraview_mappers, title, args.paraview_timeout)
+           [] if args.no_paraview else args.paraview_mappers, title, args.paraview_timeout,
+           args.budget)
     psi_testing.exit_now(0)
 
 

@@ -19,8 +19,13 @@ try:
 except ImportError:  # pragma: no cover - depends on the ParaView build
     HAVE_MATPLOTLIB = False
 
-HEADER = ("method", "s/frame", "mean err", "max err", "mean err x s")
-EXPLAIN = ("Errors are absolute differences of 8-bit RGB channels (0..255) against the exact "
+HEADER = ("method", "s/frame", "min-max", "CPU s/frame", "time / Average", "mean err", "max err",
+          "mean err x s")
+EXPLAIN = ("Times are medians over interleaved rounds (every method and mapper once per round, "
+           "the order rotating), with their minimum and maximum over the rounds; CPU s/frame is "
+           "the CPU time of the drawing process (all its threads) per frame; 'time / Average' is "
+           "the ratio to Average taken round by round, its median and interquartile spread. "
+           "Errors are absolute differences of 8-bit RGB channels (0..255) against the exact "
            "reference at the same view, mean over all pixels and channels, and the worst one. "
            "'mean err x s' is the mean error times the frame time: lower is better on both "
            "counts (a method twice as fast at twice the error scores the same).")
@@ -30,22 +35,32 @@ def _fmt(v, spec):
     return "-" if v is None or (isinstance(v, float) and math.isnan(v)) else spec % v
 
 
+def _ratio(r):
+    if r.get("ratio") is None:
+        return "-"
+    return "%.3f +-%.1f%%" % (r["ratio"], 50 * r["ratio_spread"])
+
+
 def table_rows(rows):
-    return [(r["name"], _fmt(r["spf"], "%.3f"), _fmt(r["mean"], "%.3f"), _fmt(r["max"], "%.0f"),
-             _fmt(r["err_s"], "%.3f"), r["note"]) for r in rows]
+    return [(r["name"], _fmt(r["spf"], "%.3f"),
+             "-" if r.get("spf_min") is None else "%.3f-%.3f" % (r["spf_min"], r["spf_max"]),
+             _fmt(r.get("cpu"), "%.3f"), _ratio(r), _fmt(r["mean"], "%.3f"),
+             _fmt(r["max"], "%.0f"), _fmt(r["err_s"], "%.3f"), r["note"]) for r in rows]
 
 
 def table_text(rows, info):
-    lines = ["", "%s: %d cells, %dx%d, %d timed frames per method" % (
+    lines = ["", "%s: %d cells, %dx%d, %d timed frames per method and round" % (
         info["title"], info["cells"], info["size"][0], info["size"][1], info["frames"])]
-    lines.append("%-44s %9s %9s %8s %13s" % HEADER)
-    for name, spf, mean, mx, es, note in table_rows(rows):
-        lines.append("%-44s %9s %9s %8s %13s %s" % (name, spf, mean, mx, es, note))
+    if info.get("timing"):
+        lines.append(info["timing"])
+    lines.append("%-44s %8s %13s %11s %15s %9s %7s %12s" % HEADER)
+    for row in table_rows(rows):
+        lines.append("%-44s %8s %13s %11s %15s %9s %7s %12s %s" % row)
     return "\n".join(lines)
 
 
 def table_markdown(rows):
-    out = ["| " + " | ".join(HEADER) + " | note |", "|---|---|---|---|---|---|"]
+    out = ["| " + " | ".join(HEADER) + " | note |", "|" + "---|" * (len(HEADER) + 1)]
     for row in table_rows(rows):
         out.append("| " + " | ".join(row) + " |")
     return "\n".join(out)
@@ -56,9 +71,10 @@ def write_all(rows, ref, info, out_dir):
     plot_methods(rows, ref, os.path.join(out_dir, "methods.png"))
     with open(os.path.join(out_dir, "report.md"), "w") as f:
         f.write("# What accuracy costs: %s\n\n" % info["title"])
-        f.write("%d cells, %dx%d pixels, mean of %d timed frames per method (after a warm-up "
-                "frame). %s\n\n" % (info["cells"], info["size"][0], info["size"][1],
-                                    info["frames"], EXPLAIN))
+        f.write("%d cells, %dx%d pixels, %d timed frames per method and round (after a warm-up "
+                "frame), llvmpipe threads: %s. %s\n\n%s.\n\n" % (
+                    info["cells"], info["size"][0], info["size"][1], info["frames"],
+                    info.get("threads", "all"), EXPLAIN, info.get("timing", "")))
         f.write(table_markdown(rows) + "\n\n")
         if not plotted:
             f.write("matplotlib is not available in this pvpython: accuracy.png and methods.png "
@@ -104,7 +120,13 @@ def plot_accuracy(rows, info, path):
     fig, ax = plt.subplots(figsize=(8.6, 0.26 * len(pts) + 2.2))
     fig.subplots_adjust(left=0.1, right=0.56, top=0.9, bottom=0.12)
     for r in pts:
-        ax.scatter(r["spf"], max(r["mean"], floor), zorder=3, **_style(r["name"]))
+        st = _style(r["name"])
+        ax.scatter(r["spf"], max(r["mean"], floor), zorder=3, **st)
+        if r.get("spf_min") is not None and r["spf_max"] > r["spf_min"]:
+            # the spread of the frame time over the rounds
+            ax.errorbar(r["spf"], max(r["mean"], floor), xerr=[[r["spf"] - r["spf_min"]],
+                        [r["spf_max"] - r["spf"]]], fmt="none", ecolor=st["color"], lw=1,
+                        capsize=2, zorder=2)
     ax.set_xscale("log")
     ax.set_yscale("log")
     xs = [r["spf"] for r in pts]

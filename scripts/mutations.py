@@ -203,6 +203,8 @@ MUTATIONS = [
     # --- Near-plane clipping, opaque clipping, scene depth.
     # The near-plane box: caught by the parallel inside view (in perspective the vertices behind
     # the eye project off screen and hide it).
+    Mutation("near_box_from_the_cut_off_vertices", "Shaders/PsiNearClipGS.glsl",
+             "    if (viewP[i].z <= nearZ)", "    if (viewP[i].z >= nearZ)", GL),
     Mutation("near_box_without_edge_points", "Shaders/PsiNearClipGS.glsl",
              "      if (di * dj < 0.0)", "      if (di * dj < 0.0 && false)", GL),
     Mutation("near_box_edge_point_from_wrong_end", "Shaders/PsiNearClipGS.glsl",

@@ -24,7 +24,7 @@ out = tempfile.mkdtemp(prefix="psi_accuracy_test_")
 cmd = [psi_accuracy.find_pvpython(), "--force-offscreen-rendering",
        os.path.join(here, "..", "..", "Python", "psi_accuracy.py"),
        "--wavelet-half", "3", "--size", "96", "--frames", "1", "--out", out,
-       "--paraview-mappers", "Projected tetra"]
+       "--paraview-mappers", "Projected tetra", "--budget", "10"]
 p = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
 print(p.stdout)
 print(p.stderr[-2000:])
@@ -53,6 +53,16 @@ for m in methods:
                                    for k in ("spf", "mean", "max"))
         checks.check(ok, "row '%s' with finite time and errors: %s" % (name, r))
         checks.check("| %s |" % name in md, "report.md has a row for '%s'" % name)
+# Times from interleaved rounds (psi_timing): at least three rounds each, the median within the
+# rounds' minimum and maximum, CPU seconds beside wall seconds, ratios to Average (1 for itself).
+for name in ("Average", "Linear Exact + adaptive", "ParaView Projected tetra"):
+    r = rows.get(name) or {}
+    ok = r.get("rounds", 0) >= 3 and r["spf_min"] <= r["spf"] <= r["spf_max"] and \
+        r["cpu"] > 0 and r["ratio"] > 0 and r["ratio_spread"] >= 0
+    checks.check(ok or (name.startswith("ParaView") and r.get("note")),
+                 "'%s' timed in interleaved rounds: %s" % (name, r))
+checks.check(rows.get("Average", {}).get("ratio") == 1.0, "Average is the ratios' baseline")
+checks.check("interleaved rounds" in md, "report.md says how the rounds ended")
 # ParaView's mappers run in child processes; one keeps the test short (the others go the same way).
 r = rows.get("ParaView Projected tetra")
 checks.check(r is not None and (r["mean"] is not None or r["note"]),
