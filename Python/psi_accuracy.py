@@ -251,7 +251,7 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
         pv, pv_images = paraview_contenders(cap, paraview_mappers, paraview_timeout)
         images.update(pv_images)
         timing = psi_timing.interleaved(psi + pv, BASELINE, frames=frames, budget=budget,
-                                        log=lambda m: print("  " + m, flush=True))
+                                        min_rounds=5, log=lambda m: print("  " + m, flush=True))
         rows = []
         for c in psi + pv:
             rows.append(dict(name=c.name, image=images.get(c.name),

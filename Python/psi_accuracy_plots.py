@@ -76,6 +76,7 @@ def write_all(rows, ref, info, out_dir):
                     info["cells"], info["size"][0], info["size"][1], info["frames"],
                     info.get("threads", "all"), EXPLAIN, info.get("timing", "")))
         f.write(table_markdown(rows) + "\n\n")
+        f.write(moreland_section(rows, info) + "\n\n")
         if not plotted:
             f.write("matplotlib is not available in this pvpython: accuracy.png and methods.png "
                     "were written without labels (VTK's PNG writer).\n\n")
@@ -85,6 +86,17 @@ def write_all(rows, ref, info, out_dir):
                                     for k, v in r.items() if k != "image"} for r in rows]),
                   f, indent=1)
     print("report: %s" % os.path.abspath(os.path.join(out_dir, "report.md")))
+
+
+def moreland_section(rows, info):
+    """Moreland's Table 6.4 beside this report's ratios (frame rates relative to Average)."""
+    import psi_moreland
+
+    ours = {r["name"]: (r.get("ratio"), r.get("ratio_spread") or 0.0) for r in rows}
+    heading = "this scene, llvmpipe threads: %s" % info.get("threads", "all")
+    return ("Frame rate relative to Average, beside Moreland's Table 6.4 (Quadro FX 3000, "
+            "800x800; ours with the spread of the ratio over the rounds):\n\n" +
+            psi_moreland.side_by_side([(heading, ours)]))
 
 
 def _spread(targets, gap):

@@ -5,7 +5,7 @@ once per round, the order rotating from round to round, so that whatever else th
 (another process, a frequency change) falls on all of them alike. In its turn a contender draws
 `warmup` frames that are not counted (tables, shaders, the first sort), then `frames` timed
 frames, the camera turning by +-`jitter` degrees between them so that view-dependent work is
-counted; its round time is the mean of those frames, in wall seconds and in CPU seconds of the
+counted; its round time is the median of those frames, in wall seconds and in CPU seconds of the
 process that drew them (all its threads: Mesa's llvmpipe renders inside the process).
 
 Each contender's ratio to the baseline is taken round by round, against the baseline measured in
@@ -31,8 +31,9 @@ CHILD_READY = "PSI_CHILD_READY"
 
 
 def time_frames(view, frames, warmup=1, jitter=0.5):
-    """(wall, cpu) seconds per frame of `view`: `warmup` frames untimed, then the mean of
-    `frames` timed ones. The camera turns by +-`jitter` degrees between frames and is put back."""
+    """(wall, cpu) seconds per frame of `view`: `warmup` frames untimed, then the median of
+    `frames` timed ones (a frame that met a hiccup of the machine does not move it). The camera
+    turns by +-`jitter` degrees between frames and is put back."""
     from paraview import simple
     import psi_data
 
@@ -41,14 +42,16 @@ def time_frames(view, frames, warmup=1, jitter=0.5):
     for _ in range(warmup):
         simple.Render(view)
         psi_data.wait(view)
-    wall0, cpu0 = time.perf_counter(), time.process_time()
-    for k in range(frames):
+    walls, cpus = [], []
+    for k in range(max(frames, 1)):
         cam.Azimuth(jitter if k % 2 == 0 else -jitter)
+        wall0, cpu0 = time.perf_counter(), time.process_time()
         simple.Render(view)
         psi_data.wait(view)
-    wall, cpu = time.perf_counter() - wall0, time.process_time() - cpu0
+        walls.append(time.perf_counter() - wall0)
+        cpus.append(time.process_time() - cpu0)
     view.CameraPosition, view.CameraFocalPoint, view.CameraViewUp = saved
-    return wall / max(frames, 1), cpu / max(frames, 1)
+    return float(np.median(walls)), float(np.median(cpus))
 
 
 class InProcess:

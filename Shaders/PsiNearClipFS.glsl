@@ -2,7 +2,7 @@
 // Near-plane clipping (PsiNearClipGS.glsl): a cell cut by the near plane arrives as a screen box
 // with its point ids, and each ray is intersected with the tetrahedron exactly.
 flat in ivec4 clipTet; // point ids of a cell cut by the near plane, x = -1 otherwise
-uniform samplerBuffer points; // xyz: model coordinates (shifted), w: scalar
+uniform samplerBuffer points; // xyz: model (shifted) coordinates, w: scalar in [0, 1]
 uniform mat4 MCVCMatrix;
 
 vec4 clipVertex(int id)

@@ -5,7 +5,7 @@
 // measured. The PointIds tags (PsiPointIdsVS.glsl) pass the ids on when a feature needs them.
 
 in uvec4 tetPointIds;
-uniform samplerBuffer points; // xyz: model coordinates (shifted), w: scalar
+uniform samplerBuffer points; // xyz: model (shifted) coordinates, w: scalar in [0, 1]
 uniform mat4 MCVCMatrix;
 
 out vec4 vsP0; // view-space xyz, w = scalar
