@@ -4,7 +4,8 @@ pvpython Benchmarks/bench_integration.py [--data bluntfin] [--size 512] [--frame
                                          [--plot integration_cost.png]
 For each method: CPU ns per segment and max/mean error over Moreland's sweeps (from
 bench_integration_cpu, against each method's own optical-model reference), frame time of
-'Psi Volume' on the dataset, and mean image error against the exact reference image (Bunyk +
+'Psi Volume' on the dataset (median over interleaved rounds with 'Projected tetra',
+Python/psi_timing.py), and mean image error against the exact reference image (Bunyk +
 linear integrator; methods 4-6 assume a different optical model, linear opacity, so part of their
 image error is the model difference). Writes the table and a plot (error vs time, one point per
 method) as PNG."""
@@ -27,6 +28,7 @@ p.add_argument("--data", default="bluntfin")
 p.add_argument("--size", type=int, default=512)
 p.add_argument("--frames", type=int, default=6)
 p.add_argument("--error-views", type=int, default=2)
+p.add_argument("--budget", type=float, default=300, help="seconds of interleaved timing rounds")
 p.add_argument("--plot", default="integration_cost.png")
 args = p.parse_args()
 
@@ -49,16 +51,21 @@ methods = list(scene.rep.GetProperty("IntegrationMethod").Available)
 missing = [m for m in methods if m not in cpu]
 if missing:
     raise SystemExit("bench_integration_cpu has no row for %s: rebuild it" % ", ".join(missing))
+names = ["Psi Volume|" + m for m in methods] + ["Projected tetra"]
+timing = scene.timing(names, "Projected tetra", budget=args.budget)
 rows = []
 for m in methods:
-    spf, err, mx = scene.measure("Psi Volume|" + m, refs)
+    err, mx = scene.errors("Psi Volume|" + m, refs)
+    spf = timing.row("Psi Volume|" + m)["spf"]
     c = cpu[m]
     scene.rep.UpdatePropertyInformation()
     pre = scene.rep.GetProperty("LastPreIntegrationSeconds").GetElement(0) \
         if c.get("pre_integration_table") == "1" else 0.0
     rows.append((m, float(c["ns_per_segment"]), float(c["max_err_D1"]), float(c["mean_err"]),
                  spf, err, mx, pre))
-pt_spf, pt_err, _ = scene.measure("Projected tetra", refs)
+pt_err, _ = scene.errors("Projected tetra", refs)
+pt_spf = timing.row("Projected tetra")["spf"]
+print(timing.summary())
 
 print()
 print("dataset %s: %d tetrahedra at %dx%d; image error vs Bunyk+linear at %d views; "

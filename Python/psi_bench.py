@@ -62,31 +62,6 @@ def scale_view(source, array, mapper, size):
     return view, rep
 
 
-def time_frames(view, frames, jitter=0.5, budget=30.0):
-    """Mean wall-clock seconds of `frames` renders after a warm-up one (tables, shaders), or of
-    fewer (at least one) once `budget` seconds are spent. The camera turns by +-`jitter` degrees
-    between frames, so that view-dependent work (the visibility sort) is counted, and is put back
-    exactly afterwards."""
-    saved = (list(view.CameraPosition), list(view.CameraFocalPoint), list(view.CameraViewUp))
-    t0 = time.perf_counter()
-    simple.Render(view)
-    psi_data.wait(view)
-    cam = view.GetActiveCamera()
-    times = []
-    for k in range(frames):
-        if k > 0 and time.perf_counter() - t0 > budget:
-            break
-        cam.Azimuth(jitter if k % 2 == 0 else -jitter)
-        t = time.perf_counter()
-        simple.Render(view)
-        psi_data.wait(view)
-        times.append(time.perf_counter() - t)
-    view.CameraPosition, view.CameraFocalPoint, view.CameraViewUp = saved
-    simple.Render(view)
-    psi_data.wait(view)
-    return sum(times) / len(times) if times else float("nan")
-
-
 def align_color_points(lut, pwf):
     """Adds a color point at every opacity point (colors interpolated in RGB, so the map does not
     change). VTK 9.2's vtkUnstructuredGridLinearRayIntegrator, the reference of these benchmarks,
@@ -170,20 +145,15 @@ class Scene:
         bunyk.SetRayIntegrator(None)
         return refs, seconds
 
-    def measure(self, name, refs, png_dir=""):
-        """Mean seconds/frame over one orbit (after a warm-up frame), mean and max pixel error
-        (0..255) against the reference images."""
+    def errors(self, name, refs, png_dir=""):
+        """Mean and max pixel error (0..255) of `name` against the reference images, over the
+        orbit steps that have one."""
         self.set_mapper(name)
         self.reset_camera()
-        simple.Render(self.view)
-        psi_data.wait(self.view)
-        times, errs, maxes = [], [], []
+        errs, maxes = [], []
         for k in range(self.frames):
-            t = time.perf_counter()
-            simple.Render(self.view)
-            psi_data.wait(self.view)
-            times.append(time.perf_counter() - t)
             if k in refs:
+                simple.Render(self.view)
                 img = psi_testing.grab(self.view)
                 e = np.abs(img - refs[k])
                 errs.append(e.mean())
@@ -192,5 +162,21 @@ class Scene:
                     simple.SaveScreenshot(os.path.join(png_dir, "%s_%d.png" % (
                         name.replace(" ", "_").replace("|", "_"), k)), self.view)
             self.step()
-        return (sum(times) / len(times), float(np.mean(errs)) if errs else float("nan"),
+        self.reset_camera()
+        return (float(np.mean(errs)) if errs else float("nan"),
                 float(np.max(maxes)) if maxes else float("nan"))
+
+    def timing(self, names, baseline, frames=3, budget=300.0):
+        """Seconds per frame of each of `names` (mapper names as set_mapper takes them) in
+        interleaved rounds, ratios to `baseline` (psi_timing.interleaved), at the orbit's start."""
+        import psi_timing
+
+        def contender(name):
+            def prepare():
+                self.set_mapper(name)
+                self.reset_camera()
+            return psi_timing.InProcess(name, self.view, prepare)
+
+        return psi_timing.interleaved([contender(n) for n in names], baseline, frames=frames,
+                                      budget=budget, min_rounds=5,
+                                      log=lambda m: print("  " + m, flush=True))
