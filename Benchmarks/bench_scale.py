@@ -5,16 +5,18 @@ pvpython Benchmarks/bench_scale.py [--sizes 20 40 60] [--bluntfin] [--size 512] 
                                    [--mappers "Psi Volume GS" "Psi Volume GS fan" "Psi Volume CS"
                                               "Projected tetra"
                                               "Bunyk ray cast"]
-                                   [--bunyk-max-tets 400000] [--threads 1 2]
+                                   [--bunyk-max-tets 400000] [--threads 1 2] [--budget 300]
 
 --sizes are half-extents of ParaView's Wavelet, tetrahedralized (5 tets per voxel): 20 gives
 320,000 tets, 40 gives 2,560,000 and 60 gives 8,640,000. For each mesh and mapper it prints:
   - first frame: seconds from the first Render to its completion (upload, sort, draw), the
     pipeline already updated;
-  - s/frame: mean over an orbit of --frames frames, and the speed relative to 'Projected tetra';
+  - s/frame: the median over interleaved rounds of all the mappers' workers (Python/psi_timing.py:
+    each worker stays up, draws its turn of --frames frames after a warm-up one, the order
+    rotating), and the speed relative to 'Projected tetra' taken round by round;
   - peak RSS of the process (MB), and relative to 'Projected tetra';
   - thread scaling: s/frame with the first --threads value of LP_NUM_THREADS (Mesa llvmpipe's
-    rendering threads) over s/frame with the last;
+    rendering threads) over s/frame with the last (a second pass of rounds);
   - time step: a new time step of the same mesh (the scalars change, points and cells do not),
     rendered at a fixed view, over a plain frame at that view.
 'Psi Volume' runs with its defaults (partial pre-integration, MPVONC), once with each projector:
@@ -26,7 +28,6 @@ import argparse
 import json
 import os
 import resource
-import subprocess
 import sys
 import time
 
@@ -54,6 +55,7 @@ def worker(args):
     import psi_bench
     import psi_data
     import psi_testing
+    import psi_timing
 
     psi_data.load_plugin(globals())
     if args.data == "bluntfin":
@@ -70,13 +72,10 @@ def worker(args):
     simple.Render(view)
     psi_data.wait(view)
     first = time.perf_counter() - t
-    times = []
-    for _ in range(args.frames):
+    for _ in range(args.frames):  # an orbit: every view's sort and buffers have been made
         view.GetActiveCamera().Azimuth(360.0 / args.frames)
-        t = time.perf_counter()
         simple.Render(view)
         psi_data.wait(view)
-        times.append(time.perf_counter() - t)
     # fixed view: plain frames, then time steps (pipeline updated before the clock starts)
     plain, steps = [], []
     simple.Render(view)
@@ -93,27 +92,49 @@ def worker(args):
         steps.append(time.perf_counter() - t)
     rss_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
     print("RESULT " + json.dumps({
-        "cells": cells, "first": first, "spf": sum(times) / len(times),
-        "plain": min(plain), "step": min(steps), "rss": rss_mb}), flush=True)
+        "cells": cells, "first": first, "plain": min(plain), "step": min(steps), "rss": rss_mb}),
+        flush=True)
+    psi_timing.serve_rounds(view)  # s/frame: interleaved rounds with the other mappers
     psi_testing.exit_now(0)
 
 
-def run_worker(data, mapper, threads, args):
+def start_worker(data, mapper, threads, args):
+    """A worker for one mapper on one mesh, with llvmpipe on `threads` threads, that stays up
+    for the timing rounds (psi_timing.ChildProcess)."""
     sys.path.insert(0, os.path.join(HERE, "..", "Python"))
-    import psi_process
-    env = psi_process.environment_without_mpi()
-    env["LP_NUM_THREADS"] = str(threads)
-    cmd = [sys.executable, os.path.abspath(__file__), "--worker", "--data", str(data),
-           "--mapper", mapper, "--size", str(args.size), "--frames", str(args.frames)]
-    pvpython = os.environ.get("PVPYTHON", "pvpython")
-    cmd = [pvpython, "--force-offscreen-rendering"] + cmd[1:]
-    out = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                         universal_newlines=True, timeout=args.timeout)
-    for line in out.stdout.splitlines():
-        if line.startswith("RESULT "):
-            return json.loads(line[len("RESULT "):])
-    sys.stderr.write("worker failed (%s, %s):\n%s\n" % (data, mapper, out.stdout[-2000:]))
-    return None
+    import psi_timing
+    cmd = [psi_timing.pvpython(), "--force-offscreen-rendering", os.path.abspath(__file__),
+           "--worker", "--data", str(data), "--mapper", mapper, "--size", str(args.size),
+           "--frames", str(args.frames)]
+    proc = psi_timing.ChildProcess(cmd, env=psi_timing.child_environment(threads),
+                                   timeout=args.timeout)
+    result = proc.line("RESULT ")
+    if not proc.ready or result is None:
+        sys.stderr.write("worker failed (%s, %s): %s\n%s\n" % (
+            data, mapper, proc.note, "\n".join(proc.output[-20:])))
+    return proc, (json.loads(result) if result else None)
+
+
+def measure(data, mappers, threads, args):
+    """For each mapper that ran: its worker's figures (first frame, time step, RSS) and, from
+    interleaved rounds with the others, s/frame and the ratio to 'Projected tetra'."""
+    sys.path.insert(0, os.path.join(HERE, "..", "Python"))
+    import psi_timing
+    workers = {m: start_worker(data, m, threads, args) for m in mappers}
+    live = [psi_timing.Child(m, proc) for m, (proc, r) in workers.items() if r is not None]
+    baseline = "Projected tetra" if "Projected tetra" in [c.name for c in live] else \
+        (live[0].name if live else None)
+    rows = {}
+    if live:
+        timing = psi_timing.interleaved(live, baseline, frames=args.frames, budget=args.budget,
+                                        min_rounds=5)
+        print("# %s, %d llvmpipe thread%s: %s" % (data, threads, "s" * (threads > 1),
+                                                 timing.summary()), flush=True)
+        for c in live:
+            rows[c.name] = dict(workers[c.name][1], **timing.row(c.name))
+    for proc, _ in workers.values():
+        proc.close()
+    return rows
 
 
 def main():
@@ -131,6 +152,8 @@ def main():
                             "Projected tetra", "Bunyk ray cast"])
     p.add_argument("--bunyk-max-tets", type=int, default=400000)
     p.add_argument("--timeout", type=float, default=3000)
+    p.add_argument("--budget", type=float, default=300,
+                   help="seconds of interleaved timing rounds per mesh and thread count")
     args = p.parse_args()
     if args.worker:
         worker(args)
@@ -140,23 +163,21 @@ def main():
         "tets", "mapper", "first (s)", "s/frame", "speed/PT", "RSS (MB)", "RSS/PT",
         "%d->%d thr" % tuple(args.threads), "step/frame"))
     for data in datasets:
-        rows = {}
-        for mapper in args.mappers:
-            if mapper == "Bunyk ray cast" and data != "bluntfin" and \
-                    5 * (2 * int(data)) ** 3 > args.bunyk_max_tets:
-                continue
-            fast = run_worker(data, mapper, args.threads[1], args)
-            slow = run_worker(data, mapper, args.threads[0], args) if fast else None
-            if fast:
-                rows[mapper] = (fast, slow)
-        pt = rows.get("Projected tetra", (None, None))[0]
-        for mapper, (r, slow) in rows.items():
+        mappers = [m for m in args.mappers if not (
+            m == "Bunyk ray cast" and data != "bluntfin" and
+            5 * (2 * int(data)) ** 3 > args.bunyk_max_tets)]
+        # all threads first, then one: each pass its own interleaved rounds (halves the memory)
+        fast = measure(data, mappers, args.threads[1], args)
+        slow = measure(data, list(fast), args.threads[0], args)
+        pt = fast.get("Projected tetra")
+        for mapper, r in fast.items():
+            s1 = slow.get(mapper)
             print("%-10d %-20s %11.3f %9.3f %8.2fx %9.0f %8.2fx %7.2fx %11.2fx" % (
                 r["cells"], mapper, r["first"], r["spf"],
-                pt["spf"] / r["spf"] if pt else float("nan"), r["rss"],
+                1.0 / r["ratio"] if pt and r["ratio"] else float("nan"), r["rss"],
                 r["rss"] / pt["rss"] if pt else float("nan"),
-                slow["spf"] / r["spf"] if slow else float("nan"), r["step"] / r["plain"]),
-                flush=True)
+                s1["spf"] / r["spf"] if s1 and s1["spf"] else float("nan"),
+                r["step"] / r["plain"]), flush=True)
 
 
 if __name__ == "__main__":

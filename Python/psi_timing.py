@@ -76,7 +76,7 @@ class ChildProcess:
     silence of `timeout` seconds ends it; `note` then says why."""
 
     def __init__(self, argv, env=None, timeout=300):
-        self.note, self.timeout, self.tail = "", timeout, []
+        self.note, self.timeout, self.tail, self.output = "", timeout, [], []
         self.proc = subprocess.Popen(argv, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                                      stderr=subprocess.STDOUT, text=True, env=env, bufsize=1)
         self.lines = queue.Queue()
@@ -105,8 +105,15 @@ class ChildProcess:
                 break
             if line.startswith(prefix):
                 return line[len(prefix):].strip()
-            self.tail = (self.tail + [line.rstrip()])[-5:]
+            self.output.append(line.rstrip())
+            self.tail = self.output[-5:]
         return None
+
+    def line(self, prefix):
+        """The rest of the child's output line starting with `prefix` (printed before it became
+        ready, say a figure measured once), or None."""
+        hits = [l[len(prefix):].strip() for l in self.output if l.startswith(prefix)]
+        return hits[-1] if hits else None
 
     def measure(self, frames, warmup, jitter, settings):
         if self.note:
