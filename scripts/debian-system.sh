@@ -16,7 +16,8 @@ fi
 [ "$(id -u)" -eq 0 ] || { echo "debian-system: making a system needs root (debootstrap, chroot)" >&2; exit 1; }
 if ! command -v debootstrap >/dev/null; then
   echo "[system] installing debootstrap" >&2
-  apt-get update -qq >&2 && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq debootstrap >&2
+  source "$here/lib/apt.sh"
+  psi_apt "" update -qq >&2 && DEBIAN_FRONTEND=noninteractive psi_apt "" install -y -qq debootstrap >&2
 fi
 mirror=$(bash "$here/lib/debian-mirror.sh")
 mkdir -p "$base"

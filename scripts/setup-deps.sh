@@ -7,15 +7,16 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/lib/paraview-versions.sh"
+source "$here/lib/apt.sh"
 SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
 
 apt_update() {
   # Debian unstable's Release file can be past its Valid-Until date on a mirror that lags; apt
   # then refuses it. Retry once without the check, and say so.
-  if ! $SUDO apt-get update -qq 2>/tmp/psi-apt-update.err; then
+  if ! psi_apt "$SUDO" update -qq 2>/tmp/psi-apt-update.err; then
     if grep -qi "is no longer valid\|expired" /tmp/psi-apt-update.err; then
       echo "[setup] this mirror's Release file is past its Valid-Until date; updating without that check"
-      $SUDO apt-get -o Acquire::Check-Valid-Until=false update -qq
+      psi_apt "$SUDO" -o Acquire::Check-Valid-Until=false update -qq
     else
       cat /tmp/psi-apt-update.err >&2
       return 1
@@ -63,7 +64,7 @@ done
 if [ ${#missing[@]} -gt 0 ]; then
   echo "[setup] ParaView $series: installing ${#missing[@]} packages: ${missing[*]}"
   apt_update
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  DEBIAN_FRONTEND=noninteractive psi_apt "$SUDO" install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 $SUDO bash "$here/lib/mend-paraview-cmake.sh"
 echo "[setup] dependencies present (ParaView $series)"
