@@ -2,6 +2,7 @@
 
 #include "PsiTetMesh.h"
 #include "PsiTransferFunctionTable.h"
+#include "PsiTransferTextures.h"
 
 #include "vtkObject.h"
 #include "vtkShaderProgram.h"
@@ -10,20 +11,22 @@
 #include <algorithm>
 #include <vector>
 
-bool PsiAdaptiveNodes::NeedsUpdate(
-  vtkVolumeProperty* property, const double range[2], int tableVersion) const
+bool PsiAdaptiveNodes::NeedsUpdate(const PsiTableSources& in) const
 {
-  return property->GetMTime() != this->Time || this->Range[0] != range[0] ||
-    this->Range[1] != range[1] || tableVersion != this->TableVersion;
+  return in.Property->GetMTime() != this->Time || this->Range[0] != in.ScalarRange[0] ||
+    this->Range[1] != in.ScalarRange[1] || in.Transfer->GetVersion() != this->TableVersion;
 }
 
-void PsiAdaptiveNodes::Update(vtkVolumeProperty* property, const double range[2],
-  const psi::TransferFunctionTable& table, int tableVersion, int maxNodes, double tolerance)
+void PsiAdaptiveNodes::Update(vtkOpenGLRenderWindow*, const PsiTableSources& in)
 {
-  this->TableVersion = tableVersion;
+  vtkVolumeProperty* property = in.Property;
+  const double* range = in.ScalarRange;
+  const int maxNodes = in.MaxNodes;
+  const double tolerance = in.NodeTolerance;
+  this->TableVersion = in.Transfer->GetVersion();
   this->Nodes = psi::SampleTransferFunctionNodes(property, range, maxNodes, tolerance);
-  this->TableDeviation =
-    psi::TableDeviation(table, this->Nodes, psi::OpacityUnitDistance(property));
+  this->TableDeviation = psi::TableDeviation(
+    in.Transfer->GetTable(), this->Nodes, psi::OpacityUnitDistance(property));
   this->Faithful = this->Nodes.MaxDeviation <= tolerance;
   if (!this->Faithful)
   {
@@ -36,7 +39,7 @@ void PsiAdaptiveNodes::Update(vtkVolumeProperty* property, const double range[2]
   this->Range[1] = range[1];
 }
 
-void PsiAdaptiveNodes::Activate(vtkShaderProgram* program) const
+void PsiAdaptiveNodes::Activate(vtkShaderProgram* program)
 {
   const int n = this->Nodes.Size();
   program->SetUniformi("tfNodeCount", n);

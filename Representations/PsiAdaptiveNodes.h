@@ -1,33 +1,28 @@
 // PsiAdaptiveNodes: the transfer function's nodes for adaptive sampling
 // (psi::TransferFunctionNodes, Moreland 2004, dissertation, §4.3), sent to the fragment shader
-// as uniforms (PsiAdaptiveFS.glsl), in the manner of the GPU tables of PsiTransferTextures
-// (NeedsUpdate / Update / Activate); and how far the sampled table is from them, which decides
-// 'Auto'.
+// as uniforms (PsiAdaptiveFS.glsl): a PsiGpuTable like those of PsiTransferTextures; and how far
+// the sampled table is from them, which decides 'Auto'.
 #ifndef PsiAdaptiveNodes_h
 #define PsiAdaptiveNodes_h
 
+#include "PsiGpuTable.h"
 #include "PsiTransferFunctionNodes.h"
 
 #include "vtkType.h"
 
 class vtkShaderProgram;
 class vtkVolumeProperty;
-namespace psi
-{
-struct TransferFunctionTable;
-}
-
-class PsiAdaptiveNodes
+class PsiAdaptiveNodes : public PsiGpuTable
 {
 public:
   /// When the property, the range or the sampled table (its version) changed.
-  bool NeedsUpdate(vtkVolumeProperty* property, const double range[2], int tableVersion) const;
-  /// Samples the nodes of `property` over `range` (at most `maxNodes`, refined to
-  /// `tolerance`) and measures `table` (of version `tableVersion`) against them.
-  void Update(vtkVolumeProperty* property, const double range[2],
-    const psi::TransferFunctionTable& table, int tableVersion, int maxNodes, double tolerance);
+  bool NeedsUpdate(const PsiTableSources& in) const override;
+  /// Samples the nodes of the property over the scalar range (at most in.MaxNodes, refined to
+  /// in.NodeTolerance) and measures the sampled table (in.Transfer) against them.
+  void Update(vtkOpenGLRenderWindow* renWin, const PsiTableSources& in) override;
   /// Sets tfNodes, tfNodeValues and tfNodeCount.
-  void Activate(vtkShaderProgram* program) const;
+  void Activate(vtkShaderProgram* program) override;
+  void ReleaseGraphicsResources(vtkWindow*) override {}
 
   int Size() const { return this->Nodes.Size(); }
   /// Whether the nodes follow the transfer function within the tolerance given to Update (a

@@ -2,6 +2,7 @@
 
 #include "PsiProjectCS.h"
 #include "PsiProjectedVS.h"
+#include "PsiShaderTags.h"
 
 #include <regex>
 #include <set>
@@ -78,17 +79,6 @@ std::string FromTexel(const Packing& p, const std::string& texel)
 std::string Line(const std::string& s)
 {
   return s + "\n";
-}
-
-// Replaces the tag line `tag` of `src` by `with`.
-void Substitute(std::string& src, const std::string& tag, const std::string& with)
-{
-  const size_t pos = src.find(tag + "\n");
-  if (pos == std::string::npos)
-  {
-    throw std::logic_error("PsiComputeProjectorComposer: no tag " + tag);
-  }
-  src.replace(pos, tag.size() + 1, with);
 }
 
 std::string ReplaceAll(std::string s, const std::regex& re, const std::string& with)
@@ -202,15 +192,15 @@ ComputeProjectorSources ComposeComputeProjector(
 
   std::set<std::string> vertexUniforms;
   out.Compute = PsiProjectCS;
-  Substitute(out.Compute, "//PSI::Counts::Dec", "#version 430 core\n" + counts);
-  Substitute(out.Compute, "//PSI::Stage::Vertex", VertexStage(stages.Vertex, vertexUniforms));
-  Substitute(out.Compute, "//PSI::Stage::Geometry", GeometryStage(stages.Geometry, vertexUniforms));
-  Substitute(out.Compute, "//PSI::Stage::Store", store);
+  SubstituteTag(out.Compute, "//PSI::Counts::Dec", "#version 430 core\n" + counts);
+  SubstituteTag(out.Compute, "//PSI::Stage::Vertex", VertexStage(stages.Vertex, vertexUniforms));
+  SubstituteTag(out.Compute, "//PSI::Stage::Geometry", GeometryStage(stages.Geometry, vertexUniforms));
+  SubstituteTag(out.Compute, "//PSI::Stage::Store", store);
 
   out.Vertex = PsiProjectedVS;
-  Substitute(out.Vertex, "//PSI::Counts::Dec", counts);
-  Substitute(out.Vertex, "//PSI::Stage::Outputs", declare);
-  Substitute(out.Vertex, "//PSI::Stage::Load", load);
+  SubstituteTag(out.Vertex, "//PSI::Counts::Dec", counts);
+  SubstituteTag(out.Vertex, "//PSI::Stage::Outputs", declare);
+  SubstituteTag(out.Vertex, "//PSI::Stage::Load", load);
   out.Fragment = stages.Fragment;
   return out;
 }

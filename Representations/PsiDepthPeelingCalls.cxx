@@ -1,6 +1,6 @@
 #include "PsiDepthPeelingCalls.h"
 
-#include "PsiRenderTarget.h"
+#include "PsiSceneQueries.h"
 
 #include "vtkAbstractMapper.h"
 #include "vtkDualDepthPeelingPass.h"
@@ -87,7 +87,7 @@ PsiDepthPeelingCalls::Stage PsiDepthPeelingCalls::StageOf(
 void PsiDepthPeelingCalls::NoteTranslucentGeometry(vtkAbstractMapper* mapper, vtkRenderer* ren)
 {
   const bool translucent =
-    this->LastStage == Plain && PsiRenderTarget::SceneHasTranslucentGeometry(ren);
+    this->LastStage == Plain && psi::SceneHasTranslucentGeometry(ren);
   if (translucent && !this->NotedTranslucent)
   {
     vtkWarningWithObjectMacro(mapper,

@@ -2,76 +2,22 @@
 
 #include "PsiCompositeFS.h"
 
-#include "vtkMath.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
-#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtkVolume.h"
 #include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 PsiRenderTarget::PsiRenderTarget() = default;
 
-namespace
-{
-// Whether a visible prop other than volumes has opaque (else translucent) geometry, within `box`
-// when given.
-bool AnyProp(vtkRenderer* ren, const double* box, bool opaque = true)
-{
-  vtkPropCollection* props = ren->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* p = props->GetNextProp(it))
-  {
-    if (!p->GetVisibility() || p->IsA("vtkVolume") ||
-      !(opaque ? p->HasOpaqueGeometry() : p->HasTranslucentPolygonalGeometry()))
-    {
-      continue;
-    }
-    // An actor with no data (ParaView keeps one per hidden representation: bounds
-    // uninitialized, VTK_DOUBLE_MAX or min > max) draws nothing.
-    const double* b = p->GetBounds();
-    if (!b || !vtkMath::AreBoundsInitialized(b))
-    {
-      continue;
-    }
-    if (!box ||
-      (b[0] <= box[1] && box[0] <= b[1] && b[2] <= box[3] && box[2] <= b[3] &&
-        b[4] <= box[5] && box[4] <= b[5]))
-    {
-      return true;
-    }
-  }
-  return false;
-}
-} // namespace
-
-bool PsiRenderTarget::OpaqueGeometryOverlaps(vtkRenderer* ren, vtkVolume* vol)
-{
-  double vb[6];
-  vol->GetBounds(vb);
-  return AnyProp(ren, vb);
-}
-
-bool PsiRenderTarget::SceneHasOpaqueGeometry(vtkRenderer* ren)
-{
-  return AnyProp(ren, nullptr);
-}
-
-bool PsiRenderTarget::SceneHasTranslucentGeometry(vtkRenderer* ren)
-{
-  return AnyProp(ren, nullptr, false);
-}
-
 PsiRenderTarget::~PsiRenderTarget() = default;
 
 bool PsiRenderTarget::CaptureDepthTexture(
-  vtkRenderer* ren, vtkOpenGLRenderWindow* renWin, bool sampleDepth)
+  vtkRenderer* ren, vtkOpenGLRenderWindow* renWin, bool sampleDepth, bool sceneDepth)
 {
   int w, h, x0, y0;
   ren->GetTiledSizeAndOrigin(&w, &h, &x0, &y0);
@@ -104,7 +50,7 @@ bool PsiRenderTarget::CaptureDepthTexture(
   this->Origin[1] = y0;
   // the scene's depth, read from the framebuffer bound for reading (the one being rendered);
   // without opaque geometry it is the far plane everywhere, and the depth test is skipped
-  this->DepthTest = sampleDepth || SceneHasOpaqueGeometry(ren);
+  this->DepthTest = sampleDepth || sceneDepth;
   if (this->DepthTest)
   {
     this->DepthTexture->Activate();

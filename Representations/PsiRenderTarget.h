@@ -20,7 +20,6 @@ class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
-class vtkVolume;
 class vtkWindow;
 
 class PsiRenderTarget
@@ -29,18 +28,12 @@ public:
   PsiRenderTarget();
   ~PsiRenderTarget();
 
-  /// Whether a visible opaque prop other than `vol` overlaps the volume's bounds: only then can
-  /// opaque geometry cut through cells, which needs the scene depth in the fragment shader.
-  static bool OpaqueGeometryOverlaps(vtkRenderer* ren, vtkVolume* vol);
-  /// Whether any visible prop other than volumes has opaque geometry (else the scene depth is
-  /// the cleared far plane everywhere, and the depth test would reject nothing).
-  static bool SceneHasOpaqueGeometry(vtkRenderer* ren);
-  /// Whether any visible prop other than volumes has translucent geometry.
-  static bool SceneHasTranslucentGeometry(vtkRenderer* ren);
   /// Sizes the target to the renderer's tile and copies the scene depth from the framebuffer
-  /// being rendered, for the depth test, when the scene has opaque geometry; with `sampleDepth`
-  /// also the copy the shaders read. False for an empty tile.
-  bool CaptureDepthTexture(vtkRenderer* ren, vtkOpenGLRenderWindow* renWin, bool sampleDepth);
+  /// being rendered, for the depth test, when `sceneDepth` (the scene has opaque geometry:
+  /// psi::SceneHasOpaqueGeometry); with `sampleDepth` also the copy the shaders read. False for
+  /// an empty tile.
+  bool CaptureDepthTexture(
+    vtkRenderer* ren, vtkOpenGLRenderWindow* renWin, bool sampleDepth, bool sceneDepth);
   /// Sets the shaders' `sceneDepth` sampler and `viewportSize` (after CaptureDepthTexture).
   void SetShaderParameters(vtkShaderProgram* program);
   /// Width and height of the target in pixels (after CaptureDepthTexture).

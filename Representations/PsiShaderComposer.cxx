@@ -1,4 +1,5 @@
 #include "PsiShaderComposer.h"
+#include "PsiShaderTags.h"
 
 #include "PsiIntegrationMethods.h"
 #include "PsiIntegratorSources.h"
@@ -38,7 +39,6 @@
 #include "PsiVolumeGS.h"
 #include "PsiVolumeVS.h"
 
-#include <cctype>
 #include <cstdlib>
 #include <map>
 #include <set>
@@ -51,153 +51,6 @@ namespace psi
 {
 namespace
 {
-bool IsSpace(char c)
-{
-  return c == ' ' || c == '\t' || c == '\r';
-}
-
-std::string Trim(const std::string& s)
-{
-  size_t b = 0, e = s.size();
-  while (b < e && IsSpace(s[b]))
-  {
-    ++b;
-  }
-  while (e > b && IsSpace(s[e - 1]))
-  {
-    --e;
-  }
-  return s.substr(b, e - b);
-}
-
-// A tag: a line holding only //PSI::<Name>::<Name>.
-bool IsTag(const std::string& line)
-{
-  const std::string t = Trim(line);
-  if (t.compare(0, 7, "//PSI::") != 0)
-  {
-    return false;
-  }
-  const std::string rest = t.substr(7);
-  const size_t sep = rest.find("::");
-  if (sep == std::string::npos || sep == 0 || sep + 2 >= rest.size())
-  {
-    return false;
-  }
-  for (size_t i = 0; i < rest.size(); ++i)
-  {
-    if (i == sep || i == sep + 1)
-    {
-      continue;
-    }
-    if (!std::isalnum(static_cast<unsigned char>(rest[i])))
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
-std::vector<std::string> Lines(const std::string& text)
-{
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line))
-  {
-    lines.push_back(line);
-  }
-  return lines;
-}
-
-// The feature of a tag: "//PSI::NearClip::Impl" -> "NearClip".
-std::string FeatureOf(const std::string& tag)
-{
-  return tag.substr(7, tag.find("::", 7) - 7);
-}
-
-// The sections of a feature file, in file order: (tag, text). The file's first line is a tag of
-// its feature; each tag of that feature starts a section. Tags of other features inside a
-// section are kept in its text, to be replaced when their feature is applied.
-std::vector<std::pair<std::string, std::string>> Sections(const char* file)
-{
-  std::vector<std::pair<std::string, std::string>> sections;
-  std::string feature;
-  for (const std::string& line : Lines(file))
-  {
-    if (IsTag(line) && (sections.empty() || FeatureOf(Trim(line)) == feature))
-    {
-      sections.emplace_back(Trim(line), std::string());
-      feature = FeatureOf(sections.back().first);
-    }
-    else if (!sections.empty())
-    {
-      sections.back().second += line + "\n";
-    }
-  }
-  for (auto& s : sections)
-  {
-    std::string& t = s.second;
-    while (t.size() >= 2 && t[t.size() - 1] == '\n' && t[t.size() - 2] == '\n')
-    {
-      t.pop_back(); // trailing blank lines separate sections in the file
-    }
-  }
-  return sections;
-}
-
-// Replaces the line holding only `tag` in `src` by `with` (which ends with a newline, or is
-// empty). False when `src` has no such line.
-bool ReplaceTag(std::string& src, const std::string& tag, const std::string& with)
-{
-  for (size_t pos = src.find(tag); pos != std::string::npos; pos = src.find(tag, pos + 1))
-  {
-    const size_t nl = pos == 0 ? std::string::npos : src.rfind('\n', pos - 1);
-    const size_t begin = nl == std::string::npos ? 0 : nl + 1;
-    const size_t eol = src.find('\n', pos);
-    const size_t end = eol == std::string::npos ? src.size() : eol + 1;
-    const size_t lineEnd = eol == std::string::npos ? src.size() : eol;
-    if (Trim(src.substr(begin, lineEnd - begin)) == tag)
-    {
-      src.replace(begin, end - begin, with);
-      return true;
-    }
-  }
-  return false;
-}
-
-// Substitutes the sections of feature file `file` into `src`, except those whose tag is listed
-// in `skip`.
-void Apply(std::string& src, const char* file, const std::set<std::string>& skip = {})
-{
-  for (const auto& section : Sections(file))
-  {
-    if (skip.count(section.first))
-    {
-      continue;
-    }
-    if (!ReplaceTag(src, section.first, section.second))
-    {
-      throw std::logic_error("PsiShaderComposer: no tag " + section.first + " to replace");
-    }
-  }
-}
-
-// Replaces every tag left (features that are off) by nothing.
-void RemoveTags(std::string& src)
-{
-  std::string out;
-  out.reserve(src.size());
-  for (const std::string& line : Lines(src))
-  {
-    if (!IsTag(line))
-    {
-      out += line + "\n";
-    }
-  }
-  src.swap(out);
-}
-
 std::string Define(const char* name, int value)
 {
   return std::string("#define ") + name + " " + std::to_string(value) + "\n";
@@ -281,7 +134,7 @@ std::string ComposeGeometry(const ShaderFeatures& f)
   {
     counts += Define("PSI_ISO_COUNT", f.IsoCount);
   }
-  ReplaceTag(gs, "//PSI::Counts::Dec", counts);
+  SubstituteTag(gs, "//PSI::Counts::Dec", counts);
   Apply(gs, PsiProjectionClassesGS);
   if (iso || f.NearClip)
   {
@@ -503,7 +356,7 @@ ShaderSources ComposeShaders(const ShaderFeatures& f, const char* integratorSour
     counts += Define("PSI_MAX_SPLITS",
       (isoPerFragment ? f.IsoCount : 0) + (f.Adaptive ? f.MaxAdaptiveNodes : 0));
   }
-  ReplaceTag(fs, "//PSI::Counts::Dec", counts);
+  SubstituteTag(fs, "//PSI::Counts::Dec", counts);
   std::set<std::string> unusedInputs;
   if (!Uses(integrator, "psiCoord") && !Uses(integrator, "psiTable"))
   {
@@ -523,10 +376,7 @@ ShaderSources ComposeShaders(const ShaderFeatures& f, const char* integratorSour
   {
     integratorText += '\n';
   }
-  if (!ReplaceTag(fs, "//PSI::Integrator::Impl", integratorText))
-  {
-    throw std::logic_error("PsiShaderComposer: no tag //PSI::Integrator::Impl");
-  }
+  SubstituteTag(fs, "//PSI::Integrator::Impl", integratorText);
   Apply(fs, f.Adaptive ? PsiTransferNodesFS : PsiTransferTableFS);
   Apply(fs, SegmentsSource(f, PsiRaySegmentsFS, PsiExactSegmentsFS, PsiHAPTSegmentsFS));
   if (f.NearClip)

@@ -33,20 +33,22 @@ void SetUniform2(vtkShaderProgram* p, const char* name, double a, double b)
 PsiTransferFunctionTexture::PsiTransferFunctionTexture() = default;
 PsiTransferFunctionTexture::~PsiTransferFunctionTexture() = default;
 
-bool PsiTransferFunctionTexture::NeedsUpdate(vtkVolumeProperty* property, const double range[2],
-  int samples, const double* opacityRange) const
+bool PsiTransferFunctionTexture::NeedsUpdate(const PsiTableSources& in) const
 {
-  const double* orange = opacityRange ? opacityRange : range;
-  return property->GetMTime() > this->Time || this->Range[0] != range[0] ||
+  const double* range = in.ScalarRange;
+  const double* orange = in.OpacityRange ? in.OpacityRange : range;
+  return in.Property->GetMTime() > this->Time || this->Range[0] != range[0] ||
     this->Range[1] != range[1] || this->OpacityRange[0] != orange[0] ||
-    this->OpacityRange[1] != orange[1] || this->Samples != samples;
+    this->OpacityRange[1] != orange[1] || this->Samples != in.Samples;
 }
 
-void PsiTransferFunctionTexture::Update(vtkOpenGLRenderWindow* renWin,
-  vtkVolumeProperty* property, const double range[2], int samples, const double* opacityRange)
+void PsiTransferFunctionTexture::Update(vtkOpenGLRenderWindow* renWin, const PsiTableSources& in)
 {
+  vtkVolumeProperty* property = in.Property;
+  const double* range = in.ScalarRange;
+  const double* opacityRange = in.OpacityRange;
   psi::TransferFunctionTable tf =
-    psi::SampleTransferFunction(property, range, samples, opacityRange);
+    psi::SampleTransferFunction(property, range, in.Samples, opacityRange);
   // the prefix also sees control points between samples, which the table may not show
   bool zero = false;
   std::vector<float> prefix = psi::OpacityPrefixCounts(tf, property, zero);
@@ -65,7 +67,7 @@ void PsiTransferFunctionTexture::Update(vtkOpenGLRenderWindow* renWin,
   this->Range[1] = range[1];
   this->OpacityRange[0] = (opacityRange ? opacityRange : range)[0];
   this->OpacityRange[1] = (opacityRange ? opacityRange : range)[1];
-  this->Samples = samples;
+  this->Samples = in.Samples;
 }
 
 void PsiTransferFunctionTexture::Activate(vtkShaderProgram* program)
@@ -97,23 +99,28 @@ void PsiTransferFunctionTexture::ReleaseGraphicsResources(vtkWindow* win)
 PsiOpacityPrefixTexture::PsiOpacityPrefixTexture() = default;
 PsiOpacityPrefixTexture::~PsiOpacityPrefixTexture() = default;
 
-void PsiOpacityPrefixTexture::Update(
-  vtkOpenGLRenderWindow* renWin, const PsiTransferFunctionTexture& transfer)
+bool PsiOpacityPrefixTexture::NeedsUpdate(const PsiTableSources& in) const
 {
+  return in.Transfer->GetVersion() != this->Version;
+}
+
+void PsiOpacityPrefixTexture::Update(vtkOpenGLRenderWindow* renWin, const PsiTableSources& in)
+{
+  const PsiTransferFunctionTexture& transfer = *in.Transfer;
+  this->Samples = transfer.GetTable().Size;
   this->Texture->SetContext(renWin);
-  this->Texture->Create2DFromRaw(transfer.GetTable().Size, 1, 1, VTK_FLOAT,
-    const_cast<float*>(transfer.GetOpacityPrefix().data()));
+  this->Texture->Create2DFromRaw(
+    this->Samples, 1, 1, VTK_FLOAT, const_cast<float*>(transfer.GetOpacityPrefix().data()));
   this->Version = transfer.GetVersion();
 }
 
-void PsiOpacityPrefixTexture::Activate(
-  vtkShaderProgram* program, const psi::TransferFunctionTable& table)
+void PsiOpacityPrefixTexture::Activate(vtkShaderProgram* program)
 {
   this->Texture->Activate();
   program->SetUniformi("opacityPrefix", this->Texture->GetTextureUnit());
   // opacity scalar, a fraction u of the table's opacity range -> sample index u (N - 1)
-  SetUniform2(program, "tfIndexScaleShift", table.Size - 1.0, 0.0);
-  program->SetUniformi("tfSamples", table.Size);
+  SetUniform2(program, "tfIndexScaleShift", this->Samples - 1.0, 0.0);
+  program->SetUniformi("tfSamples", this->Samples);
 }
 
 void PsiOpacityPrefixTexture::Deactivate()
@@ -131,7 +138,7 @@ void PsiOpacityPrefixTexture::ReleaseGraphicsResources(vtkWindow* win)
 PsiPsiTableTexture::PsiPsiTableTexture() = default;
 PsiPsiTableTexture::~PsiPsiTableTexture() = default;
 
-void PsiPsiTableTexture::Update(vtkOpenGLRenderWindow* renWin)
+void PsiPsiTableTexture::Update(vtkOpenGLRenderWindow* renWin, const PsiTableSources&)
 {
   const psi::PsiTable& table = psi::GetDefaultPsiTable();
   this->Texture->SetContext(renWin);
@@ -163,18 +170,19 @@ void PsiPsiTableTexture::ReleaseGraphicsResources(vtkWindow* win)
 PsiPreIntegrationTexture::PsiPreIntegrationTexture() = default;
 PsiPreIntegrationTexture::~PsiPreIntegrationTexture() = default;
 
-bool PsiPreIntegrationTexture::NeedsUpdate(
-  int transferVersion, const psi::PreIntegrationLengthAxis& axis) const
+bool PsiPreIntegrationTexture::NeedsUpdate(const PsiTableSources& in) const
 {
   const psi::PreIntegrationLengthAxis& a = this->Table.Axis;
-  return !this->Valid || this->Version != transferVersion || a.MaxLength != axis.MaxLength ||
-    a.MinLength != axis.MinLength || a.Samples != axis.Samples;
+  const psi::PreIntegrationLengthAxis& axis = in.LengthAxis;
+  return !this->Valid || this->Version != in.Transfer->GetVersion() ||
+    a.MaxLength != axis.MaxLength || a.MinLength != axis.MinLength || a.Samples != axis.Samples;
 }
 
-double PsiPreIntegrationTexture::Update(vtkOpenGLRenderWindow* renWin,
-  const PsiTransferFunctionTexture& transfer, const psi::PreIntegrationLengthAxis& axis)
+void PsiPreIntegrationTexture::Update(vtkOpenGLRenderWindow* renWin, const PsiTableSources& in)
 {
-  this->Table = psi::BuildPreIntegrationTable(transfer.GetTable(), psi::GetDefaultPsiTable(), axis);
+  const PsiTransferFunctionTexture& transfer = *in.Transfer;
+  this->Table =
+    psi::BuildPreIntegrationTable(transfer.GetTable(), psi::GetDefaultPsiTable(), in.LengthAxis);
   this->Texture->SetContext(renWin);
   this->Texture->Create3DFromRaw(this->Table.ScalarSamples, this->Table.ScalarSamples,
     this->Table.LengthSamples, 4, VTK_FLOAT, this->Table.Rgba.data());
@@ -183,7 +191,6 @@ double PsiPreIntegrationTexture::Update(vtkOpenGLRenderWindow* renWin,
   this->Table.Rgba.shrink_to_fit();
   this->Version = transfer.GetVersion();
   this->Valid = true;
-  return this->Table.BuildSeconds;
 }
 
 void PsiPreIntegrationTexture::Activate(vtkShaderProgram* program)
@@ -209,45 +216,39 @@ void PsiPreIntegrationTexture::ReleaseGraphicsResources(vtkWindow* win)
   this->Valid = false;
 }
 
-// ---- all four -----------------------------------------------------------------------------------
-void PsiTransferTables::Activate(vtkShaderProgram* program, bool earlyDiscard, bool psi, bool pre)
-{
-  this->Transfer.Activate(program);
-  if (earlyDiscard)
-  {
-    this->OpacityPrefix.Activate(program, this->Transfer.GetTable());
-  }
-  if (psi)
-  {
-    this->PsiTable.Activate(program);
-  }
-  if (pre)
-  {
-    this->PreIntegration.Activate(program);
-  }
-}
-
-void PsiTransferTables::Deactivate(bool earlyDiscard, bool psi, bool pre)
-{
-  this->Transfer.Deactivate();
-  if (earlyDiscard)
-  {
-    this->OpacityPrefix.Deactivate();
-  }
-  if (psi)
-  {
-    this->PsiTable.Deactivate();
-  }
-  if (pre)
-  {
-    this->PreIntegration.Deactivate();
-  }
-}
-
+// ---- all four, and any set of tables ------------------------------------------------------------
 void PsiTransferTables::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->Transfer.ReleaseGraphicsResources(win);
   this->OpacityPrefix.ReleaseGraphicsResources(win);
   this->PsiTable.ReleaseGraphicsResources(win);
   this->PreIntegration.ReleaseGraphicsResources(win);
+}
+
+void psi::UpdateTables(
+  const std::vector<PsiGpuTable*>& tables, vtkOpenGLRenderWindow* renWin, const PsiTableSources& in)
+{
+  for (PsiGpuTable* t : tables)
+  {
+    if (t->NeedsUpdate(in))
+    {
+      t->Update(renWin, in);
+    }
+  }
+}
+
+void psi::ActivateTables(const std::vector<PsiGpuTable*>& tables, vtkShaderProgram* program)
+{
+  for (PsiGpuTable* t : tables)
+  {
+    t->Activate(program);
+  }
+}
+
+void psi::DeactivateTables(const std::vector<PsiGpuTable*>& tables)
+{
+  for (PsiGpuTable* t : tables)
+  {
+    t->Deactivate();
+  }
 }

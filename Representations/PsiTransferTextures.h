@@ -1,7 +1,7 @@
 // PsiTransferTextures: the GPU tables the fragment and geometry shaders read, one class per
-// table in the manner of VTK's vtkOpenGLVolumeLookupTable (NeedsUpdate / Update / Activate /
-// Deactivate). Activate binds the texture and sets the uniforms the shader code of that table
-// declares.
+// table, each a PsiGpuTable (NeedsUpdate / Update / Activate / Deactivate from one frame's
+// PsiTableSources, in the manner of VTK's vtkOpenGLVolumeLookupTable). Activate binds the texture
+// and sets the uniforms the shader code of that table declares.
 //  - PsiTransferFunctionTexture: color and attenuation sampled over the scalar range (N x 1).
 //  - PsiOpacityPrefixTexture: prefix counts of non-zero opacity, for early discard (Maximo et
 //    al. 2010 §3.5).
@@ -12,6 +12,7 @@
 #ifndef PsiTransferTextures_h
 #define PsiTransferTextures_h
 
+#include "PsiGpuTable.h"
 #include "PsiPreIntegrationTable.h"
 #include "PsiTransferFunctionTable.h"
 
@@ -26,22 +27,20 @@ class vtkTextureObject;
 class vtkVolumeProperty;
 class vtkWindow;
 
-class PsiTransferFunctionTexture
+class PsiTransferFunctionTexture : public PsiGpuTable
 {
 public:
   PsiTransferFunctionTexture();
-  ~PsiTransferFunctionTexture();
-  /// `opacityRange`: the range of a separate opacity array's scalars, over which the attenuation
-  /// is sampled (nullptr: `range`, the color scalars').
-  bool NeedsUpdate(vtkVolumeProperty* property, const double range[2], int samples,
-    const double* opacityRange = nullptr) const;
+  ~PsiTransferFunctionTexture() override;
+  /// With a separate opacity array (in.OpacityRange) the attenuation is sampled over the
+  /// opacity scalars' range.
+  bool NeedsUpdate(const PsiTableSources& in) const override;
   /// Samples the property; uploads (and bumps the version) only when the samples changed:
   /// ParaView touches the property's MTime for unrelated edits.
-  void Update(vtkOpenGLRenderWindow* renWin, vtkVolumeProperty* property, const double range[2],
-    int samples, const double* opacityRange = nullptr);
-  void Activate(vtkShaderProgram* program);
-  void Deactivate();
-  void ReleaseGraphicsResources(vtkWindow* win);
+  void Update(vtkOpenGLRenderWindow* renWin, const PsiTableSources& in) override;
+  void Activate(vtkShaderProgram* program) override;
+  void Deactivate() override;
+  void ReleaseGraphicsResources(vtkWindow* win) override;
 
   const psi::TransferFunctionTable& GetTable() const { return this->Table; }
   /// Bumped whenever the sampled content changes.
@@ -63,51 +62,56 @@ private:
   bool ZeroOpacity = false;
 };
 
-class PsiOpacityPrefixTexture
+class PsiOpacityPrefixTexture : public PsiGpuTable
 {
 public:
   PsiOpacityPrefixTexture();
-  ~PsiOpacityPrefixTexture();
-  bool NeedsUpdate(int transferVersion) const { return transferVersion != this->Version; }
-  void Update(vtkOpenGLRenderWindow* renWin, const PsiTransferFunctionTexture& transfer);
-  void Activate(vtkShaderProgram* program, const psi::TransferFunctionTable& table);
-  void Deactivate();
-  void ReleaseGraphicsResources(vtkWindow* win);
+  ~PsiOpacityPrefixTexture() override;
+  /// When the sampled transfer function (in.Transfer) changed.
+  bool NeedsUpdate(const PsiTableSources& in) const override;
+  void Update(vtkOpenGLRenderWindow* renWin, const PsiTableSources& in) override;
+  void Activate(vtkShaderProgram* program) override;
+  void Deactivate() override;
+  void ReleaseGraphicsResources(vtkWindow* win) override;
 
 private:
   vtkNew<vtkTextureObject> Texture;
   int Version = -1;
+  int Samples = 0;
 };
 
-class PsiPsiTableTexture
+class PsiPsiTableTexture : public PsiGpuTable
 {
 public:
   PsiPsiTableTexture();
-  ~PsiPsiTableTexture();
-  bool NeedsUpdate() const { return this->Size == 0; }
-  void Update(vtkOpenGLRenderWindow* renWin);
-  void Activate(vtkShaderProgram* program);
-  void Deactivate();
-  void ReleaseGraphicsResources(vtkWindow* win);
+  ~PsiPsiTableTexture() override;
+  /// Once per context: the table depends on nothing of the frame.
+  bool NeedsUpdate(const PsiTableSources&) const override { return this->Size == 0; }
+  void Update(vtkOpenGLRenderWindow* renWin, const PsiTableSources& in) override;
+  void Activate(vtkShaderProgram* program) override;
+  void Deactivate() override;
+  void ReleaseGraphicsResources(vtkWindow* win) override;
 
 private:
   vtkNew<vtkTextureObject> Texture;
   int Size = 0;
 };
 
-class PsiPreIntegrationTexture
+class PsiPreIntegrationTexture : public PsiGpuTable
 {
 public:
   PsiPreIntegrationTexture();
-  ~PsiPreIntegrationTexture();
-  bool NeedsUpdate(int transferVersion, const psi::PreIntegrationLengthAxis& axis) const;
+  ~PsiPreIntegrationTexture() override;
+  /// When the sampled transfer function or the mesh's length axis changed.
+  bool NeedsUpdate(const PsiTableSources& in) const override;
   /// Rebuilds the table for the transfer function over the length axis (segments up to its
-  /// MaxLength); returns the seconds the build took.
-  double Update(vtkOpenGLRenderWindow* renWin, const PsiTransferFunctionTexture& transfer,
-    const psi::PreIntegrationLengthAxis& axis);
-  void Activate(vtkShaderProgram* program);
-  void Deactivate();
-  void ReleaseGraphicsResources(vtkWindow* win);
+  /// MaxLength): Röttger's table belongs to one transfer function, rebuilt on every edit.
+  void Update(vtkOpenGLRenderWindow* renWin, const PsiTableSources& in) override;
+  void Activate(vtkShaderProgram* program) override;
+  void Deactivate() override;
+  void ReleaseGraphicsResources(vtkWindow* win) override;
+  /// Seconds the last rebuild took.
+  double GetLastBuildSeconds() const { return this->Table.BuildSeconds; }
 
 private:
   vtkNew<vtkTextureObject> Texture;
@@ -116,7 +120,7 @@ private:
   bool Valid = false;
 };
 
-/// The four tables of a frame: binds and releases together only those its features use.
+/// The four tables of a frame, and those of them a frame's plan reads (PsiFramePlan::Tables).
 struct PsiTransferTables
 {
   PsiTransferFunctionTexture Transfer;
@@ -124,8 +128,6 @@ struct PsiTransferTables
   PsiPsiTableTexture PsiTable;
   PsiPreIntegrationTexture PreIntegration;
 
-  void Activate(vtkShaderProgram* program, bool earlyDiscard, bool psi, bool pre);
-  void Deactivate(bool earlyDiscard, bool psi, bool pre);
   void ReleaseGraphicsResources(vtkWindow* win);
 };
 

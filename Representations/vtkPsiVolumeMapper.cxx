@@ -1,13 +1,16 @@
 #include "vtkPsiVolumeMapper.h"
+#include "vtkPsiVolumeMapperInternals.h"
 
 #include "PsiAdaptiveNodes.h"
 #include "PsiComputeProjector.h"
 #include "PsiDepthPeelingCalls.h"
+#include "PsiFramePlan.h"
 #include "PsiGeometryProjector.h"
 #include "PsiIntegrationMethods.h"
 #include "PsiMeshBuffers.h"
 #include "PsiProjectionClasses.h"
 #include "PsiRenderTarget.h"
+#include "PsiSceneQueries.h"
 #include "PsiShaderComposer.h"
 #include "PsiShaderParameters.h"
 #include "PsiTransferFunctionAnalysis.h"
@@ -18,6 +21,7 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkObjectFactory.h"
+#include "vtkPVLogger.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkRenderer.h"
@@ -47,39 +51,6 @@ const psi::IntegrationMethodInfo& MethodInfo(int method)
   return psi::GetIntegrationMethodInfo(static_cast<psi::Method>(method));
 }
 } // namespace
-
-struct vtkPsiVolumeMapper::Internals
-{
-  PsiMeshBuffers Mesh;
-  PsiVisibilityOrder Order;
-  PsiTransferTables Tables;
-  PsiRenderTarget Target;
-  PsiGeometryProjector Geometry;
-  PsiComputeProjector Compute;
-  PsiDepthPeelingCalls Peeling; // the depth-peeling stage of this call
-
-  // Transfer-function nodes for adaptive sampling, for the property and range they came from.
-  PsiAdaptiveNodes AdaptiveNodes;
-
-  std::string LastWarning;
-  std::string LastFeatureNote; // what a separate opacity array changed, said once
-  vtkWindow* Context = nullptr;
-
-  void Release(vtkWindow* win)
-  {
-    if (this->Context)
-    {
-      this->Mesh.ReleaseGraphicsResources(win);
-      this->Order.ReleaseGraphicsResources(win);
-    }
-    this->Tables.ReleaseGraphicsResources(win);
-    this->Peeling.ReleaseGraphicsResources(win);
-    this->Target.ReleaseGraphicsResources(win);
-    this->Geometry.ReleaseGraphicsResources();
-    this->Compute.ReleaseGraphicsResources(win);
-    this->Context = nullptr;
-  }
-};
 
 vtkStandardNewMacro(vtkPsiVolumeMapper);
 
@@ -112,9 +83,12 @@ void vtkPsiVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
   this->Superclass::ReleaseGraphicsResources(win);
 }
 
-// One frame: mesh, visibility order, tables, program, uniforms, draw and composite.
+// One frame: mesh, visibility order, the transfer function, the plan, the tables it reads,
+// program, uniforms, draw and composite. ParaView's rendering verbosity (PARAVIEW_LOG_RENDERING_
+// VERBOSITY, or --verbosity) logs each stage's scope and time.
 void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
+  vtkVLogScopeF(PARAVIEW_LOG_RENDERING_VERBOSITY(), "Psi Volume: frame");
   const auto t0 = Clock::now();
   Internals& I = *this->Impl;
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
@@ -145,25 +119,15 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     return;
   }
   const PsiFrameCamera cam = PsiFrameCamera::FromRenderer(ren, vol, I.Mesh.GetMesh().Shift);
-  bool sorted = false;
-  if (I.Order.NeedsUpdate(I.Mesh.GetVersion(), this->SortMethod, cam.MCVC, cam.Parallel))
+  const bool sorted = this->UpdateVisibilityOrder(input, cam);
+  const PsiTableSources sources = this->UpdateTransferFunction(renWin, vol);
+  const PsiFramePlan plan = PlanFrame(this->FrameSettings(), this->SceneFacts(ren, vol, cam));
+  this->NotePlan(plan);
+  this->UpdateTables(renWin, plan, sources);
+  if (I.Target.CaptureDepthTexture(
+        ren, renWin, plan.Features.NearClip || plan.Features.OpaqueClip, plan.SceneDepth))
   {
-    std::vector<int32_t> neighbors;
-    if (this->SortMethod == MPVONC && I.Order.NeedsMesh(I.Mesh.GetVersion(), this->SortMethod))
-    {
-      psi::FaceNeighborsFromArray(I.Mesh.GetMesh(),
-        input->GetCellData() ? input->GetCellData()->GetArray("FaceNeighbors") : nullptr,
-        input->GetNumberOfCells(), neighbors);
-    }
-    I.Order.Update(I.Mesh.GetMesh(), I.Mesh.GetVersion(), std::move(neighbors),
-      this->SortMethod, cam.MCVC, cam.Parallel); // sorts while the frame draws
-    sorted = true;
-  }
-  this->UpdateTables(renWin, vol);
-  const psi::ShaderFeatures features = this->ChooseFeatures(ren, vol, cam);
-  if (I.Target.CaptureDepthTexture(ren, renWin, features.NearClip || features.OpaqueClip))
-  {
-    this->DrawVolume(renWin, ren, vol, cam, features);
+    this->DrawVolume(renWin, ren, vol, cam, plan);
   }
   I.Order.Finish();
   if (sorted)
@@ -174,13 +138,38 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   this->Stats.LastRenderSeconds = SecondsSince(t0);
 }
 
+// Starts sorting on a worker thread when the view or the mesh changed (the draw streams the
+// chunks as the sort emits them). True when a sort started.
+bool vtkPsiVolumeMapper::UpdateVisibilityOrder(
+  vtkUnstructuredGridBase* input, const PsiFrameCamera& cam)
+{
+  Internals& I = *this->Impl;
+  if (!I.Order.NeedsUpdate(I.Mesh.GetVersion(), this->SortMethod, cam.MCVC, cam.Parallel))
+  {
+    return false;
+  }
+  vtkVLogScopeF(PARAVIEW_LOG_RENDERING_VERBOSITY(), "Psi Volume: visibility order");
+  std::vector<int32_t> neighbors;
+  if (this->SortMethod == MPVONC && I.Order.NeedsMesh(I.Mesh.GetVersion(), this->SortMethod))
+  {
+    psi::FaceNeighborsFromArray(I.Mesh.GetMesh(),
+      input->GetCellData() ? input->GetCellData()->GetArray("FaceNeighbors") : nullptr,
+      input->GetNumberOfCells(), neighbors);
+  }
+  I.Order.Update(I.Mesh.GetMesh(), I.Mesh.GetVersion(), std::move(neighbors), this->SortMethod,
+    cam.MCVC, cam.Parallel);
+  return true;
+}
+
 // Projects and draws the volume with the chosen projector: the geometry-shader program, or the
 // compute projector's projection pass and draw program.
 void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren,
-  vtkVolume* vol, const PsiFrameCamera& cam, const psi::ShaderFeatures& features)
+  vtkVolume* vol, const PsiFrameCamera& cam, const PsiFramePlan& plan)
 {
+  vtkVLogScopeF(PARAVIEW_LOG_RENDERING_VERBOSITY(), "Psi Volume: draw");
   Internals& I = *this->Impl;
-  const bool gradients = features.IsoCount > 0 && features.IsoSmooth;
+  const psi::ShaderFeatures& features = plan.Features;
+  const bool gradients = plan.Tables.Gradients;
   const bool compute = PsiComputeProjector::Chosen(this->Projector, renWin);
   this->LastUsedProjector = compute ? PROJECTOR_COMPUTE_SHADER : PROJECTOR_GEOMETRY_SHADER;
   vtkShaderProgram* program = this->ReadyProjection(renWin, features, compute);
@@ -188,12 +177,13 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   {
     return;
   }
-  this->SetShaderParameters(program, ren, vol, cam, features);
+  const std::vector<PsiGpuTable*> tables = this->TablesOf(plan);
+  this->SetShaderParameters(program, ren, vol, cam, features, tables);
   I.Mesh.Activate(program, gradients);
   vtkShaderProgram* draw = compute ? I.Compute.ReadyDrawProgram(renWin) : program;
   if (draw && compute)
   {
-    this->SetShaderParameters(draw, ren, vol, cam, features);
+    this->SetShaderParameters(draw, ren, vol, cam, features, tables);
     I.Mesh.Activate(draw, gradients); // the fragment shader reads points when clipping
   }
   if (draw)
@@ -223,7 +213,7 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
     I.Peeling.Deactivate();
   }
   I.Mesh.Deactivate();
-  this->DeactivateTables(features);
+  psi::DeactivateTables(tables);
 }
 
 // Gathers and uploads the mesh when the data or the array changed. False: nothing to draw.
@@ -257,6 +247,7 @@ bool vtkPsiVolumeMapper::UpdateMesh(
   {
     return true;
   }
+  vtkVLogScopeF(PARAVIEW_LOG_RENDERING_VERBOSITY(), "Psi Volume: mesh");
   std::string error;
   if (!I.Mesh.Update(renWin, input, scalars, cellFlag == 1, component, arrayKey, error))
   {
@@ -271,134 +262,6 @@ bool vtkPsiVolumeMapper::UpdateMesh(
     vtkWarningMacro("Psi Volume " << skipped);
   }
   return true;
-}
-
-// The transfer-function table, and only the other tables the frame's features need.
-void vtkPsiVolumeMapper::UpdateTables(vtkOpenGLRenderWindow* renWin, vtkVolume* vol)
-{
-  Internals& I = *this->Impl;
-  vtkVolumeProperty* property = vol->GetProperty();
-  const psi::TetMesh& mesh = I.Mesh.GetMesh();
-  // with a separate opacity array the attenuation is sampled over the opacity scalars' range
-  const double* opacityRange = mesh.Opacity.empty() ? nullptr : mesh.OpacityRange;
-  const int samples = this->TransferFunctionSamples;
-  if (I.Tables.Transfer.NeedsUpdate(property, mesh.ScalarRange, samples, opacityRange))
-  {
-    I.Tables.Transfer.Update(renWin, property, mesh.ScalarRange, samples, opacityRange);
-  }
-  if (this->EarlyDiscard && I.Tables.Transfer.HasZeroOpacity() &&
-    I.Tables.OpacityPrefix.NeedsUpdate(I.Tables.Transfer.GetVersion()))
-  {
-    I.Tables.OpacityPrefix.Update(renWin, I.Tables.Transfer);
-  }
-  const psi::IntegrationMethodInfo& method = MethodInfo(this->DrawnMethod());
-  if (method.NeedsPsiTable && I.Tables.PsiTable.NeedsUpdate())
-  {
-    I.Tables.PsiTable.Update(renWin);
-  }
-  const psi::PreIntegrationLengthAxis axis =
-    psi::MakePreIntegrationLengthAxis(mesh.MinEdgeLength, mesh.MaxEdgeLength);
-  if (method.NeedsPreIntegrationTable &&
-    I.Tables.PreIntegration.NeedsUpdate(I.Tables.Transfer.GetVersion(), axis))
-  {
-    // Röttger's table belongs to one transfer function: rebuilt on every edit (timed).
-    this->Stats.LastPreIntegrationSeconds =
-      I.Tables.PreIntegration.Update(renWin, I.Tables.Transfer, axis);
-  }
-  if (!this->Isosurfaces.Empty() && this->IsosurfaceShading == ISO_SMOOTH)
-  {
-    I.Mesh.UpdateGradients(renWin);
-  }
-  if (this->AdaptiveSampling != ADAPTIVE_OFF &&
-    I.AdaptiveNodes.NeedsUpdate(property, mesh.ScalarRange, I.Tables.Transfer.GetVersion()))
-  {
-    I.AdaptiveNodes.Update(property, mesh.ScalarRange, I.Tables.Transfer.GetTable(),
-      I.Tables.Transfer.GetVersion(), MaxAdaptiveNodes, AdaptiveNodeTolerance);
-  }
-}
-
-// What the scene calls for: only these are composed into the program.
-psi::ShaderFeatures vtkPsiVolumeMapper::ChooseFeatures(
-  vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam)
-{
-  Internals& I = *this->Impl;
-  psi::ShaderFeatures f;
-  f.Method = this->DrawnMethod();
-  f.ExactSegments = !cam.Parallel && this->ExactPerspectiveSegments;
-  // within depth peeling, the silhouettes' exact segments are clipped to the pass's intervals
-  f.DepthPeel = I.Peeling.GetStage() > PsiDepthPeelingCalls::Plain;
-  f.Silhouette = psi::SilhouetteChosen(this->Decomposition) || f.DepthPeel;
-  f.NearClip = cam.NearPlaneCuts(I.Mesh.GetMesh().Bounds);
-  f.OpaqueClip = PsiRenderTarget::OpaqueGeometryOverlaps(ren, vol);
-  f.IsoCount = this->Isosurfaces.Count();
-  f.IsoSmooth = f.IsoCount > 0 && this->IsosurfaceShading == ISO_SMOOTH;
-  const bool zeroOpacity = I.Tables.Transfer.HasZeroOpacity();
-  if (f.IsoCount > 0 &&
-    (this->IsosurfaceMethod == ISO_MARCHING_TETRAHEDRA ||
-      (this->IsosurfaceMethod == ISO_AUTO && this->EarlyDiscard && zeroOpacity)))
-  {
-    GLint maxVertices = 0, maxComponents = 0;
-    glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &maxVertices);
-    glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &maxComponents);
-    psi::ShaderFeatures withTriangles = f; // the budget of the marching-tetrahedra program
-    withTriangles.IsoTriangles = true;
-    f.IsoTriangles = psi::FitsGeometryOutputLimits(withTriangles, maxVertices, maxComponents);
-  }
-  // Early discard only when the opacity function has zero regions, and not with per-fragment
-  // isosurfaces (visible where the volume is transparent; marching tetrahedra still emit the
-  // surfaces of a cell whose volume pieces are dropped).
-  f.EarlyDiscard = this->EarlyDiscard && zeroOpacity && (f.IsoCount == 0 || f.IsoTriangles);
-  f.Adaptive = I.AdaptiveNodes.IsFaithful() &&
-    (this->AdaptiveSampling == ADAPTIVE_ON ||
-      (this->AdaptiveSampling == ADAPTIVE_AUTO &&
-        I.AdaptiveNodes.GetTableDeviation() > AdaptiveAutoDeviation));
-  f.MaxAdaptiveNodes = MaxAdaptiveNodes;
-  this->ChooseSeparateOpacity(f);
-  this->LastUsedNearPlaneClipping = f.NearClip;
-  this->LastUsedOpaqueClipping = f.OpaqueClip;
-  this->LastUsedIsosurfaceMethod =
-    f.IsoCount == 0 ? -1 : f.IsoTriangles ? ISO_MARCHING_TETRAHEDRA : ISO_PER_FRAGMENT;
-  this->LastUsedEarlyDiscard = f.EarlyDiscard;
-  this->LastUsedAdaptiveSampling = f.Adaptive;
-  this->LastNumberOfAdaptiveNodes = f.Adaptive ? I.AdaptiveNodes.Size() : 0;
-  return f;
-}
-
-// The integration method drawn: the setting, except that Röttger's table tabulates one scalar for
-// color and opacity, so that with a separate opacity array full pre-integration draws as partial
-// pre-integration (the tables and the program both follow this).
-int vtkPsiVolumeMapper::DrawnMethod() const
-{
-  const bool separate = !this->Impl->Mesh.GetMesh().Opacity.empty();
-  return separate && MethodInfo(this->IntegrationMethod).NeedsPreIntegrationTable
-    ? static_cast<int>(psi::Method::PartialPreIntegration)
-    : this->IntegrationMethod;
-}
-
-// A separate opacity array: drawn with silhouettes, whose fragments carry both scalars; not with
-// adaptive sampling (nodes of one scalar), nor Röttger's table (DrawnMethod); early discard
-// judged on the opacity scalar, per cell.
-void vtkPsiVolumeMapper::ChooseSeparateOpacity(psi::ShaderFeatures& f)
-{
-  Internals& I = *this->Impl;
-  f.SeparateOpacity = !I.Mesh.GetMesh().Opacity.empty();
-  std::string note;
-  if (f.SeparateOpacity)
-  {
-    f.Silhouette = true;
-    f.Adaptive = false;
-    f.EarlyDiscard = f.EarlyDiscard && !f.IsoTriangles;
-  }
-  if (f.Method != this->IntegrationMethod)
-  {
-    note = "Psi Volume: full pre-integration tabulates one scalar for color and opacity; with "
-           "a separate opacity array it draws with partial pre-integration.";
-  }
-  if (!note.empty() && note != I.LastFeatureNote)
-  {
-    vtkWarningMacro(<< note);
-  }
-  I.LastFeatureNote = note;
 }
 
 // The projection program of this frame's projector for these features (each projector composes
@@ -425,15 +288,15 @@ vtkShaderProgram* vtkPsiVolumeMapper::ReadyProjection(
 }
 
 void vtkPsiVolumeMapper::SetShaderParameters(vtkShaderProgram* program, vtkRenderer* ren,
-  vtkVolume* vol, const PsiFrameCamera& cam, const psi::ShaderFeatures& f)
+  vtkVolume* vol, const PsiFrameCamera& cam, const psi::ShaderFeatures& f,
+  const std::vector<PsiGpuTable*>& tables)
 {
   Internals& I = *this->Impl;
   vtkVolumeProperty* property = vol->GetProperty();
   SetCameraShaderParameters(program, cam);
   program->SetUniform1iv("classTable", 81, psi::GetPackedProjectionClassTable().data());
   program->SetUniformf("unitDistance", static_cast<float>(psi::OpacityUnitDistance(property)));
-  I.Tables.Activate(program, f.EarlyDiscard, MethodInfo(f.Method).NeedsPsiTable,
-    MethodInfo(f.Method).NeedsPreIntegrationTable);
+  psi::ActivateTables(tables, program); // the adaptive nodes among them, when drawn
   I.Target.SetShaderParameters(program);
   if (f.Silhouette)
   {
@@ -451,16 +314,6 @@ void vtkPsiVolumeMapper::SetShaderParameters(vtkShaderProgram* program, vtkRende
     SetIsosurfaceShaderParameters(
       program, this->Isosurfaces, I.Mesh.GetMesh().ScalarRange, style, property, ren, cam);
   }
-  if (f.Adaptive)
-  {
-    I.AdaptiveNodes.Activate(program);
-  }
-}
-
-void vtkPsiVolumeMapper::DeactivateTables(const psi::ShaderFeatures& f)
-{
-  this->Impl->Tables.Deactivate(f.EarlyDiscard, MethodInfo(f.Method).NeedsPsiTable,
-    MethodInfo(f.Method).NeedsPreIntegrationTable);
 }
 
 int vtkPsiVolumeMapper::GetMeshVersion() const

@@ -9,8 +9,11 @@
  *    once: points as a texture buffer, one uvec4 attribute of point ids per tetrahedron;
  *  - PsiVisibilityOrder: back-to-front order (centroid or MPVONC, psi::TetSort) as an index
  *    buffer of GL_POINTS, re-sorted when the view changes;
- *  - PsiTransferTextures: transfer function, opacity prefix, Psi and pre-integration tables;
- *  - psi::ComposeShaders: the program for the features the scene calls for;
+ *  - PlanFrame (PsiFramePlan.h): what the scene calls for, from the settings and the scene's
+ *    facts, with no GL call: the features and the tables they read;
+ *  - PsiTransferTextures, PsiAdaptiveNodes: transfer function, opacity prefix, Psi and
+ *    pre-integration tables, adaptive nodes, each a PsiGpuTable;
+ *  - psi::ComposeShaders: the program for the plan's features;
  *  - PsiRenderTarget: scene depth copies, the float target, the composite over the scene.
  * A geometry shader classifies each projection with the PTINT ternary truth table (Marroquim et
  * al. 2008) and emits 1-4 triangles; a fragment shader integrates each ray segment.
@@ -38,7 +41,12 @@ class vtkRenderer;
 class vtkShaderProgram;
 class vtkVolume;
 class vtkWindow;
+class PsiGpuTable;
 struct PsiFrameCamera;
+struct PsiFramePlan;
+struct PsiFrameSettings;
+struct PsiSceneFacts;
+struct PsiTableSources;
 namespace psi
 {
 struct ShaderFeatures;
@@ -299,18 +307,23 @@ private:
   void UpdateIsosurfaceList();
   bool UpdateMesh(
     vtkOpenGLRenderWindow* renWin, vtkVolume* vol, vtkUnstructuredGridBase* input);
-  void UpdateTables(vtkOpenGLRenderWindow* renWin, vtkVolume* vol);
-  int DrawnMethod() const;
-  void ChooseSeparateOpacity(psi::ShaderFeatures& f);
-  psi::ShaderFeatures ChooseFeatures(
-    vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam);
+  bool UpdateVisibilityOrder(vtkUnstructuredGridBase* input, const PsiFrameCamera& cam);
+  // the frame plan (vtkPsiVolumeMapperFramePlan.cxx)
+  PsiTableSources UpdateTransferFunction(vtkOpenGLRenderWindow* renWin, vtkVolume* vol);
+  PsiFrameSettings FrameSettings() const;
+  PsiSceneFacts SceneFacts(vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam);
+  void NotePlan(const PsiFramePlan& plan);
+  std::vector<PsiGpuTable*> TablesOf(const PsiFramePlan& plan);
+  void UpdateTables(
+    vtkOpenGLRenderWindow* renWin, const PsiFramePlan& plan, const PsiTableSources& sources);
+  // the draw (vtkPsiVolumeMapper.cxx)
   vtkShaderProgram* ReadyProjection(
     vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& features, bool compute);
   void DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren, vtkVolume* vol,
-    const PsiFrameCamera& cam, const psi::ShaderFeatures& features);
+    const PsiFrameCamera& cam, const PsiFramePlan& plan);
   void SetShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkVolume* vol,
-    const PsiFrameCamera& cam, const psi::ShaderFeatures& features);
-  void DeactivateTables(const psi::ShaderFeatures& features);
+    const PsiFrameCamera& cam, const psi::ShaderFeatures& features,
+    const std::vector<PsiGpuTable*>& tables);
 
   struct Internals;
   std::unique_ptr<Internals> Impl;

@@ -12,14 +12,16 @@ Prints a table (mutation | caught by | seconds) and the score, and exits 1 when 
 present exactly once, so the list cannot silently rot.
 
   --list          list the mutations and exit
-  --check         only verify the snippets against the source tree and the test names (CTest
-                  `MutationList` runs this), no build
+  --check         only verify the snippets against the source tree and the test names of a
+                  configured build (--build-dir, default build/; CTest `PsiProject.MutationList`
+                  runs this), no build
   --only NAME...  run only these mutations
   --jobs N        build jobs (default 2)
   --timeout S     per-test timeout in seconds (default 300)
   --workdir DIR   scratch tree and build (default $TMPDIR/psi-mutation-$USER)
 """
 import argparse
+import json
 import os
 import pathlib
 import re
@@ -39,40 +41,39 @@ XVFB = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24 -noreset"]
 NICE = ["nice", "-n", "15"]
 
 
-def registered_tests():
-    """CTest name -> the targets it runs, from add_test(NAME x COMMAND target ...) in Testing/:
-    the executable, or for a pvpython test the plugin and the targets its environment names
-    ($<TARGET_FILE:t>)."""
+def target_of(path, build):
+    """The build target a path of `build` is the output of: an executable in bin/, or a module
+    (the plugin PsiVolume.so); None for anything else (a directory a test writes to)."""
+    p = pathlib.Path(path)
+    try:
+        rel = p.relative_to(build)
+    except ValueError:
+        return None
+    if rel.parts[:1] == ("bin",):
+        return p.name
+    return p.name[:-3] if p.name.endswith(".so") else None
+
+
+def registered_tests(build):
+    """CTest name -> the targets it runs, as CTest itself lists the tests of the configured
+    `build` (ctest --show-only=json-v1): its executable, and the targets its environment names
+    (the plugin of a pvpython test, the reference renderer)."""
+    out = subprocess.run(["ctest", "--show-only=json-v1"], cwd=build, capture_output=True,
+                         text=True, check=True).stdout
     tests = {}
-    for f in sorted((ROOT / "Testing").glob("*.cmake")) + [ROOT / "Testing" / "CMakeLists.txt"]:
-        text = f.read_text()
-        for name, target in re.findall(r"add_test\(NAME\s+(\S+)\s+COMMAND\s+([^\s)]+)", text):
-            if name.startswith("${"):  # the function below registers its own names
-                continue
-            if target == '"${PVPYTHON_EXECUTABLE}"':
-                props = re.search(r"set_tests_properties\(%s\s+PROPERTIES([^)]*)\)"
-                                  % re.escape(name), text)
-                extra = re.findall(r"\$<TARGET_FILE:(\w+)>", props.group(1)) if props else []
-                tests[name] = ["PsiVolume"] + [t for t in extra if t != "PsiVolume"]
-            else:
-                tests[name] = [target]
-        # psi_add_render_test(NAME TARGET [FAN] ...): NAME, NAME.compute and with FAN NAME.fan
-        for name, target, rest in re.findall(
-                r"psi_add_render_test\((\w[\w.]*)\s+(\w+)([^)]*)\)", text):
-            tests[name] = tests[name + ".compute"] = [target]
-            if "FAN" in rest.split():
-                tests[name + ".fan"] = [target]
-        # the pvpython tests, PsiPython.<name> for each name of set(python_tests ...): the plugin
-        for names in re.findall(r"set\(python_tests\s+([^)]*)\)", text):
-            for name in names.split():
-                tests["PsiPython." + name] = ["PsiVolume"]
+    for t in json.loads(out).get("tests", []):
+        paths = t.get("command", [])[:1]
+        for prop in t.get("properties", []):
+            if prop["name"] == "ENVIRONMENT":
+                paths += [v.split("=", 1)[1] for v in prop["value"] if "=" in v]
+        tests[t["name"]] = sorted({x for x in (target_of(p, build) for p in paths) if x})
     return tests
 
 
-def check(root, mutations):
-    """Problems with the list against the tree at `root`: snippets not present exactly once,
-    unknown tests, duplicate names."""
-    problems, tests, seen = [], registered_tests(), set()
+def check(root, mutations, tests):
+    """Problems with the list against the tree at `root` and the tests registered (`tests`):
+    snippets not present exactly once, unknown tests, duplicate names."""
+    problems, seen = [], set()
     for m in mutations:
         if m.name in seen:
             problems.append(f"{m.name}: duplicate name")
@@ -89,7 +90,7 @@ def check(root, mutations):
             problems.append(f"{m.name}: replacement equals the original")
         for t in m.tests:
             if t not in tests:
-                problems.append(f"{m.name}: test {t} is not registered in Testing/")
+                problems.append(f"{m.name}: test {t} is not registered")
     return problems
 
 
@@ -132,11 +133,15 @@ def run(cmd, log, timeout=None):
             return "timeout"
 
 
-def build(work, targets, jobs, log):
+def configure(work, log):
+    """Configures the scratch build (again, so that CTest lists the tests of the tree as it is)."""
     src, bld = work / "src", work / "build"
-    if not (bld / "CMakeCache.txt").exists():
-        if run(NICE + ["cmake", "-S", str(src), "-B", str(bld), "-DCMAKE_BUILD_TYPE=Release"], log):
-            return False
+    return run(NICE + ["cmake", "-S", str(src), "-B", str(bld), "-DCMAKE_BUILD_TYPE=Release"],
+               log) == 0
+
+
+def build(work, targets, jobs, log):
+    bld = work / "build"
     return run(NICE + ["cmake", "--build", str(bld), f"-j{jobs}", "--target"] + sorted(targets),
                log) == 0
 
@@ -165,6 +170,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--list", action="store_true")
     ap.add_argument("--check", action="store_true")
+    ap.add_argument("--build-dir", type=pathlib.Path, default=ROOT / "build",
+                    help="with --check: the configured build whose tests are listed")
     ap.add_argument("--only", nargs="+", metavar="NAME")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--timeout", type=int, default=300)
@@ -184,11 +191,11 @@ def main():
             print(f"{m.name:44s} {m.file:48s} {' '.join(m.tests)}")
         print(f"{len(mutations)} mutations")
         return 0
-    problems = check(ROOT, MUTATIONS)
-    if problems:
-        print("The mutation list does not match the tree:\n  " + "\n  ".join(problems))
-        return 2
     if args.check:
+        problems = check(ROOT, MUTATIONS, registered_tests(args.build_dir.resolve()))
+        if problems:
+            print("The mutation list does not match the tree:\n  " + "\n  ".join(problems))
+            return 2
         print(f"{len(MUTATIONS)} mutations: every original snippet occurs exactly once, every "
               "test is registered")
         return 0
@@ -198,7 +205,14 @@ def main():
     sync_tree(ROOT, work / "src")
     log = work / "mutation.log"
     log.write_text("")
-    tests = registered_tests()
+    if not configure(work, log):
+        print(f"the scratch tree does not configure: see {log}")
+        return 1
+    tests = registered_tests(work / "build")
+    problems = check(ROOT, MUTATIONS, tests)
+    if problems:
+        print("The mutation list does not match the tree:\n  " + "\n  ".join(problems))
+        return 2
     needed = sorted({t for m in mutations for t in m.tests})
     print(f"scratch tree {work / 'src'}, build {work / 'build'}, log {log}")
     t0 = time.time()

@@ -7,19 +7,19 @@ from collections import namedtuple
 
 Mutation = namedtuple("Mutation", "name file original replacement tests")
 
-GL = ["PsiVolumeRender"]
-GLSL = ["IntegrationGLSL"]
-DEGENERATE = ["PsiDegenerateProjections"]
-ORDER = ["PsiVisibilityOrder"]
+GL = ["PsiRepresentations.VolumeRender"]
+GLSL = ["PsiRepresentations.IntegrationGLSL"]
+DEGENERATE = ["PsiRepresentations.DegenerateProjections"]
+ORDER = ["PsiRepresentations.VisibilityOrder"]
 # Geometry: the degenerate-projection test (about 10 s) first, then the full image test.
 GEOMETRY = DEGENERATE + GL
 # The fan (Decomposition 'Fan'): the same tests drawn with Shirley and Tuchman's triangles; the
 # default silhouettes never reach the thick vertex or the fan's emission.
-DEGENERATE_FAN = ["PsiDegenerateProjections.fan"]
-GEOMETRY_FAN = DEGENERATE_FAN + ["PsiVolumeRender.fan"]
+DEGENERATE_FAN = ["PsiRepresentations.DegenerateProjections.fan"]
+GEOMETRY_FAN = DEGENERATE_FAN + ["PsiRepresentations.VolumeRender.fan"]
 SEPARATE = ["PsiPython.separate_opacity"]
 TRANSLUCENT = ["PsiPython.translucent_geometry"]
-PEELED = ["PsiTranslucentGeometry"]
+PEELED = ["PsiRepresentations.TranslucentGeometry"]
 SCALAR_RANGES = ["PsiPython.scalar_ranges"]
 
 MUTATIONS = [
@@ -71,7 +71,7 @@ MUTATIONS = [
              DEGENERATE + DEGENERATE_FAN),
     Mutation("table_class4_roles", "Core/PsiProjectionClasses.cxx",
              "r.p = { { o[0], o[1], pa, pb } };", "r.p = { { pa, pb, o[0], o[1] } };",
-             ["PsiMath"] + DEGENERATE),
+             ["PsiCore.Math"] + DEGENERATE),
     # --- Geometry shader: classification and emission per class (Shaders/PsiProjectionClassesGS,
     # PsiVolumeGS; Maximo et al. 2010 §3.2).
     # --- Silhouettes and ray segments (Shaders/PsiProjectionClassesGS emitSilhouette,
@@ -167,6 +167,17 @@ MUTATIONS = [
     Mutation("separate_opacity_discard_on_color", "Shaders/PsiSeparateOpacityGS.glsl",
              "dmin = min(min(vsOpacity[0].x, vsOpacity[0].y), min(vsOpacity[0].z, vsOpacity[0].w));",
              "dmin = smin;", SEPARATE),
+    # --- The frame plan (Representations/PsiFramePlan.cxx): each effect and table exactly when
+    # the scene calls for it.
+    Mutation("plan_discard_with_per_fragment_isosurfaces", "Representations/PsiFramePlan.cxx",
+             "f.EarlyDiscard = s.EarlyDiscard && facts.ZeroOpacity && (f.IsoCount == 0 || f.IsoTriangles);",
+             "f.EarlyDiscard = s.EarlyDiscard && facts.ZeroOpacity;", ["PsiRepresentations.FramePlan"]),
+    Mutation("plan_prefix_table_not_read", "Representations/PsiFramePlan.cxx",
+             "plan.Tables.OpacityPrefix = f.EarlyDiscard;", "plan.Tables.OpacityPrefix = false;",
+             ["PsiRepresentations.FramePlan"]),
+    Mutation("plan_scene_depth_only_when_sampled", "Representations/PsiFramePlan.cxx",
+             "plan.SceneDepth = facts.SceneOpaque || f.NearClip || f.OpaqueClip;",
+             "plan.SceneDepth = f.NearClip || f.OpaqueClip;", ["PsiRepresentations.FramePlan"]),
     # --- Translucent geometry with depth peeling for volumes (Representations/PsiDepthPeelingCalls,
     # PsiRenderTarget).
     Mutation("peeling_stages_ignored", "Representations/PsiDepthPeelingCalls.cxx",
@@ -188,7 +199,7 @@ MUTATIONS = [
     Mutation("time_step_gathers_mesh", "Representations/PsiMeshBuffers.cxx",
              "  return { { ug->GetPoints(), ug->GetCells(), psi::CellTypesOf(ug) } };",
              "  return { { input, nullptr, nullptr } };", GL),
-    Mutation("opaque_props_without_data", "Representations/PsiRenderTarget.cxx",
+    Mutation("opaque_props_without_data", "Representations/PsiSceneQueries.cxx",
              "    if (!b || !vtkMath::AreBoundsInitialized(b))", "    if (!b)", GL),
     Mutation("pixel_ray_origin_fixed", "Shaders/PsiRaySegmentsGS.glsl",
              "  vec4 numX = -(vec4(pixelRayOrigin[1], 0.0) * planes);", "  vec4 numX = vec4(0.0);",
@@ -212,7 +223,7 @@ MUTATIONS = [
              "includePoint(mix(viewP[j], viewP[i], di / (di - dj)), lo, hi);", GL),
     Mutation("time_step_keeps_gradients", "Representations/PsiMeshBuffers.cxx",
              "  this->UploadPoints(renWin);\n  this->GradientsOnGPU = false;\n  return true;",
-             "  this->UploadPoints(renWin);\n  return true;", ["PsiIsosurfaces"]),
+             "  this->UploadPoints(renWin);\n  return true;", ["PsiRepresentations.Isosurfaces"]),
     Mutation("near_cull_needs_two_in_front", "Shaders/PsiNearClipGS.glsl",
              "nearClipped = inFront > 0;", "nearClipped = inFront > 1;", GL),
     Mutation("near_box_clamped_too_far", "Shaders/PsiNearClipGS.glsl",
@@ -237,20 +248,20 @@ MUTATIONS = [
     Mutation("iso_eye_piece_first", "Shaders/PsiIsoTrianglesGS.glsl",
              "  for (int j = last + 1; j > e; --j)\n",
              "  emitPiece(e, smin, smax, nearClipped);\n  for (int j = last + 1; j > e; --j)\n",
-             ["PsiIsosurfaces"]),
+             ["PsiRepresentations.Isosurfaces"]),
     Mutation("iso_surface_at_wrong_end", "Shaders/PsiIsoTrianglesGS.glsl",
-             "emitSurface(j - 1);", "emitSurface(j);", ["PsiIsosurfaces"]),
+             "emitSurface(j - 1);", "emitSurface(j);", ["PsiRepresentations.Isosurfaces"]),
     Mutation("iso_parallel_eye_side", "Shaders/PsiIsoTrianglesGS.glsl",
              "(gradient.z < 0.0 ? -big : big)", "(gradient.z < 0.0 ? big : -big)",
-             ["PsiIsosurfaces"]),
+             ["PsiRepresentations.Isosurfaces"]),
     # --- Psi table and pre-integration table (Moreland & Angel 2004 §4; Röttger et al. 2000 §4).
     Mutation("psi_table_lookup_unwarped", "Core/PsiTable.cxx",
-             "return 1.0 - std::sqrt(std::max(1.0 - gamma, 0.0));", "return gamma;", ["PsiMath"]),
+             "return 1.0 - std::sqrt(std::max(1.0 - gamma, 0.0));", "return gamma;", ["PsiCore.Math"]),
     Mutation("psi_table_arguments_swapped", "Core/PsiTable.cxx",
              "static_cast<float>(Psi(taubD, taufD));", "static_cast<float>(Psi(taufD, taubD));",
-             ["PsiMath"]),
+             ["PsiCore.Math"]),
     Mutation("psi_table_warp_inverse", "Core/PsiTable.cxx",
-             "1.0 / ((1.0 - u) * (1.0 - u)) - 1.0", "1.0 / (1.0 - u) - 1.0", ["PsiMath"]),
+             "1.0 / ((1.0 - u) * (1.0 - u)) - 1.0", "1.0 / (1.0 - u) - 1.0", ["PsiCore.Math"]),
     Mutation("preintegration_back_to_front", "Core/PsiPreIntegrationTable.cxx",
              "acc = Over(acc, IntegrateWithPsi(seg, psiValue));",
              "acc = Over(IntegrateWithPsi(seg, psiValue), acc);", GL),
@@ -274,9 +285,9 @@ MUTATIONS = [
              "    drawChunk(at, count);", "    drawChunk(0, count);", GL),
     Mutation("borrowed_cells_keep_nonfinite", "Core/PsiTetMesh.cxx",
              "std::find(pointFinite.begin(), pointFinite.end(), 0) != pointFinite.end()", "false",
-             ["TetMesh"]),
+             ["PsiCore.TetMesh"]),
     Mutation("borrowed_cells_storage_misread", "Core/PsiTetMesh.h",
-             "GetDataTypeSize() == 8", "GetDataTypeSize() == 4", ["TetMesh"]),
+             "GetDataTypeSize() == 8", "GetDataTypeSize() == 4", ["PsiCore.TetMesh"]),
     Mutation("centroid_distance_ignores_z", "Core/PsiVisibilitySort.cxx",
              "d = dx * dx + dy * dy + dz * dz;", "d = dx * dx + dy * dy;", ORDER),
     Mutation("centroid_front_to_back", "Core/PsiVisibilitySort.cxx",
@@ -287,64 +298,64 @@ MUTATIONS = [
              "                             static_cast<uint64_t>(n - 1 - i);", ORDER),
     Mutation("mpvonc_behind_relation_inverted", "Core/PsiMPVONCSort.cxx",
              "return (so > 0) == (se > 0) ? NeighborBehind : NeighborInFront;",
-             "return (so > 0) == (se > 0) ? NeighborInFront : NeighborBehind;", ["MPVONC"]),
+             "return (so > 0) == (se > 0) ? NeighborInFront : NeighborBehind;", ["PsiCore.MPVONC"]),
     Mutation("mpvonc_one_sided_relation", "Core/PsiMPVONCSort.cxx",
              "packed |= PackRelation(static_cast<int8_t>(-RelationAt(decided[nb], j)), f);",
-             "packed |= PackRelation(RelationAt(decided[nb], j), f);", ["MPVONC"]),
+             "packed |= PackRelation(RelationAt(decided[nb], j), f);", ["PsiCore.MPVONC"]),
     Mutation("mpvonc_nearest_ready_first", "Core/PsiMPVONCSort.cxx",
              "std::priority_queue<uint64_t, std::vector<uint64_t>, std::greater<uint64_t>> ready(\n"
              "    std::greater<uint64_t>(), std::move(heap));",
              "std::priority_queue<uint64_t, std::vector<uint64_t>, std::less<uint64_t>> ready(\n"
-             "    std::less<uint64_t>(), std::move(heap));", ["MPVONC"]),
+             "    std::less<uint64_t>(), std::move(heap));", ["PsiCore.MPVONC"]),
     Mutation("mpvonc_edge_on_faces_ordered", "Core/PsiMPVONCSort.cxx",
-             "if (so == 0 || !(std::abs(se) > 1e-10 * scale))", "if (so == 0)", ["MPVONC"]),
+             "if (so == 0 || !(std::abs(se) > 1e-10 * scale))", "if (so == 0)", ["PsiCore.MPVONC"]),
     Mutation("mpvonc_parallel_direction_sign", "Core/PsiMPVONCSort.cxx",
              "e[k] = parallel ? -eye[k] : eye[k] - a[k];", "e[k] = parallel ? eye[k] : eye[k] - a[k];",
-             ["MPVONC"]),
+             ["PsiCore.MPVONC"]),
     Mutation("mpvonc_tie_break_reversed", "Core/PsiMPVONCSort.cxx",
              "return (static_cast<uint64_t>(~u) << 32) | id;",
-             "return (static_cast<uint64_t>(~u) << 32) | (0xffffffffu - id);", ["MPVONC"] + ORDER),
+             "return (static_cast<uint64_t>(~u) << 32) | (0xffffffffu - id);", ["PsiCore.MPVONC"] + ORDER),
     # --- Conforming tetrahedralization (Filters/): diagonal choice, degenerate removal.
     Mutation("cone_apex_max_id", "Filters/PsiConformingDiagonals.cxx",
              "const vtkIdType apex = *std::min_element(faces.Ids.begin(), faces.Ids.end());",
              "const vtkIdType apex = *std::max_element(faces.Ids.begin(), faces.Ids.end());",
-             ["ConformingTetrahedralize"]),
+             ["PsiFilters.ConformingTetrahedralize"]),
     Mutation("face_fan_from_first_vertex", "Filters/PsiConformingDiagonals.cxx",
              "const vtkIdType k = std::min_element(p, p + n) - p;", "const vtkIdType k = 0;",
-             ["ConformingTetrahedralize"]),
+             ["PsiFilters.ConformingTetrahedralize"]),
     Mutation("five_split_parity_ignored", "Filters/PsiConformingDiagonals.cxx",
              "(ijkSum % 2 == 0) ? FiveEven : FiveOdd;", "(ijkSum % 2 == 0) ? FiveEven : FiveEven;",
-             ["ConformingTetrahedralize"]),
+             ["PsiFilters.ConformingTetrahedralize"]),
     Mutation("flat_tetrahedra_kept", "Filters/PsiOrientedTetrahedra.cxx",
              "      ++this->Removed;\n      return;", "      ++this->Removed;\n      break;",
-             ["ConformingTetrahedralize"]),
+             ["PsiFilters.ConformingTetrahedralize"]),
     Mutation("negative_tetrahedra_not_flipped", "Filters/PsiOrientedTetrahedra.cxx",
-             "std::swap(c, d);", "std::swap(c, c);", ["ConformingTetrahedralize"]),
+             "std::swap(c, d);", "std::swap(c, c);", ["PsiFilters.ConformingTetrahedralize"]),
     # --- The .off parser (Readers/).
     Mutation("off_index_equal_to_count_accepted", "Readers/PsiOFFParser.cxx",
-             "ids[k] >= this->NumberOfVertices", "ids[k] > this->NumberOfVertices", ["OFFReader"]),
+             "ids[k] >= this->NumberOfVertices", "ids[k] > this->NumberOfVertices", ["PsiReaders.OFFReader"]),
     Mutation("off_trailing_data_accepted", "Readers/PsiOFFParser.cxx",
              "  if (this->Cursor.NextContentLine(b, e))\n  {",
-             "  if (false && this->Cursor.NextContentLine(b, e))\n  {", ["OFFReader"]),
+             "  if (false && this->Cursor.NextContentLine(b, e))\n  {", ["PsiReaders.OFFReader"]),
     Mutation("off_keyword_counts_same_line", "Readers/PsiOFFParser.cxx",
-             "    first = 1;\n    if (n == 1)", "    first = 0;\n    if (n == 1)", ["OFFReader"]),
+             "    first = 1;\n    if (n == 1)", "    first = 0;\n    if (n == 1)", ["PsiReaders.OFFReader"]),
     Mutation("off_record_extra_values_accepted", "Readers/PsiOFFParser.cxx",
              "  if (n != 4)\n  {\n    std::ostringstream msg;",
-             "  if (n < 4)\n  {\n    std::ostringstream msg;", ["OFFReader"]),
+             "  if (n < 4)\n  {\n    std::ostringstream msg;", ["PsiReaders.OFFReader"]),
     # --- Exact adaptive sampling: the nodes (Core/PsiTransferFunctionNodes), the early-discard
     # prefix that sees spikes between samples, and the piece's node interval in the shader.
     Mutation("adaptive_piece_interval_off_by_one", "Shaders/PsiAdaptiveFS.glsl",
              "tfPiece = nStep > 0 ? ni - 1 : ni;", "tfPiece = nStep > 0 ? ni : ni;",
-             ["PsiIsosurfaces"]),
+             ["PsiRepresentations.Isosurfaces"]),
     Mutation("adaptive_search_descending_bound", "Shaders/PsiAdaptiveFS.glsl",
              "int ni = ds >= 0.0 ? lo : lo - 1;", "int ni = ds >= 0.0 ? lo : lo;",
-             ["PsiIsosurfaces"]),
+             ["PsiRepresentations.Isosurfaces"]),
     Mutation("nodes_step_not_split", "Core/PsiTransferFunctionNodes.cxx",
              "if (Distance(left, right) > 1e-6)", "if (Distance(left, right) > 1e6)",
-             ["TransferFunctionNodes"]),
+             ["PsiCore.TransferFunctionNodes"]),
     Mutation("nodes_refinement_too_coarse", "Core/PsiTransferFunctionNodes.cxx",
              "      if (d > tolerance)", "      if (d > 100 * tolerance)",
-             ["TransferFunctionNodes"]),
+             ["PsiCore.TransferFunctionNodes"]),
     # --- Scalars as fractions of their range (psi::UnitScalar): constant fields, denormal widths.
     Mutation("nodes_uploaded_raw", "Representations/PsiAdaptiveNodes.cxx",
              "unit[i] = static_cast<float>(psi::UnitScalar(this->Range, this->Nodes.Scalars[i]));",
@@ -355,9 +366,9 @@ MUTATIONS = [
     Mutation("points_scalar_in_float", "Core/PsiTetMesh.cxx",
              "m.Points4[4 * i + 3] = UnitFloat(m.ScalarRange, raw.S[i]);",
              "m.Points4[4 * i + 3] = UnitFloat(m.ScalarRange, static_cast<float>(raw.S[i]));",
-             ["TetMesh"] + SCALAR_RANGES),
+             ["PsiCore.TetMesh"] + SCALAR_RANGES),
     Mutation("prefix_spike_between_samples_ignored", "Core/PsiTransferFunctionAnalysis.cxx",
              "if (n[1] > 0 && x >= 0 && x <= table.Size - 1)",
              "if (n[1] > 1 && x >= 0 && x <= table.Size - 1)",
-             ["TransferFunctionNodes"]),
+             ["PsiCore.TransferFunctionNodes"]),
 ]

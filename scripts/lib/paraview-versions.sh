@@ -13,6 +13,21 @@ installed_paraview_series() {
   [ -z "$v" ] || paraview_series_of "$v"
 }
 
+# The series this Debian ships: the installed paraview package's, else the one its release
+# carries (from /etc/os-release: 12 -> 5.11, 13 -> 5.13, unstable -> 6.1); empty when unknown.
+system_paraview_series() {
+  local v
+  v=$(installed_paraview_series)
+  if [ -z "$v" ] && [ -r /etc/os-release ]; then
+    case "$(. /etc/os-release && echo "${VERSION_ID:-}:${VERSION_CODENAME:-}")" in
+      12:*|*:bookworm) v=5.11 ;;
+      13:*|*:trixie) v=5.13 ;;
+      :sid|:forky) v=6.1 ;;
+    esac
+  fi
+  echo "$v"
+}
+
 # The Debian suite that ships ParaView series $1.
 suite_of() {
   case "$1" in

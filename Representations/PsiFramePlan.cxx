@@ -1,0 +1,91 @@
+#include "PsiFramePlan.h"
+
+#include "PsiIntegrationMethods.h"
+#include "vtkPsiVolumeMapper.h"
+
+namespace
+{
+const psi::IntegrationMethodInfo& MethodInfo(int method)
+{
+  return psi::GetIntegrationMethodInfo(static_cast<psi::Method>(method));
+}
+
+// Röttger's table tabulates one scalar for color and opacity: with a separate opacity array full
+// pre-integration draws as partial pre-integration (the tables and the program both follow).
+int DrawnMethod(const PsiFrameSettings& s, const PsiSceneFacts& facts)
+{
+  return facts.SeparateOpacity && MethodInfo(s.Method).NeedsPreIntegrationTable
+    ? static_cast<int>(psi::Method::PartialPreIntegration)
+    : s.Method;
+}
+
+// Marching tetrahedra when asked for, or under 'Auto' when early discard applies (plain
+// contours: only the surfaces and the visible pieces are drawn), and only when the composed
+// geometry shader fits the driver's output limits; else per fragment.
+bool IsoTriangles(const PsiFrameSettings& s, const PsiSceneFacts& facts, psi::ShaderFeatures f)
+{
+  if (!MayUseIsoTriangles(s, facts))
+  {
+    return false;
+  }
+  f.IsoTriangles = true;
+  return psi::FitsGeometryOutputLimits(
+    f, facts.MaxGeometryOutputVertices, facts.MaxGeometryOutputComponents);
+}
+} // namespace
+
+bool NeedsAdaptiveNodes(const PsiFrameSettings& s)
+{
+  return s.AdaptiveSampling != vtkPsiVolumeMapper::ADAPTIVE_OFF;
+}
+
+bool MayUseIsoTriangles(const PsiFrameSettings& s, const PsiSceneFacts& facts)
+{
+  return s.IsoCount > 0 &&
+    (s.IsosurfaceMethod == vtkPsiVolumeMapper::ISO_MARCHING_TETRAHEDRA ||
+      (s.IsosurfaceMethod == vtkPsiVolumeMapper::ISO_AUTO && s.EarlyDiscard && facts.ZeroOpacity));
+}
+
+PsiFramePlan PlanFrame(const PsiFrameSettings& s, const PsiSceneFacts& facts)
+{
+  PsiFramePlan plan;
+  psi::ShaderFeatures& f = plan.Features;
+  f.Method = DrawnMethod(s, facts);
+  plan.MethodReplaced = f.Method != s.Method;
+  f.ExactSegments = !facts.Parallel && s.ExactPerspectiveSegments;
+  // within depth peeling, the silhouettes' exact segments are clipped to the pass's intervals
+  f.DepthPeel = facts.DepthPeeled;
+  f.Silhouette = psi::SilhouetteChosen(s.Decomposition) || f.DepthPeel;
+  f.NearClip = facts.NearPlaneCuts;
+  f.OpaqueClip = facts.OpaqueOverlaps;
+  f.IsoCount = s.IsoCount;
+  f.IsoSmooth = f.IsoCount > 0 && s.IsosurfaceShading == vtkPsiVolumeMapper::ISO_SMOOTH;
+  f.IsoTriangles = IsoTriangles(s, facts, f);
+  // Early discard (Maximo et al. 2010 §3.5) only when the opacity function has zero regions,
+  // and not with per-fragment isosurfaces (visible where the volume is transparent; marching
+  // tetrahedra still emit the surfaces of a cell whose volume pieces are dropped).
+  f.EarlyDiscard = s.EarlyDiscard && facts.ZeroOpacity && (f.IsoCount == 0 || f.IsoTriangles);
+  // Adaptive sampling (Moreland's dissertation §4.3) when on, or under 'Auto' when the sampled
+  // table misses the function's nodes; never when the nodes cannot follow the function.
+  f.Adaptive = NeedsAdaptiveNodes(s) && facts.NodesFaithful &&
+    (s.AdaptiveSampling == vtkPsiVolumeMapper::ADAPTIVE_ON ||
+      facts.TableDeviation > s.AdaptiveAutoDeviation);
+  f.MaxAdaptiveNodes = s.MaxAdaptiveNodes;
+  // A separate opacity array: drawn with silhouettes, whose fragments carry both scalars; not
+  // with adaptive sampling (nodes of one scalar); early discard judged on the opacity scalar,
+  // per cell, so not per marching-tetrahedra piece.
+  f.SeparateOpacity = facts.SeparateOpacity;
+  if (f.SeparateOpacity)
+  {
+    f.Silhouette = true;
+    f.Adaptive = false;
+    f.EarlyDiscard = f.EarlyDiscard && !f.IsoTriangles;
+  }
+  plan.Tables.OpacityPrefix = f.EarlyDiscard;
+  plan.Tables.PsiTable = MethodInfo(f.Method).NeedsPsiTable;
+  plan.Tables.PreIntegration = MethodInfo(f.Method).NeedsPreIntegrationTable;
+  plan.Tables.AdaptiveNodes = f.Adaptive;
+  plan.Tables.Gradients = f.IsoSmooth;
+  plan.SceneDepth = facts.SceneOpaque || f.NearClip || f.OpaqueClip;
+  return plan;
+}

@@ -1,0 +1,74 @@
+// PsiFramePlan: what one frame simulates, decided in one place from the user's settings and the
+// facts of the scene, with no GL call and no table in sight: "simulate only the effects a scene
+// calls for". The mapper gathers the facts (camera, other props, depth peeling, the sampled
+// transfer function's zero regions and its adaptive nodes, the driver's geometry-shader limits),
+// asks psi::PlanFrame, then updates and binds only the tables the plan names, and composes the
+// program for the plan's features. GL-free, tested without a context (TestFramePlan).
+#ifndef PsiFramePlan_h
+#define PsiFramePlan_h
+
+#include "PsiShaderComposer.h"
+#include "PsiVolumeRepresentationsModule.h"
+
+/// The mapper's settings that decide a frame (vtkPsiVolumeMapper's properties, their values).
+struct PsiFrameSettings
+{
+  int Method = 1;                  ///< IntegrationMethod (psi::Method)
+  bool ExactPerspectiveSegments = true;
+  int Decomposition = 2;           ///< vtkPsiVolumeMapper::Decompositions
+  bool EarlyDiscard = true;
+  int IsoCount = 0;                ///< isovalues drawn
+  int IsosurfaceMethod = 2;        ///< vtkPsiVolumeMapper::IsosurfaceMethods
+  int IsosurfaceShading = 1;       ///< vtkPsiVolumeMapper::IsosurfaceShadings
+  int AdaptiveSampling = 2;        ///< vtkPsiVolumeMapper::AdaptiveSamplingModes
+  int MaxAdaptiveNodes = 64;
+  double AdaptiveAutoDeviation = 1.0 / 255; ///< 'Auto' samples adaptively beyond this
+};
+
+/// What the frame finds in the scene and in its data.
+struct PsiSceneFacts
+{
+  bool Parallel = false;             ///< parallel projection
+  bool NearPlaneCuts = false;        ///< the near plane cuts the mesh's bounds
+  bool OpaqueOverlaps = false;       ///< opaque geometry overlaps the volume (psi::OpaqueGeometryOverlaps)
+  bool SceneOpaque = false;          ///< the scene has opaque geometry anywhere
+  bool DepthPeeled = false;          ///< drawn within a depth-peeling stage (not Plain)
+  bool SeparateOpacity = false;      ///< the mesh carries a separate opacity array
+  bool ZeroOpacity = false;          ///< the opacity function has zero regions over the range
+  bool NodesFaithful = true;         ///< the adaptive nodes follow the function (PsiAdaptiveNodes)
+  double TableDeviation = 0;         ///< how far the sampled table misses the nodes
+  int MaxGeometryOutputVertices = 0; ///< GL_MAX_GEOMETRY_OUTPUT_VERTICES (0: not asked)
+  int MaxGeometryOutputComponents = 0; ///< GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS
+};
+
+struct PsiFramePlan
+{
+  psi::ShaderFeatures Features;
+  /// The tables the features read besides the transfer function (always read).
+  struct
+  {
+    bool OpacityPrefix = false;  ///< early discard's prefix counts
+    bool PsiTable = false;       ///< partial pre-integration's Psi table
+    bool PreIntegration = false; ///< Röttger's 3D table
+    bool AdaptiveNodes = false;  ///< the nodes as uniforms
+    bool Gradients = false;      ///< smoothed point gradients (smooth isosurfaces)
+  } Tables;
+  /// Copy the scene's depth for the depth test (opaque geometry, or the shaders sample it).
+  bool SceneDepth = false;
+  /// Full pre-integration asked for with a separate opacity array draws as partial
+  /// pre-integration: Röttger's table tabulates one scalar for color and opacity.
+  bool MethodReplaced = false;
+};
+
+/// The frame's plan (the rules are commented where they are applied, PsiFramePlan.cxx).
+PSIVOLUMEREPRESENTATIONS_EXPORT PsiFramePlan PlanFrame(
+  const PsiFrameSettings& settings, const PsiSceneFacts& facts);
+/// Whether the scene calls for the adaptive nodes to be computed before the plan: adaptive
+/// sampling is on or 'Auto' (the nodes' deviation decides 'Auto').
+PSIVOLUMEREPRESENTATIONS_EXPORT bool NeedsAdaptiveNodes(const PsiFrameSettings& settings);
+/// Whether isosurfaces may be drawn by marching tetrahedra (then the facts need the driver's
+/// geometry-shader limits).
+PSIVOLUMEREPRESENTATIONS_EXPORT bool MayUseIsoTriangles(
+  const PsiFrameSettings& settings, const PsiSceneFacts& facts);
+
+#endif

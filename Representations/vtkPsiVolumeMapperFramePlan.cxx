@@ -1,0 +1,164 @@
+// vtkPsiVolumeMapper's side of the frame plan (PsiFramePlan.h): the transfer function sampled
+// first (every method reads it, and its zero regions and nodes are facts of the scene), the
+// settings and the facts handed to psi's PlanFrame, what the last frame used, and then only the
+// tables the plan names. The rest of the mapper is in vtkPsiVolumeMapper.cxx.
+#include "vtkPsiVolumeMapper.h"
+#include "vtkPsiVolumeMapperInternals.h"
+
+#include "PsiFramePlan.h"
+#include "PsiSceneQueries.h"
+#include "PsiShaderParameters.h"
+
+#include "vtkPVLogger.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
+
+#include <string>
+#include <vector>
+
+namespace
+{
+// The feature defines of a plan on one line of the log.
+std::string OneLine(std::string defines)
+{
+  for (char& c : defines)
+  {
+    c = c == '\n' ? ' ' : c;
+  }
+  return defines;
+}
+} // namespace
+
+// The sampled transfer function, and the adaptive nodes when adaptive sampling may be used.
+PsiTableSources vtkPsiVolumeMapper::UpdateTransferFunction(
+  vtkOpenGLRenderWindow* renWin, vtkVolume* vol)
+{
+  Internals& I = *this->Impl;
+  const psi::TetMesh& mesh = I.Mesh.GetMesh();
+  PsiTableSources in;
+  in.Property = vol->GetProperty();
+  in.ScalarRange = mesh.ScalarRange;
+  // with a separate opacity array the attenuation is sampled over the opacity scalars' range
+  in.OpacityRange = mesh.Opacity.empty() ? nullptr : mesh.OpacityRange;
+  in.Samples = this->TransferFunctionSamples;
+  in.Transfer = &I.Tables.Transfer;
+  in.LengthAxis = psi::MakePreIntegrationLengthAxis(mesh.MinEdgeLength, mesh.MaxEdgeLength);
+  in.MaxNodes = MaxAdaptiveNodes;
+  in.NodeTolerance = AdaptiveNodeTolerance;
+  std::vector<PsiGpuTable*> first{ &I.Tables.Transfer };
+  if (NeedsAdaptiveNodes(this->FrameSettings()))
+  {
+    first.push_back(&I.AdaptiveNodes);
+  }
+  psi::UpdateTables(first, renWin, in);
+  return in;
+}
+
+PsiFrameSettings vtkPsiVolumeMapper::FrameSettings() const
+{
+  PsiFrameSettings s;
+  s.Method = this->IntegrationMethod;
+  s.ExactPerspectiveSegments = this->ExactPerspectiveSegments;
+  s.Decomposition = this->Decomposition;
+  s.EarlyDiscard = this->EarlyDiscard;
+  s.IsoCount = this->Isosurfaces.Count();
+  s.IsosurfaceMethod = this->IsosurfaceMethod;
+  s.IsosurfaceShading = this->IsosurfaceShading;
+  s.AdaptiveSampling = this->AdaptiveSampling;
+  s.MaxAdaptiveNodes = MaxAdaptiveNodes;
+  s.AdaptiveAutoDeviation = AdaptiveAutoDeviation;
+  return s;
+}
+
+// Everything the plan needs to know, asked here: the camera, the other props, the depth-peeling
+// stage, the data, the sampled function, and the driver's geometry-shader limits.
+PsiSceneFacts vtkPsiVolumeMapper::SceneFacts(
+  vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam)
+{
+  Internals& I = *this->Impl;
+  PsiSceneFacts facts;
+  facts.Parallel = cam.Parallel;
+  facts.NearPlaneCuts = cam.NearPlaneCuts(I.Mesh.GetMesh().Bounds);
+  facts.OpaqueOverlaps = psi::OpaqueGeometryOverlaps(ren, vol);
+  facts.SceneOpaque = facts.OpaqueOverlaps || psi::SceneHasOpaqueGeometry(ren);
+  facts.DepthPeeled = I.Peeling.GetStage() > PsiDepthPeelingCalls::Plain;
+  facts.SeparateOpacity = !I.Mesh.GetMesh().Opacity.empty();
+  facts.ZeroOpacity = I.Tables.Transfer.HasZeroOpacity();
+  facts.NodesFaithful = I.AdaptiveNodes.IsFaithful();
+  facts.TableDeviation = I.AdaptiveNodes.GetTableDeviation();
+  if (MayUseIsoTriangles(this->FrameSettings(), facts))
+  {
+    glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &facts.MaxGeometryOutputVertices);
+    glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &facts.MaxGeometryOutputComponents);
+  }
+  return facts;
+}
+
+// What the last frame used (the getters' read-outs), and the one warning a plan may carry.
+void vtkPsiVolumeMapper::NotePlan(const PsiFramePlan& plan)
+{
+  Internals& I = *this->Impl;
+  const psi::ShaderFeatures& f = plan.Features;
+  vtkVLogF(PARAVIEW_LOG_RENDERING_VERBOSITY(), "Psi Volume: plan %s", OneLine(f.Key()).c_str());
+  this->LastUsedNearPlaneClipping = f.NearClip;
+  this->LastUsedOpaqueClipping = f.OpaqueClip;
+  this->LastUsedIsosurfaceMethod =
+    f.IsoCount == 0 ? -1 : f.IsoTriangles ? ISO_MARCHING_TETRAHEDRA : ISO_PER_FRAGMENT;
+  this->LastUsedEarlyDiscard = f.EarlyDiscard;
+  this->LastUsedAdaptiveSampling = f.Adaptive;
+  this->LastNumberOfAdaptiveNodes = f.Adaptive ? I.AdaptiveNodes.Size() : 0;
+  const std::string note = plan.MethodReplaced
+    ? "Psi Volume: full pre-integration tabulates one scalar for color and opacity; with a "
+      "separate opacity array it draws with partial pre-integration."
+    : "";
+  if (!note.empty() && note != I.LastFeatureNote)
+  {
+    vtkWarningMacro(<< note);
+  }
+  I.LastFeatureNote = note;
+}
+
+// The tables the plan's features read, in the order they are bound.
+std::vector<PsiGpuTable*> vtkPsiVolumeMapper::TablesOf(const PsiFramePlan& plan)
+{
+  Internals& I = *this->Impl;
+  std::vector<PsiGpuTable*> tables{ &I.Tables.Transfer };
+  if (plan.Tables.OpacityPrefix)
+  {
+    tables.push_back(&I.Tables.OpacityPrefix);
+  }
+  if (plan.Tables.PsiTable)
+  {
+    tables.push_back(&I.Tables.PsiTable);
+  }
+  if (plan.Tables.PreIntegration)
+  {
+    tables.push_back(&I.Tables.PreIntegration);
+  }
+  if (plan.Tables.AdaptiveNodes)
+  {
+    tables.push_back(&I.AdaptiveNodes);
+  }
+  return tables;
+}
+
+// Only the tables the plan names (and the mesh's smoothed gradients when it asks for them).
+void vtkPsiVolumeMapper::UpdateTables(
+  vtkOpenGLRenderWindow* renWin, const PsiFramePlan& plan, const PsiTableSources& sources)
+{
+  vtkVLogScopeF(PARAVIEW_LOG_RENDERING_VERBOSITY(), "Psi Volume: tables");
+  Internals& I = *this->Impl;
+  const bool rebuildPre =
+    plan.Tables.PreIntegration && I.Tables.PreIntegration.NeedsUpdate(sources);
+  psi::UpdateTables(this->TablesOf(plan), renWin, sources);
+  if (rebuildPre)
+  {
+    // Röttger's table belongs to one transfer function: rebuilt on every edit (timed)
+    this->Stats.LastPreIntegrationSeconds = I.Tables.PreIntegration.GetLastBuildSeconds();
+  }
+  if (plan.Tables.Gradients)
+  {
+    I.Mesh.UpdateGradients(renWin);
+  }
+}

@@ -1,0 +1,52 @@
+// vtkPsiVolumeMapper's parts (private to the mapper's own files): each owns one job of the frame
+// and its GPU resources (docs/architecture.md).
+#ifndef vtkPsiVolumeMapperInternals_h
+#define vtkPsiVolumeMapperInternals_h
+
+#include "vtkPsiVolumeMapper.h"
+
+#include "PsiAdaptiveNodes.h"
+#include "PsiComputeProjector.h"
+#include "PsiDepthPeelingCalls.h"
+#include "PsiGeometryProjector.h"
+#include "PsiMeshBuffers.h"
+#include "PsiRenderTarget.h"
+#include "PsiTransferTextures.h"
+#include "PsiVisibilityOrder.h"
+
+#include <string>
+
+struct vtkPsiVolumeMapper::Internals
+{
+  PsiMeshBuffers Mesh;
+  PsiVisibilityOrder Order;
+  PsiTransferTables Tables;
+  PsiRenderTarget Target;
+  PsiGeometryProjector Geometry;
+  PsiComputeProjector Compute;
+  PsiDepthPeelingCalls Peeling; // the depth-peeling stage of this call
+
+  // Transfer-function nodes for adaptive sampling, for the property and range they came from.
+  PsiAdaptiveNodes AdaptiveNodes;
+
+  std::string LastWarning;
+  std::string LastFeatureNote; // what a separate opacity array changed, said once
+  vtkWindow* Context = nullptr;
+
+  void Release(vtkWindow* win)
+  {
+    if (this->Context)
+    {
+      this->Mesh.ReleaseGraphicsResources(win);
+      this->Order.ReleaseGraphicsResources(win);
+    }
+    this->Tables.ReleaseGraphicsResources(win);
+    this->Peeling.ReleaseGraphicsResources(win);
+    this->Target.ReleaseGraphicsResources(win);
+    this->Geometry.ReleaseGraphicsResources();
+    this->Compute.ReleaseGraphicsResources(win);
+    this->Context = nullptr;
+  }
+};
+
+#endif

@@ -1,0 +1,41 @@
+# Tests of the Core module (GL-free math), included from Testing/CMakeLists.txt.
+
+# The PTINT truth table and its fan, Psi and the segment integrals against an independent
+# quadrature, the Psi table.
+add_executable(TestPsiMath Cxx/TestPsiMath.cxx)
+target_link_libraries(TestPsiMath PRIVATE PsiVolume::Representations PsiTestSupport)
+add_test(NAME PsiCore.Math COMMAND TestPsiMath)
+
+# Every integration method against the reference of its model; the panel's IntegrationMethod
+# enumeration checked against psi::IntegrationMethodTable().
+add_executable(TestIntegrationMethods Cxx/TestIntegrationMethods.cxx)
+target_link_libraries(TestIntegrationMethods PRIVATE PsiVolume::Representations PsiTestSupport
+  ParaView::VTKExtensionsCore)
+target_compile_definitions(TestIntegrationMethods PRIVATE
+  PSI_REPRESENTATION_XML="${PROJECT_SOURCE_DIR}/XML/PsiVolumeRepresentation.xml")
+add_test(NAME PsiCore.IntegrationMethods COMMAND TestIntegrationMethods
+  "${PROJECT_SOURCE_DIR}/XML/PsiVolumeRepresentation.xml")
+
+# Exact adaptive sampling: the transfer function's nodes, 'Auto', the early-discard prefix.
+add_executable(TestTransferFunctionNodes Cxx/TestTransferFunctionNodes.cxx)
+target_link_libraries(TestTransferFunctionNodes PRIVATE PsiVolume::Core PsiTestSupport
+  VTK::RenderingCore)
+add_test(NAME PsiCore.TransferFunctionNodes COMMAND TestTransferFunctionNodes)
+
+add_executable(TestPixelRays Cxx/TestPixelRays.cxx)
+target_link_libraries(TestPixelRays PRIVATE PsiVolume::Core PsiTestSupport VTK::RenderingCore)
+add_test(NAME PsiCore.PixelRays COMMAND TestPixelRays)
+
+# The renderer's mesh gathering and its reuse of the filter's FaceNeighbors.
+add_executable(TestTetMesh Cxx/TestTetMesh.cxx)
+target_link_libraries(TestTetMesh PRIVATE PsiVolume::Filters PsiVolume::Core VTK::CommonCore
+  VTK::CommonDataModel VTK::CommonExecutionModel VTK::RenderingCore)
+add_test(NAME PsiCore.TetMesh COMMAND TestTetMesh)
+
+# MPVONC's order against CGAL's exact orientation from many views.
+set(CGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE TRUE)
+find_package(CGAL REQUIRED)
+add_executable(TestMPVONC Cxx/TestMPVONC.cxx)
+target_link_libraries(TestMPVONC PRIVATE PsiVolume::Filters PsiVolume::Representations PsiTestSupport
+  CGAL::CGAL VTK::CommonCore VTK::CommonDataModel VTK::CommonExecutionModel)
+add_test(NAME PsiCore.MPVONC COMMAND TestMPVONC)

@@ -1,0 +1,167 @@
+// The frame plan (Representations/PsiFramePlan.h), without a GL context: each effect is planned
+// exactly when the scene calls for it, and each table exactly when a planned feature reads it.
+// The rules: the integration method and its tables; early discard only with zero opacity and not
+// with per-fragment isosurfaces; marching tetrahedra when asked for or under 'Auto' with early
+// discard, and only within the driver's geometry-shader limits; adaptive sampling on, off and
+// 'Auto' against the table's deviation, never with unfaithful nodes; a separate opacity array
+// (silhouettes, no adaptive sampling, full pre-integration drawn as partial); depth peeling
+// (silhouettes); the scene depth copied only when something tests or samples it.
+#include "PsiFramePlan.h"
+#include "PsiIntegrationMethods.h"
+#include "PsiTestCheck.h"
+#include "vtkPsiVolumeMapper.h"
+
+#include <cstdlib>
+
+namespace
+{
+using M = vtkPsiVolumeMapper;
+
+// A scene with nothing special: no isosurfaces, an opacity without zero regions.
+PsiFrameSettings Settings()
+{
+  PsiFrameSettings s;
+  s.Decomposition = M::DECOMPOSITION_SILHOUETTE;
+  return s;
+}
+
+PsiSceneFacts Facts()
+{
+  PsiSceneFacts f;
+  f.MaxGeometryOutputVertices = 256;
+  f.MaxGeometryOutputComponents = 1024;
+  return f;
+}
+
+void TestMethodTables()
+{
+  for (int m = 0; m < psi::NumberOfIntegrationMethods(); ++m)
+  {
+    PsiFrameSettings s = Settings();
+    s.Method = m;
+    const PsiFramePlan plan = PlanFrame(s, Facts());
+    const psi::IntegrationMethodInfo& info = psi::GetIntegrationMethodInfo(psi::Method(m));
+    PSI_CHECK(plan.Features.Method == m, "method %d drawn as %d", m, plan.Features.Method);
+    PSI_CHECK(plan.Tables.PsiTable == info.NeedsPsiTable, "method %d: Psi table", m);
+    PSI_CHECK(plan.Tables.PreIntegration == info.NeedsPreIntegrationTable, "method %d: 3D table", m);
+    PSI_CHECK(!plan.Tables.OpacityPrefix && !plan.Tables.AdaptiveNodes && !plan.Tables.Gradients,
+      "method %d: a table no feature reads", m);
+    PSI_CHECK(!plan.MethodReplaced && !plan.SceneDepth, "method %d: plain scene", m);
+  }
+}
+
+void TestEarlyDiscard()
+{
+  PsiFrameSettings s = Settings();
+  PsiSceneFacts facts = Facts();
+  PSI_CHECK(!PlanFrame(s, facts).Features.EarlyDiscard, "early discard without zero opacity");
+  facts.ZeroOpacity = true;
+  PsiFramePlan plan = PlanFrame(s, facts);
+  PSI_CHECK(plan.Features.EarlyDiscard && plan.Tables.OpacityPrefix, "zero opacity: discard");
+  s.EarlyDiscard = false;
+  PSI_CHECK(!PlanFrame(s, facts).Tables.OpacityPrefix, "early discard switched off");
+  s.EarlyDiscard = true;
+  s.IsoCount = 2;
+  s.IsosurfaceMethod = M::ISO_PER_FRAGMENT;
+  plan = PlanFrame(s, facts);
+  PSI_CHECK(!plan.Features.EarlyDiscard && !plan.Features.IsoTriangles,
+    "per-fragment isosurfaces are seen where the volume is transparent: no discard");
+}
+
+void TestIsosurfaces()
+{
+  PsiFrameSettings s = Settings();
+  PsiSceneFacts facts = Facts();
+  s.IsoCount = 3;
+  PSI_CHECK(!PlanFrame(s, facts).Features.IsoTriangles, "'Auto' without zero opacity");
+  facts.ZeroOpacity = true;
+  PsiFramePlan plan = PlanFrame(s, facts);
+  PSI_CHECK(plan.Features.IsoTriangles && plan.Features.EarlyDiscard, "'Auto' with zero opacity");
+  PSI_CHECK(plan.Tables.Gradients && plan.Features.IsoSmooth, "smooth shading reads gradients");
+  s.IsosurfaceShading = M::ISO_FLAT;
+  PSI_CHECK(!PlanFrame(s, facts).Tables.Gradients, "flat shading needs no gradients");
+  facts.MaxGeometryOutputVertices = 16; // a driver whose budget the pieces exceed
+  PSI_CHECK(MayUseIsoTriangles(s, facts) && !PlanFrame(s, facts).Features.IsoTriangles,
+    "marching tetrahedra beyond the geometry-shader limits");
+  facts = Facts();
+  s.IsosurfaceMethod = M::ISO_MARCHING_TETRAHEDRA;
+  PSI_CHECK(PlanFrame(s, facts).Features.IsoTriangles, "marching tetrahedra asked for");
+  s.IsoCount = 0;
+  PSI_CHECK(!MayUseIsoTriangles(s, facts), "no isovalues: no limits to ask the driver");
+}
+
+void TestAdaptive()
+{
+  PsiFrameSettings s = Settings();
+  PsiSceneFacts facts = Facts();
+  facts.TableDeviation = 0.5 * s.AdaptiveAutoDeviation;
+  PSI_CHECK(!PlanFrame(s, facts).Features.Adaptive, "'Auto' where the table follows the nodes");
+  facts.TableDeviation = 2 * s.AdaptiveAutoDeviation;
+  PsiFramePlan plan = PlanFrame(s, facts);
+  PSI_CHECK(plan.Features.Adaptive && plan.Tables.AdaptiveNodes, "'Auto' where the table misses");
+  facts.NodesFaithful = false;
+  PSI_CHECK(!PlanFrame(s, facts).Features.Adaptive, "nodes that cannot follow the function");
+  facts = Facts();
+  s.AdaptiveSampling = M::ADAPTIVE_ON;
+  PSI_CHECK(PlanFrame(s, facts).Features.Adaptive, "on");
+  s.AdaptiveSampling = M::ADAPTIVE_OFF;
+  facts.TableDeviation = 1;
+  PSI_CHECK(!PlanFrame(s, facts).Features.Adaptive && !NeedsAdaptiveNodes(s), "off");
+}
+
+void TestSeparateOpacityAndPeeling()
+{
+  PsiFrameSettings s = Settings();
+  s.Decomposition = M::DECOMPOSITION_FAN;
+  s.AdaptiveSampling = M::ADAPTIVE_ON;
+  s.Method = static_cast<int>(psi::Method::FullPreIntegration);
+  PsiSceneFacts facts = Facts();
+  PsiFramePlan plan = PlanFrame(s, facts);
+  PSI_CHECK(!plan.Features.Silhouette && plan.Features.Adaptive && plan.Tables.PreIntegration,
+    "fan, adaptive, full pre-integration");
+  facts.SeparateOpacity = true;
+  plan = PlanFrame(s, facts);
+  PSI_CHECK(plan.Features.Silhouette && !plan.Features.Adaptive && !plan.Tables.AdaptiveNodes,
+    "a separate opacity array: silhouettes, no nodes");
+  PSI_CHECK(plan.MethodReplaced && !plan.Tables.PreIntegration && plan.Tables.PsiTable &&
+      plan.Features.Method == static_cast<int>(psi::Method::PartialPreIntegration),
+    "full pre-integration with a separate opacity array draws as partial");
+  facts = Facts();
+  facts.DepthPeeled = true;
+  plan = PlanFrame(s, facts);
+  PSI_CHECK(plan.Features.DepthPeel && plan.Features.Silhouette, "depth peeling: silhouettes");
+}
+
+void TestSceneDepth()
+{
+  const PsiFrameSettings s = Settings();
+  PsiSceneFacts facts = Facts();
+  facts.Parallel = true;
+  PSI_CHECK(!PlanFrame(s, facts).Features.ExactSegments, "parallel: screen-linear is exact");
+  facts = Facts();
+  PSI_CHECK(PlanFrame(s, facts).Features.ExactSegments, "perspective: exact segments");
+  facts.SceneOpaque = true;
+  PsiFramePlan plan = PlanFrame(s, facts);
+  PSI_CHECK(plan.SceneDepth && !plan.Features.OpaqueClip, "opaque geometry away from the volume");
+  facts = Facts();
+  facts.NearPlaneCuts = true;
+  plan = PlanFrame(s, facts);
+  PSI_CHECK(plan.SceneDepth && plan.Features.NearClip, "the near plane cuts the mesh");
+  facts = Facts();
+  facts.OpaqueOverlaps = facts.SceneOpaque = true;
+  plan = PlanFrame(s, facts);
+  PSI_CHECK(plan.SceneDepth && plan.Features.OpaqueClip, "opaque geometry inside the volume");
+}
+} // namespace
+
+int main()
+{
+  TestMethodTables();
+  TestEarlyDiscard();
+  TestIsosurfaces();
+  TestAdaptive();
+  TestSeparateOpacityAndPeeling();
+  TestSceneDepth();
+  std::printf("%s: %d failures\n", psitest::Failures() ? "FAILED" : "passed", psitest::Failures());
+  return psitest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+}

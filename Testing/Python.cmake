@@ -1,0 +1,62 @@
+# The plugin inside ParaView: pvpython tests (PsiPython.*), included from Testing/CMakeLists.txt
+# (psi_add_python_test is defined there). They need an X server too.
+
+# Properties, parity with 'Volume', coloring, mixed cells, narrow spikes, the benchmark's
+# reference, separate opacity, translucent geometry, the timing harness (GL-free).
+foreach (name IN ITEMS plugin_basics properties render_command vector_coloring mixed_cells
+    narrow_spikes isosurface_coverage benchmark_reference parity separate_opacity
+    translucent_geometry timing)
+  psi_add_python_test(${name})
+endforeach ()
+# The separate opacity array and translucent geometry with the compute projector too.
+foreach (name IN ITEMS separate_opacity translucent_geometry)
+  psi_add_python_test(${name}.compute SCRIPT ${name} ENVIRONMENT "PSI_PROJECTOR=compute")
+endforeach ()
+
+psi_add_python_test(isosurfaces
+  ENVIRONMENT "PSI_TEST_OUTPUT=${CMAKE_BINARY_DIR}/Testing/Images")
+
+# The accuracy report (Python/psi_accuracy.py) on a small scene: outputs, one row per method,
+# finite errors, the reference against itself. About 30 s on an idle machine; the timeout allows
+# for a loaded one (it starts a child pvpython).
+psi_add_python_test(accuracy_report TIMEOUT 240
+  ENVIRONMENT "PSI_REFERENCE_RENDER=$<TARGET_FILE:psi_reference_render>")
+
+# Constant fields and scalar ranges that float cannot hold (denormal widths, far from 0):
+# against 'Projected tetra' and the reference, and each path's image invariant under scaling.
+psi_add_python_test(scalar_ranges TIMEOUT 300
+  ENVIRONMENT "PSI_REFERENCE_RENDER=$<TARGET_FILE:psi_reference_render>")
+
+# Bad input to 'Psi Volume' (and to the reader): one test per case, each in its own pvpython,
+# so that a crash or a hang names its case.
+foreach (case IN ITEMS nontet surface cellscalars nonfinite empty degenerate quadratic multiblock
+    large reader unitdistance outofrange)
+  psi_add_python_test(bad_input.${case} SCRIPT bad_input ARGS ${case} TIMEOUT 240
+    ENVIRONMENT "PSI_DATA_DIR=${PSI_DATA_DIR}")
+endforeach ()
+# More than one draw call (5.1M tetrahedra, ~15-20 s here): run alone, it is the heaviest.
+set_tests_properties(PsiPython.bad_input.large PROPERTIES RUN_SERIAL ON)
+
+# MPI ordered compositing: 2 pvbatch ranks against a serial render.
+if (PVBATCH_EXECUTABLE AND MPIEXEC_EXECUTABLE)
+  add_test(NAME PsiPython.mpi
+    COMMAND "${MPIEXEC_EXECUTABLE}" --allow-run-as-root -n 2 "${PVBATCH_EXECUTABLE}"
+            --force-offscreen-rendering "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_mpi.py")
+  set_tests_properties(PsiPython.mpi PROPERTIES
+    ENVIRONMENT "PSI_PLUGIN=$<TARGET_FILE:PsiVolume>;PSI_PVBATCH=${PVBATCH_EXECUTABLE};OMPI_MCA_rmaps_base_oversubscribe=1"
+    SKIP_RETURN_CODE 77
+    TIMEOUT 240
+    RUN_SERIAL ON)
+else ()
+  message(STATUS "pvbatch or mpiexec not found: PsiPython.mpi is not registered")
+endif ()
+
+# Client-server: a pvpython client renders through `mpiexec -n 2 pvserver` (remote rendering,
+# ordered compositing on the server) and compares with a serial render.
+if (PVSERVER_EXECUTABLE AND MPIEXEC_EXECUTABLE)
+  psi_add_python_test(pvserver TIMEOUT 240
+    ENVIRONMENT "PSI_PVSERVER=${PVSERVER_EXECUTABLE};PSI_MPIEXEC=${MPIEXEC_EXECUTABLE};OMPI_MCA_rmaps_base_oversubscribe=1")
+  set_tests_properties(PsiPython.pvserver PROPERTIES RUN_SERIAL ON)
+else ()
+  message(STATUS "pvserver or mpiexec not found: PsiPython.pvserver is not registered")
+endif ()

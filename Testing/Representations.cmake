@@ -1,0 +1,82 @@
+# Tests of the Representations module (the OpenGL mapper and its parts), included from
+# Testing/CMakeLists.txt. GL tests need an X server.
+
+# Every render test runs once per projector (vtkPsiVolumeMapper::Projectors), chosen through
+# PSI_PROJECTOR (the test checks that the frames used it), and with FAN also drawn with Shirley
+# and Tuchman's fan instead of the default silhouettes. The geometry-shader run writes images.
+function(psi_add_render_test name executable)
+  cmake_parse_arguments(arg "FAN" "TIMEOUT" "" ${ARGN})
+  set(test PsiRepresentations.${name})
+  add_test(NAME ${test} COMMAND ${executable} "${CMAKE_BINARY_DIR}/Testing/Images")
+  set_tests_properties(${test} PROPERTIES ENVIRONMENT "PSI_PROJECTOR=geometry")
+  add_test(NAME ${test}.compute COMMAND ${executable})
+  set_tests_properties(${test}.compute PROPERTIES ENVIRONMENT "PSI_PROJECTOR=compute")
+  set(variants ${test} ${test}.compute)
+  if (arg_FAN)
+    add_test(NAME ${test}.fan COMMAND ${executable})
+    set_tests_properties(${test}.fan PROPERTIES ENVIRONMENT "PSI_DECOMPOSITION=fan")
+    list(APPEND variants ${test}.fan)
+  endif ()
+  if (arg_TIMEOUT)
+    set_tests_properties(${variants} PROPERTIES TIMEOUT ${arg_TIMEOUT})
+  endif ()
+endfunction ()
+
+# A GL test executable of this module.
+function(psi_add_gl_executable name)
+  add_executable(${name} Cxx/${name}.cxx)
+  target_link_libraries(${name} PRIVATE PsiVolume::Representations PsiVolume::Core PsiTestSupport
+    VTK::RenderingOpenGL2 VTK::FiltersGeneral VTK::FiltersSources VTK::ImagingCore VTK::IOImage
+    VTK::RenderingCore ${ARGN})
+  vtk_module_autoinit(TARGETS ${name} MODULES VTK::RenderingOpenGL2)
+endfunction ()
+
+# Images against the exact reference (PsiReferenceRaycaster): perspective, parallel, camera
+# inside, opaque geometry, each method.
+psi_add_gl_executable(TestPsiVolumeRender)
+psi_add_render_test(VolumeRender TestPsiVolumeRender FAN)
+
+# Isosurfaces and adaptive transfer-function sampling.
+psi_add_gl_executable(TestPsiIsosurfaces)
+psi_add_render_test(Isosurfaces TestPsiIsosurfaces FAN)
+
+# Degenerate projections (truth-table classes 3 and 4, exact in float) and the drawn visibility
+# order, both against exact references (PsiReferenceRaycaster; ray/tetrahedron intersection).
+psi_add_gl_executable(TestPsiDegenerateProjections)
+psi_add_render_test(DegenerateProjections TestPsiDegenerateProjections FAN TIMEOUT 120)
+
+psi_add_gl_executable(TestPsiVisibilityOrder)
+add_test(NAME PsiRepresentations.VisibilityOrder COMMAND TestPsiVisibilityOrder)
+set_tests_properties(PsiRepresentations.VisibilityOrder PROPERTIES TIMEOUT 120)
+
+# Translucent geometry intermixed with the volume through VTK's dual depth peeling, against the
+# reference ray caster compositing the surfaces' layers.
+psi_add_gl_executable(TestPsiTranslucentGeometry)
+psi_add_render_test(TranslucentGeometry TestPsiTranslucentGeometry TIMEOUT 300)
+
+# The shipped GLSL of each method on the GPU against its C++ version.
+find_package(OpenGL REQUIRED)
+psi_add_gl_executable(TestIntegrationGLSL OpenGL::GL)
+add_test(NAME PsiRepresentations.IntegrationGLSL COMMAND TestIntegrationGLSL)
+
+# Full pre-integration on a mesh whose cell sizes span three decades: the table's logarithmic
+# length axis, its lookups against the exact integral, and a render against the CPU ray caster.
+psi_add_gl_executable(TestPreIntegrationGraded)
+add_test(NAME PsiRepresentations.PreIntegrationGraded COMMAND TestPreIntegrationGraded
+  "${CMAKE_BINARY_DIR}/Testing/Images")
+set_tests_properties(PsiRepresentations.PreIntegrationGraded PROPERTIES TIMEOUT 90)
+
+# The composed shader programs (PsiShaderComposer): every feature's code exactly when it is on,
+# the geometry-shader budget, and a representative subset compiled by the driver without a word
+# from the compiler. Mesa's on-disk shader cache is off for it: a cached program is not compiled
+# again, and its warnings are not said again.
+psi_add_gl_executable(TestShaderComposition)
+add_test(NAME PsiRepresentations.ShaderComposition COMMAND TestShaderComposition)
+set_tests_properties(PsiRepresentations.ShaderComposition PROPERTIES
+  ENVIRONMENT "MESA_SHADER_CACHE_DISABLE=true"
+  TIMEOUT 600)
+
+# The frame plan: each effect and table exactly when the scene calls for it (GL-free).
+add_executable(TestFramePlan Cxx/TestFramePlan.cxx)
+target_link_libraries(TestFramePlan PRIVATE PsiVolume::Representations PsiTestSupport)
+add_test(NAME PsiRepresentations.FramePlan COMMAND TestFramePlan)

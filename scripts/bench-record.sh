@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Runs one benchmark and records its output as docs/benchmarks/NAME.md, with the command, the
+# date, the machine, the ParaView and the OpenGL driver it ran on; then regenerates
+# docs/benchmarks.md from all the records (scripts/benchmarks-page.py). Runs under Xvfb when no
+# DISPLAY is set. The record's "title" is TITLE (default: the command).
+#   bash scripts/bench-record.sh NAME [--title TITLE] -- pvpython Benchmarks/bench_scale.py --sizes 20
+# Notes on a record (what the figures say) go below its output by hand; the page is never edited.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+name=${1:?usage: bench-record.sh NAME [--title TITLE] -- COMMAND...}
+shift
+title=""
+while [ $# -gt 0 ] && [ "$1" != "--" ]; do
+  case "$1" in
+    --title) title=${2:?--title takes a title}; shift 2 ;;
+    *) echo "bench-record: unknown option $1" >&2; exit 2 ;;
+  esac
+done
+[ "${1:-}" = "--" ] && shift
+[ $# -gt 0 ] || { echo "bench-record: no command given" >&2; exit 2; }
+cmd=$*
+out=$(mktemp)
+if [ -z "${DISPLAY:-}" ]; then
+  wrap=(xvfb-run -a -s "-screen 0 1280x1024x24 -noreset")
+else
+  wrap=()
+fi
+renderer=$("${wrap[@]}" glxinfo -B 2>/dev/null | sed -n 's/^ *OpenGL renderer string: //p' | head -n1 || true)
+mesa=$("${wrap[@]}" glxinfo -B 2>/dev/null | sed -n 's/^ *OpenGL core profile version string: //p' | head -n1 || true)
+start=$SECONDS
+(cd "$root" && "${wrap[@]}" "$@") | tee "$out"
+seconds=$((SECONDS - start))
+cpu=$(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -n1)
+os=$(. /etc/os-release && echo "$PRETTY_NAME")
+pv=$(pvpython --version 2>/dev/null | head -n1 || true)
+{
+  echo "benchmark: $(echo "$cmd" | grep -oE '(Benchmarks|Python|scripts|build/bin)/[A-Za-z0-9_./-]+' | head -n1)"
+  echo "title: ${title:-$cmd}"
+  echo "date: $(date -u +%Y-%m-%d)"
+  echo "machine: $os; $cpu; $(nproc) cores; $(free -g | awk '/^Mem:/ {print $2}') GB"
+  echo "paraview: $pv"
+  echo "opengl: ${renderer:-unknown}${mesa:+; $mesa}"
+  echo "command: $cmd"
+  echo "seconds: $seconds"
+  echo "---"
+  echo '```'
+  cat "$out"
+  echo '```'
+} > "$root/docs/benchmarks/$name.md"
+rm -f "$out"
+python3 "$root/scripts/benchmarks-page.py"
+echo "[bench-record] docs/benchmarks/$name.md written, docs/benchmarks.md regenerated"
