@@ -1,45 +1,38 @@
 # GUI tests of the properties-panel read-out of the last 'Psi Volume' frame (pqPsiFrameStatsWidget):
 # a pqevents script replayed in the real `paraview` client, whose pqcheck steps read the read-out
-# widget (Testing/XML/PsiVolumePanel.xml), in the builtin session and in a client/server session
-# with a local pvserver. Need an X server (run ctest under xvfb-run) and a ParaView built with Qt,
-# as the widget does.
+# widget (Testing/XML/PsiVolumePanel.xml), in the builtin session and in a client/server session.
+# Registered through ParaView's own test functions (ParaViewTesting.cmake, found with ParaView):
+# paraview_add_client_tests and paraview_add_client_server_tests run the client under ParaView's
+# smTestDriver, which for the second starts a pvserver with the plugin and connects the client
+# to it, so the read-out must come from the server, which renders. Need an X server (run ctest
+# under xvfb-run) and a ParaView built with Qt, as the widget does.
 if (NOT PARAVIEW_USE_QT)
   return ()
 endif ()
-find_program(PARAVIEW_CLIENT_EXECUTABLE NAMES paraview)
-if (NOT PARAVIEW_CLIENT_EXECUTABLE)
-  message(STATUS "paraview client not found: panel GUI test disabled")
+if (NOT TARGET ParaView::paraview OR NOT TARGET ParaView::smTestDriver)
+  message(STATUS "ParaView's client or smTestDriver not found: panel GUI tests disabled")
   return ()
 endif ()
 
-set(psi_panel_script "${CMAKE_CURRENT_SOURCE_DIR}/XML/PsiVolumePanel.xml")
 set(psi_panel_test_dir "${CMAKE_BINARY_DIR}/Testing/Temporary/GUI/PsiVolumePanel")
 file(MAKE_DIRECTORY "${psi_panel_test_dir}")
-add_test(NAME PsiGUI.PsiVolumePanel
-  COMMAND "${PARAVIEW_CLIENT_EXECUTABLE}" --dr
-          "--plugin-search-paths=$<TARGET_FILE_DIR:PsiVolume>"
-          --plugins=PsiVolume
-          "--test-script=${psi_panel_script}"
-          "--test-directory=${psi_panel_test_dir}"
-          --exit)
-set(psi_panel_tests PsiGUI.PsiVolumePanel)
+set(PsiVolumePanel_USES_DIRECT_DATA ON) # no ExternalData: the script compares no image
+set(psi_panel_args
+  LOAD_PLUGIN PsiVolume
+  PLUGIN_PATH "$<TARGET_FILE_DIR:PsiVolume>"
+  TEST_DIRECTORY "${psi_panel_test_dir}"
+  TEST_SCRIPTS "${CMAKE_CURRENT_SOURCE_DIR}/XML/PsiVolumePanel.xml")
+paraview_add_client_tests(PREFIX PsiGUI ${psi_panel_args})
+# smTestDriver starts the server under mpiexec (ParaView is built with MPI): as root too, and
+# with 2 ranks on fewer cores.
+paraview_add_client_server_tests(PREFIX PsiGUI.ClientServer ${psi_panel_args}
+  ENVIRONMENT OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+              OMPI_MCA_rmaps_base_oversubscribe=1)
 
-# The same script against a pvserver: the read-out must come from the server, which renders.
-find_program(PVSERVER_EXECUTABLE NAMES pvserver)
-find_package(Python3 COMPONENTS Interpreter QUIET)
-if (PVSERVER_EXECUTABLE AND Python3_Interpreter_FOUND)
-  add_test(NAME PsiGUI.PsiVolumePanelClientServer
-    COMMAND "${Python3_EXECUTABLE}"
-            "${CMAKE_CURRENT_SOURCE_DIR}/Python/run_gui_client_server.py"
-            "${PVSERVER_EXECUTABLE}" "${PARAVIEW_CLIENT_EXECUTABLE}"
-            "$<TARGET_FILE_DIR:PsiVolume>" "${psi_panel_script}" "${psi_panel_test_dir}")
-  list(APPEND psi_panel_tests PsiGUI.PsiVolumePanelClientServer)
-endif ()
-
-set_tests_properties(${psi_panel_tests} PROPERTIES
+set_tests_properties(PsiGUI.PsiVolumePanel PsiGUI.ClientServer.PsiVolumePanel PROPERTIES
   LABELS "GUI"
   TIMEOUT 240
   # QtTesting prints these when a widget path does not exist or a pqcheck fails; a failed check
-  # also makes paraview exit non-zero.
+  # also makes paraview exit non-zero, and smTestDriver with it.
   FAIL_REGULAR_EXPRESSION "Couldn't find object|Failed to parse|Expecting:|Unhandled"
   RESOURCE_LOCK PsiGUI)
