@@ -12,8 +12,11 @@ shift
 [ "$#" -gt 0 ] || { echo "usage: in-system.sh SUITE COMMAND [ARG...]" >&2; exit 2; }
 sys=$(bash "$root/scripts/debian-system.sh" "$suite")
 shared=$(cd "$root/.." && pwd)/shared
-# The system's resolver is the host's (apt inside needs it).
+# The system's resolver and host names are the machine's: apt inside needs the resolver, and a
+# chroot keeps the machine's host name, to which ParaView's test driver connects the client of a
+# client/server test (a Debian installed on a machine lists its own name in /etc/hosts).
 cp -L /etc/resolv.conf "$sys/etc/resolv.conf"
+cp -L /etc/hosts "$sys/etc/hosts"
 mkdir -p "$sys/psi/src" "$sys/psi/shared"
 args=$(printf '%q ' "$@")
 # X display numbers of this system's Xvfb servers: apart from the host's (99 up) and the other

@@ -21,7 +21,6 @@ present exactly once, so the list cannot silently rot.
   --workdir DIR   scratch tree and build (default $TMPDIR/psi-mutation-$USER)
 """
 import argparse
-import json
 import os
 import pathlib
 import re
@@ -54,20 +53,29 @@ def target_of(path, build):
     return p.name[:-3] if p.name.endswith(".so") else None
 
 
+ADD_TEST = re.compile(r'^add_test\((?:\[=\[(.+?)\]=\]|(\S+))\s+"([^"]*)"', re.M)
+TEST_PROPERTIES = re.compile(
+    r'^set_tests_properties\((?:\[=\[(.+?)\]=\]|(\S+))\s+PROPERTIES\s+(.*)\)$', re.M)
+ENVIRONMENT = re.compile(r'\bENVIRONMENT\s+"([^"]*)"')
+
+
 def registered_tests(build):
-    """CTest name -> the targets it runs, as CTest itself lists the tests of the configured
-    `build` (ctest --show-only=json-v1): its executable, and the targets its environment names
+    """CTest name -> the targets it runs, as the configured `build` registers them (the
+    CTestTestfile.cmake files CMake writes: `ctest --show-only` leaves out the command of a test
+    whose executable is not built yet): its executable, and the targets its environment names
     (the plugin of a pvpython test, the reference renderer)."""
-    out = subprocess.run(["ctest", "--show-only=json-v1"], cwd=build, capture_output=True,
-                         text=True, check=True).stdout
-    tests = {}
-    for t in json.loads(out).get("tests", []):
-        paths = t.get("command", [])[:1]
-        for prop in t.get("properties", []):
-            if prop["name"] == "ENVIRONMENT":
-                paths += [v.split("=", 1)[1] for v in prop["value"] if "=" in v]
-        tests[t["name"]] = sorted({x for x in (target_of(p, build) for p in paths) if x})
-    return tests
+    paths = {}
+    for f in sorted(pathlib.Path(build).rglob("CTestTestfile.cmake")):
+        text = f.read_text()
+        for bracketed, bare, command in ADD_TEST.findall(text):
+            paths.setdefault(bracketed or bare, []).append(command)
+        for bracketed, bare, props in TEST_PROPERTIES.findall(text):
+            env = ENVIRONMENT.search(props)
+            if env:
+                paths.setdefault(bracketed or bare, []).extend(
+                    v.split("=", 1)[1] for v in env.group(1).split(";") if "=" in v)
+    return {name: sorted({t for t in (target_of(p, build) for p in ps) if t})
+            for name, ps in paths.items()}
 
 
 def check(root, mutations, tests):
