@@ -10,8 +10,11 @@ vec4 integrateSegment(float sf, float sb, float D)
   // 1 - (0.27 alpha_b + 0.73 alpha_f) = 0.27 tb + 0.73 tf.
   float tf = max(1.0 - f.a * unitDistance, 0.0), tb = max(1.0 - b.a * unitDistance, 0.0);
   float units = D / unitDistance;
-  float zeta = pow(max(0.5 * (tb + tf) - 0.108165 * (tb - tf) * (tb - tf), 0.0), units);
-  float tau2D = -log(0.27 * tb + 0.73 * tf) * units;
+  // pow(0, 0), log(0) and its product with D = 0 are undefined in GLSL: a transmittance of 0
+  // (alpha = 1) is opaque over any length and nothing over none
+  float zeta = D > 0.0 ? pow(max(0.5 * (tb + tf) - 0.108165 * (tb - tf) * (tb - tf), 0.0), units) : 1.0;
+  float t2 = 0.27 * tb + 0.73 * tf;
+  float tau2D = t2 > 0.0 ? -log(t2) * units : (D > 0.0 ? 1e30 : 0.0);
   // (1 - e^{-x}) / x by its series where float cancellation would cost ~4e-4 relative
   float psi = tau2D < 0.03 ? 1.0 - tau2D * (0.5 - tau2D * (1.0 / 6.0 - tau2D / 24.0))
                            : (1.0 - exp(-tau2D)) / tau2D;

@@ -1,6 +1,6 @@
-// The hard cases for the segment integrals (zero length, zero and equal attenuations, tau D over
-// 15 decades, alpha = 1 and just below, luminance outside [0, 1]), shared by the C++ and GLSL
-// tests.
+// The hard cases for the segment integrals (zero length, also where the opacity is 1, zero and
+// equal attenuations, tau D over 15 decades, alpha = 1 and just below, luminance outside [0, 1]),
+// shared by the C++ and GLSL tests.
 #ifndef PsiHardCases_h
 #define PsiHardCases_h
 
@@ -38,6 +38,8 @@ inline std::vector<HardCase> HardCases(bool floatInputs)
     { "tau D = 1e6", seg(1.0, 0.5, 1e6) },
     { "alpha = 1 front", seg(1.0, 0.3, 1.0) },
     { "alpha = 1 back", seg(0.3, 1.0, 1.0) },
+    { "alpha = 1 both ends, D = 0", seg(1.0, 1.0, 0.0) },
+    { "alpha = 1 front, D = 0", seg(1.0, 0.3, 0.0) },
     { "alpha just below 1", seg(1 - 1e3 * eps, 1 - 1e4 * eps, 1.0) },
     { "luminance outside [0,1]", seg(0.3, 0.6, 1.5, -0.5, 3.0) },
     { "thickness 1e-7 of the mesh", seg(0.8, 0.9, 1e-7) },
