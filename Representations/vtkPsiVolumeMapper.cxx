@@ -10,7 +10,6 @@
 #include "PsiMeshBuffers.h"
 #include "PsiProjectionClasses.h"
 #include "PsiRenderTarget.h"
-#include "PsiSceneQueries.h"
 #include "PsiShaderComposer.h"
 #include "PsiShaderParameters.h"
 #include "PsiTransferFunctionAnalysis.h"
@@ -120,14 +119,16 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   const PsiFrameCamera cam = PsiFrameCamera::FromRenderer(ren, vol, I.Mesh.GetMesh().Shift);
   const bool sorted = this->UpdateVisibilityOrder(input, cam);
-  const PsiTableSources sources = this->UpdateTransferFunction(renWin, vol);
-  const PsiFramePlan plan = PlanFrame(this->FrameSettings(), this->SceneFacts(ren, vol, cam));
+  const PsiFrameSettings settings = this->FrameSettings();
+  const PsiTableSources sources = this->UpdateTransferFunction(renWin, vol, settings);
+  const PsiFramePlan plan = PlanFrame(settings, this->SceneFacts(ren, vol, cam, settings));
   this->NotePlan(plan);
-  this->UpdateTables(renWin, plan, sources);
+  const std::vector<PsiGpuTable*> tables = this->TablesOf(plan);
+  this->UpdateTables(renWin, plan, tables, sources);
   if (I.Target.CaptureDepthTexture(
         ren, renWin, plan.Features.NearClip || plan.Features.OpaqueClip, plan.SceneDepth))
   {
-    this->DrawVolume(renWin, ren, vol, cam, plan);
+    this->DrawVolume(renWin, ren, vol, cam, plan, tables);
   }
   I.Order.Finish();
   if (sorted)
@@ -164,7 +165,8 @@ bool vtkPsiVolumeMapper::UpdateVisibilityOrder(
 // Projects and draws the volume with the chosen projector: the geometry-shader program, or the
 // compute projector's projection pass and draw program.
 void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren,
-  vtkVolume* vol, const PsiFrameCamera& cam, const PsiFramePlan& plan)
+  vtkVolume* vol, const PsiFrameCamera& cam, const PsiFramePlan& plan,
+  const std::vector<PsiGpuTable*>& tables)
 {
   vtkVLogScopeF(PARAVIEW_LOG_RENDERING_VERBOSITY(), "Psi Volume: draw");
   Internals& I = *this->Impl;
@@ -177,7 +179,6 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   {
     return;
   }
-  const std::vector<PsiGpuTable*> tables = this->TablesOf(plan);
   this->SetShaderParameters(program, ren, vol, cam, features, tables);
   I.Mesh.Activate(program, gradients);
   vtkShaderProgram* draw = compute ? I.Compute.ReadyDrawProgram(renWin) : program;

@@ -309,18 +309,20 @@ private:
     vtkOpenGLRenderWindow* renWin, vtkVolume* vol, vtkUnstructuredGridBase* input);
   bool UpdateVisibilityOrder(vtkUnstructuredGridBase* input, const PsiFrameCamera& cam);
   // the frame plan (vtkPsiVolumeMapperFramePlan.cxx)
-  PsiTableSources UpdateTransferFunction(vtkOpenGLRenderWindow* renWin, vtkVolume* vol);
+  PsiTableSources UpdateTransferFunction(
+    vtkOpenGLRenderWindow* renWin, vtkVolume* vol, const PsiFrameSettings& settings);
   PsiFrameSettings FrameSettings() const;
-  PsiSceneFacts SceneFacts(vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam);
+  PsiSceneFacts SceneFacts(vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam,
+    const PsiFrameSettings& settings);
   void NotePlan(const PsiFramePlan& plan);
   std::vector<PsiGpuTable*> TablesOf(const PsiFramePlan& plan);
-  void UpdateTables(
-    vtkOpenGLRenderWindow* renWin, const PsiFramePlan& plan, const PsiTableSources& sources);
+  void UpdateTables(vtkOpenGLRenderWindow* renWin, const PsiFramePlan& plan,
+    const std::vector<PsiGpuTable*>& tables, const PsiTableSources& sources);
   // the draw (vtkPsiVolumeMapper.cxx)
   vtkShaderProgram* ReadyProjection(
     vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& features, bool compute);
   void DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren, vtkVolume* vol,
-    const PsiFrameCamera& cam, const PsiFramePlan& plan);
+    const PsiFrameCamera& cam, const PsiFramePlan& plan, const std::vector<PsiGpuTable*>& tables);
   void SetShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkVolume* vol,
     const PsiFrameCamera& cam, const psi::ShaderFeatures& features,
     const std::vector<PsiGpuTable*>& tables);

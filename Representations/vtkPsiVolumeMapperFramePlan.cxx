@@ -32,7 +32,7 @@ std::string OneLine(std::string defines)
 
 // The sampled transfer function, and the adaptive nodes when adaptive sampling may be used.
 PsiTableSources vtkPsiVolumeMapper::UpdateTransferFunction(
-  vtkOpenGLRenderWindow* renWin, vtkVolume* vol)
+  vtkOpenGLRenderWindow* renWin, vtkVolume* vol, const PsiFrameSettings& settings)
 {
   Internals& I = *this->Impl;
   const psi::TetMesh& mesh = I.Mesh.GetMesh();
@@ -47,7 +47,7 @@ PsiTableSources vtkPsiVolumeMapper::UpdateTransferFunction(
   in.MaxNodes = MaxAdaptiveNodes;
   in.NodeTolerance = AdaptiveNodeTolerance;
   std::vector<PsiGpuTable*> first{ &I.Tables.Transfer };
-  if (NeedsAdaptiveNodes(this->FrameSettings()))
+  if (NeedsAdaptiveNodes(settings))
   {
     first.push_back(&I.AdaptiveNodes);
   }
@@ -74,7 +74,7 @@ PsiFrameSettings vtkPsiVolumeMapper::FrameSettings() const
 // Everything the plan needs to know, asked here: the camera, the other props, the depth-peeling
 // stage, the data, the sampled function, and the driver's geometry-shader limits.
 PsiSceneFacts vtkPsiVolumeMapper::SceneFacts(
-  vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam)
+  vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam, const PsiFrameSettings& settings)
 {
   Internals& I = *this->Impl;
   PsiSceneFacts facts;
@@ -87,7 +87,7 @@ PsiSceneFacts vtkPsiVolumeMapper::SceneFacts(
   facts.ZeroOpacity = I.Tables.Transfer.HasZeroOpacity();
   facts.NodesFaithful = I.AdaptiveNodes.IsFaithful();
   facts.TableDeviation = I.AdaptiveNodes.GetTableDeviation();
-  if (MayUseIsoTriangles(this->FrameSettings(), facts))
+  if (MayUseIsoTriangles(settings, facts))
   {
     glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &facts.MaxGeometryOutputVertices);
     glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &facts.MaxGeometryOutputComponents);
@@ -143,16 +143,15 @@ std::vector<PsiGpuTable*> vtkPsiVolumeMapper::TablesOf(const PsiFramePlan& plan)
   return tables;
 }
 
-// Only the tables the plan names (and the mesh's smoothed gradients when it asks for them).
-void vtkPsiVolumeMapper::UpdateTables(
-  vtkOpenGLRenderWindow* renWin, const PsiFramePlan& plan, const PsiTableSources& sources)
+// Only the tables the plan names, `tables` (TablesOf), and the mesh's smoothed gradients when
+// it asks for them.
+void vtkPsiVolumeMapper::UpdateTables(vtkOpenGLRenderWindow* renWin, const PsiFramePlan& plan,
+  const std::vector<PsiGpuTable*>& tables, const PsiTableSources& sources)
 {
   vtkVLogScopeF(PARAVIEW_LOG_RENDERING_VERBOSITY(), "Psi Volume: tables");
   Internals& I = *this->Impl;
-  const bool rebuildPre =
-    plan.Tables.PreIntegration && I.Tables.PreIntegration.NeedsUpdate(sources);
-  psi::UpdateTables(this->TablesOf(plan), renWin, sources);
-  if (rebuildPre)
+  psi::UpdateTables(tables, renWin, sources);
+  if (plan.Tables.PreIntegration)
   {
     // Röttger's table belongs to one transfer function: rebuilt on every edit (timed)
     this->Stats.LastPreIntegrationSeconds = I.Tables.PreIntegration.GetLastBuildSeconds();
