@@ -3,12 +3,11 @@
 # Mesa 26 no longer ships OSMesa, so EGL is the way pvbatch renders without a display there.
 # The tests run with DISPLAY removed, so an X window cannot stand in: the image check against
 # the exact ray caster (test_plugin_basics.py) and the 2-rank MPI test (test_mpi.py).
-# Included from Testing/CMakeLists.txt; registered where ParaView is 6.0 or newer.
+# Included from Testing/CMakeLists.txt (which finds pvbatch and mpiexec); registered where
+# ParaView is 6.0 or newer.
 if (ParaView_VERSION VERSION_LESS "6.0")
   return ()
 endif ()
-find_program(PVBATCH_EXECUTABLE NAMES pvbatch)
-find_program(MPIEXEC_EXECUTABLE NAMES mpiexec mpirun)
 if (NOT PVBATCH_EXECUTABLE)
   message(STATUS "pvbatch not found: headless EGL tests not registered")
   return ()

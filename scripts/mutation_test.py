@@ -102,6 +102,14 @@ def check(root, mutations, tests):
     return problems
 
 
+def matches_tree(tests):
+    """Whether the whole list matches the source tree and `tests`; prints what does not."""
+    problems = check(ROOT, MUTATIONS, tests)
+    if problems:
+        print("The mutation list does not match the tree:\n  " + "\n  ".join(problems))
+    return not problems
+
+
 def is_build_dir(rel):
     first = rel.parts[0] if rel.parts else ""
     return first.startswith("build") or first in SKIP_DIRS
@@ -200,9 +208,7 @@ def main():
         print(f"{len(mutations)} mutations")
         return 0
     if args.check:
-        problems = check(ROOT, MUTATIONS, registered_tests(args.build_dir.resolve()))
-        if problems:
-            print("The mutation list does not match the tree:\n  " + "\n  ".join(problems))
+        if not matches_tree(registered_tests(args.build_dir.resolve())):
             return 2
         print(f"{len(MUTATIONS)} mutations: every original snippet occurs exactly once, every "
               "test is registered")
@@ -217,9 +223,7 @@ def main():
         print(f"the scratch tree does not configure: see {log}")
         return 1
     tests = registered_tests(work / "build")
-    problems = check(ROOT, MUTATIONS, tests)
-    if problems:
-        print("The mutation list does not match the tree:\n  " + "\n  ".join(problems))
+    if not matches_tree(tests):
         return 2
     needed = sorted({t for m in mutations for t in m.tests})
     print(f"scratch tree {work / 'src'}, build {work / 'build'}, log {log}")

@@ -13,27 +13,29 @@ installed_paraview_series() {
   [ -z "$v" ] || paraview_series_of "$v"
 }
 
-# The series this Debian ships: the installed paraview package's, else the one its release
-# carries (from /etc/os-release: 12 -> 5.11, 13 -> 5.13, unstable -> 6.1); empty when unknown.
+# The supported series and the Debian suite that ships each, one pair a line.
+PSI_PARAVIEW_SUITES="5.11 bookworm
+5.13 trixie
+6.1 sid"
+
+# The series this Debian ships: the installed paraview package's, else the one its suite
+# carries (the codename of /etc/os-release; unstable names its next release's codename and says
+# "sid" in its pretty name); empty when unknown.
 system_paraview_series() {
-  local v
+  local v suite
   v=$(installed_paraview_series)
   if [ -z "$v" ] && [ -r /etc/os-release ]; then
-    case "$(. /etc/os-release && echo "${VERSION_ID:-}:${VERSION_CODENAME:-}")" in
-      12:*|*:bookworm) v=5.11 ;;
-      13:*|*:trixie) v=5.13 ;;
-      :sid|:forky) v=6.1 ;;
-    esac
+    suite=$(. /etc/os-release && case "${PRETTY_NAME:-}" in *sid*) echo sid ;;
+                                  *) echo "${VERSION_CODENAME:-}" ;; esac)
+    v=$(printf '%s\n' "$PSI_PARAVIEW_SUITES" | awk -v s="$suite" '$2 == s {print $1}')
   fi
   echo "$v"
 }
 
 # The Debian suite that ships ParaView series $1.
 suite_of() {
-  case "$1" in
-    5.11) echo bookworm ;;
-    5.13) echo trixie ;;
-    6.1) echo sid ;;
-    *) echo "ParaView $1 is not one of 5.11, 5.13, 6.1" >&2; return 1 ;;
-  esac
+  local suite
+  suite=$(printf '%s\n' "$PSI_PARAVIEW_SUITES" | awk -v v="$1" '$1 == v {print $2}')
+  [ -n "$suite" ] || { echo "ParaView $1 is not one of 5.11, 5.13, 6.1" >&2; return 1; }
+  echo "$suite"
 }
