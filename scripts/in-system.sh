@@ -2,8 +2,10 @@
 # Runs a command of this checkout inside the Debian system of SUITE (scripts/debian-system.sh),
 # as root, in a private mount namespace: the checkout is seen at /psi/src, ../shared (the test
 # data, when present) read-only at /psi/shared, /proc and a fresh /dev/shm are mounted, and all of
-# it is unmounted when the command ends. The build goes to /root/psi-build in that system, so it
-# is kept between runs and never mixed with the host's build/.
+# it is unmounted when the command ends. The build goes to /root/psi-build/<checkout> in that
+# system, one directory per checkout (every checkout is seen at the same /psi/src, and make's time
+# stamps cannot tell one checkout's older sources from another's: objects of a newer checkout
+# were taken as up to date), kept between runs and never mixed with the host's build/.
 #   bash scripts/in-system.sh trixie bash scripts/test.sh
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -21,9 +23,10 @@ mkdir -p "$sys/psi/src" "$sys/psi/shared"
 args=$(printf '%q ' "$@")
 # X display numbers of this system's Xvfb servers: apart from the host's (99 up) and the other
 # systems', since X's abstract sockets are shared across chroots.
+checkout=$(printf '%s' "$root" | md5sum | cut -c1-12)
 case "$suite" in bookworm) xvfb=200 ;; trixie) xvfb=300 ;; sid) xvfb=400 ;; *) xvfb=500 ;; esac
 exec unshare --mount --propagation private -- bash -euo pipefail -c '
-  sys=$1 root=$2 shared=$3 args=$4 xvfb=$5
+  sys=$1 root=$2 shared=$3 args=$4 xvfb=$5 checkout=$6
   mount -t proc proc "$sys/proc"
   mount -t tmpfs -o mode=1777 shm "$sys/dev/shm"
   mount --bind "$root" "$sys/psi/src"
@@ -33,6 +36,6 @@ exec unshare --mount --propagation private -- bash -euo pipefail -c '
   fi
   exec chroot "$sys" /usr/bin/env -i HOME=/root TERM="${TERM:-dumb}" LANG=C.UTF-8 \
     PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin CI="${CI:-}" \
-    PSI_BUILD_DIR=/root/psi-build PSI_XVFB_DISPLAY="$xvfb" \
+    PSI_BUILD_DIR="/root/psi-build/$checkout" PSI_XVFB_DISPLAY="$xvfb" \
     bash -c "cd /psi/src && exec $args"
-' in-system "$sys" "$root" "$shared" "$args" "$xvfb"
+' in-system "$sys" "$root" "$shared" "$args" "$xvfb" "$checkout"
