@@ -4,9 +4,7 @@
 #include "PsiProjectedVS.h"
 #include "PsiShaderTags.h"
 
-#include <regex>
-#include <set>
-#include <sstream>
+#include <map>
 #include <stdexcept>
 
 namespace psi
@@ -24,28 +22,18 @@ struct Packing
 
 Packing PackingOf(const std::string& type)
 {
-  static const std::regex vector("(|i|u)vec([234])"), matrix("mat([234])");
-  std::smatch m;
-  Packing p;
-  if (type == "float" || type == "int" || type == "uint")
-  {
-    p.Kind = type;
-  }
-  else if (std::regex_match(type, m, vector))
-  {
-    p.Kind = m[1] == "i" ? "int" : m[1] == "u" ? "uint" : "float";
-    p.Size = std::stoi(m[2]);
-  }
-  else if (std::regex_match(type, m, matrix))
-  {
-    p.Kind = "float";
-    p.Size = p.Columns = std::stoi(m[1]);
-  }
-  else
+  static const std::map<std::string, Packing> packings = { { "float", { "float", 1, 1 } },
+    { "vec2", { "float", 2, 1 } }, { "vec3", { "float", 3, 1 } }, { "vec4", { "float", 4, 1 } },
+    { "int", { "int", 1, 1 } }, { "ivec2", { "int", 2, 1 } }, { "ivec3", { "int", 3, 1 } },
+    { "ivec4", { "int", 4, 1 } }, { "uint", { "uint", 1, 1 } }, { "uvec2", { "uint", 2, 1 } },
+    { "uvec3", { "uint", 3, 1 } }, { "uvec4", { "uint", 4, 1 } }, { "mat2", { "float", 2, 2 } },
+    { "mat3", { "float", 3, 3 } }, { "mat4", { "float", 4, 4 } } };
+  const auto it = packings.find(type);
+  if (it == packings.end())
   {
     throw std::logic_error("PsiComputeProjectorComposer: cannot pass on an output of type " + type);
   }
-  return p;
+  return it->second;
 }
 
 const char* Swizzle(int size)
@@ -81,88 +69,18 @@ std::string Line(const std::string& s)
   return s + "\n";
 }
 
-std::string ReplaceAll(std::string s, const std::regex& re, const std::string& with)
-{
-  return std::regex_replace(s, re, with);
-}
-
-// The composed vertex shader as the function psiVertexMain: its attribute and its outputs are
-// globals (the geometry code reads the outputs as one-element arrays).
-std::string VertexStage(std::string vs, std::set<std::string>& uniforms)
-{
-  std::string out;
-  std::istringstream lines(vs);
-  std::vector<std::string> outputs;
-  for (const ShaderVariable& v : DeclaredOutputs(vs))
-  {
-    outputs.push_back(v.Name);
-  }
-  for (std::string line; std::getline(lines, line);)
-  {
-    static const std::regex outDecl("^\\s*((flat|smooth|noperspective)\\s+)?out\\s+(\\w+)\\s+(\\w+)\\s*;(.*)");
-    static const std::regex inDecl("^\\s*in\\s+(\\w+)\\s+(\\w+)\\s*;.*");
-    if (line.find("//VTK::System::Dec") != std::string::npos)
-    {
-      continue;
-    }
-    line = std::regex_replace(line, outDecl, "$3 $4[1];$5"); // the geometry stage's input
-    if (line.compare(0, 8, "uniform ") == 0)
-    {
-      uniforms.insert(line);
-    }
-    // The vertex attribute becomes a global that main() sets; initialized, so that compilers
-    // that cannot see main() set it first do not warn of a read before a write.
-    out += Line(std::regex_replace(line, inDecl, "$1 $2 = $1(0);"));
-  }
-  for (const std::string& name : outputs)
-  {
-    out = ReplaceAll(out, std::regex("\\b" + name + "\\b(?!\\[)"), name + "[0]");
-  }
-  return ReplaceAll(out, std::regex("\\bvoid main\\(\\)"), "void psiVertexMain()");
-}
-
-// The composed geometry shader as the function psiGeometryMain: inputs are one-element arrays,
-// outputs globals, and the emission goes to the projector's buffers.
-std::string GeometryStage(const std::string& gs, const std::set<std::string>& vertexUniforms)
-{
-  std::string out;
-  std::istringstream lines(gs);
-  static const std::regex layout("^\\s*layout\\(.*\\)\\s*(in|out)\\s*;.*");
-  static const std::regex inDecl("^\\s*(flat\\s+)?in\\s+(\\w+)\\s+(\\w+)\\[\\]\\s*;(.*)");
-  static const std::regex outDecl(
-    "^\\s*((flat|smooth|noperspective|centroid)\\s+)*out\\s+(\\w+)\\s+(\\w+)\\s*;(.*)");
-  for (std::string line; std::getline(lines, line);)
-  {
-    if (line.find("//VTK::System::Dec") != std::string::npos || line.rfind("#extension", 0) == 0 ||
-      std::regex_match(line, layout) || vertexUniforms.count(line))
-    {
-      continue;
-    }
-    if (std::regex_match(line, inDecl))
-    {
-      continue; // declared by the vertex stage, as its outputs
-    }
-    out += Line(std::regex_replace(line, outDecl, "$3 $4;$5"));
-  }
-  out = ReplaceAll(out, std::regex("\\bEmitVertex\\(\\)"), "psiEmitVertex()");
-  out = ReplaceAll(out, std::regex("\\bEndPrimitive\\(\\)"), "psiEndPrimitive()");
-  out = ReplaceAll(out, std::regex("\\bgl_Position\\b"), "psiPosition");
-  // The emission functions are defined after the geometry code: declare them first.
-  return "void psiEmitVertex();\nvoid psiEndPrimitive();\n" +
-    ReplaceAll(out, std::regex("\\bvoid main\\(\\)"), "void psiGeometryMain()");
-}
 } // namespace
 
 ComputeProjectorSources ComposeComputeProjector(
   const ShaderFeatures& f, const char* integratorSource)
 {
-  const ShaderSources stages = ComposeShaders(f, integratorSource);
+  const ShaderSources stages = ComposeShaders(f, integratorSource, StageForm::Functions);
   ComputeProjectorSources out;
   out.SlotVertices = GeometryOutputVertices(f);
   out.SlotTriangles = ProjectedTrianglesMax(f);
   std::string store, declare, load;
   int texel = 1; // texel 0: the clip position
-  for (const ShaderVariable& v : DeclaredOutputs(stages.Geometry))
+  for (const ShaderVariable& v : GeometryOutputs(f))
   {
     if (v.Count != 1)
     {
@@ -190,11 +108,10 @@ ComputeProjectorSources ComposeComputeProjector(
     "\n#define PSI_SLOT_TRIANGLES " + std::to_string(out.SlotTriangles) +
     "\n#define PSI_VERTEX_VEC4S " + std::to_string(out.Vec4sPerVertex) + "\n";
 
-  std::set<std::string> vertexUniforms;
   out.Compute = PsiProjectCS;
   SubstituteTag(out.Compute, "//PSI::Counts::Dec", "#version 430 core\n" + counts);
-  SubstituteTag(out.Compute, "//PSI::Stage::Vertex", VertexStage(stages.Vertex, vertexUniforms));
-  SubstituteTag(out.Compute, "//PSI::Stage::Geometry", GeometryStage(stages.Geometry, vertexUniforms));
+  SubstituteTag(out.Compute, "//PSI::Stage::Vertex", stages.Vertex);
+  SubstituteTag(out.Compute, "//PSI::Stage::Geometry", stages.Geometry);
   SubstituteTag(out.Compute, "//PSI::Stage::Store", store);
 
   out.Vertex = PsiProjectedVS;

@@ -1,11 +1,13 @@
-// PsiComputeProjectorComposer: the programs of the compute-shader projector, composed from the
-// geometry-shader projector's (psi::ComposeShaders), so that both projectors run the same
-// classification and emission code for every feature set. GL-free (plain strings).
+// PsiComputeProjectorComposer: the programs of the compute-shader projector, composed by
+// psi::ComposeShaders from the same templates as the geometry-shader projector's, so that both
+// projectors run the same classification and emission code for every feature set. GL-free (plain
+// strings).
 //
-// The compute shader (Shaders/PsiProjectCS.glsl) holds the composed vertex and geometry shaders
-// as functions; the draw program is a pass-through vertex shader (Shaders/PsiProjectedVS.glsl)
-// that fetches each projected vertex and hands the geometry shader's outputs, under the same
-// names and qualifiers, to the unchanged fragment shader.
+// The compute shader (Shaders/PsiProjectCS.glsl) holds the vertex and geometry code in their
+// function form (psi::StageForm::Functions); the draw program is a pass-through vertex shader
+// (Shaders/PsiProjectedVS.glsl) that fetches each projected vertex and hands the geometry code's
+// outputs (psi::GeometryOutputs), under the same names and qualifiers, to the unchanged fragment
+// shader.
 #ifndef PsiComputeProjectorComposer_h
 #define PsiComputeProjectorComposer_h
 

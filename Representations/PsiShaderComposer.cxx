@@ -25,7 +25,6 @@
 #include "PsiNearClipFS.h"
 #include "PsiNearClipGS.h"
 #include "PsiOpaqueClipFS.h"
-#include "PsiPointIdsGS.h"
 #include "PsiPointIdsVS.h"
 #include "PsiProjectionClassesGS.h"
 #include "PsiSceneDepthFS.h"
@@ -33,6 +32,8 @@
 #include "PsiSeparateOpacityFS.h"
 #include "PsiSeparateOpacityGS.h"
 #include "PsiSeparateOpacityVS.h"
+#include "PsiStageGS.h"
+#include "PsiStageVS.h"
 #include "PsiTransferNodesFS.h"
 #include "PsiTransferTableFS.h"
 #include "PsiVolumeFS.h"
@@ -40,9 +41,7 @@
 #include "PsiVolumeVS.h"
 
 #include <cstdlib>
-#include <map>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -56,20 +55,6 @@ std::string Define(const char* name, int value)
   return std::string("#define ") + name + " " + std::to_string(value) + "\n";
 }
 
-// Components of a GLSL type (the types the geometry shader outputs).
-int Components(const std::string& type)
-{
-  static const std::map<std::string, int> sizes = { { "float", 1 }, { "int", 1 }, { "uint", 1 },
-    { "vec2", 2 }, { "ivec2", 2 }, { "uvec2", 2 }, { "vec3", 3 }, { "ivec3", 3 }, { "uvec3", 3 },
-    { "vec4", 4 }, { "ivec4", 4 }, { "uvec4", 4 }, { "mat2", 4 }, { "mat3", 9 }, { "mat4", 16 } };
-  const auto it = sizes.find(type);
-  if (it == sizes.end())
-  {
-    throw std::logic_error("PsiShaderComposer: geometry-shader output of unknown type " + type);
-  }
-  return it->second;
-}
-
 bool Uses(const char* source, const char* name)
 {
   return std::string(source).find(name) != std::string::npos;
@@ -81,13 +66,6 @@ const char* SegmentsSource(const ShaderFeatures& f, const char* ray, const char*
   const char* screenLinear)
 {
   return f.Silhouette ? ray : f.ExactSegments ? exact : screenLinear;
-}
-
-// A separate opacity array is drawn with silhouettes and without adaptive sampling (the mapper
-// chooses so); another feature set ignores it.
-bool SeparateOpacityOn(const ShaderFeatures& f)
-{
-  return f.SeparateOpacity && f.Silhouette && !f.Adaptive;
 }
 
 // Depth-peeled draws clip the silhouettes' ray segments (the mapper draws silhouettes then).
@@ -124,7 +102,38 @@ std::set<std::string> SeparateOpacitySkips(const ShaderFeatures& f, bool split)
   return skip;
 }
 
-std::string ComposeGeometry(const ShaderFeatures& f)
+// The stage form's pieces: in the Stages form the entry points, the geometry shader's emission
+// and extension (PsiStage{VS,GS}.glsl); the Functions form has its own in PsiProjectCS.glsl.
+void ApplyStageForm(std::string& src, const char* stageFile, StageForm form)
+{
+  if (form == StageForm::Stages)
+  {
+    Apply(src, stageFile);
+  }
+  else
+  {
+    ReplaceTag(src, "//VTK::System::Dec", ""); // the compute shader has its own #version
+  }
+}
+
+std::string ComposeVertex(const ShaderFeatures& f, StageForm form)
+{
+  std::string vs = PsiVolumeVS;
+  SubstituteTag(vs, "//PSI::Stage::Dec", VertexStageDeclarations(f, form));
+  ApplyStageForm(vs, PsiStageVS, form);
+  if (f.IsoCount > 0 || f.NearClip)
+  {
+    Apply(vs, PsiPointIdsVS);
+  }
+  if (SeparateOpacityDrawn(f))
+  {
+    Apply(vs, PsiSeparateOpacityVS);
+  }
+  RemoveTags(vs);
+  return vs;
+}
+
+std::string ComposeGeometry(const ShaderFeatures& f, StageForm form)
 {
   const bool iso = f.IsoCount > 0;
   const bool isoTriangles = iso && f.IsoTriangles;
@@ -135,11 +144,9 @@ std::string ComposeGeometry(const ShaderFeatures& f)
     counts += Define("PSI_ISO_COUNT", f.IsoCount);
   }
   SubstituteTag(gs, "//PSI::Counts::Dec", counts);
+  SubstituteTag(gs, "//PSI::Stage::Dec", GeometryStageDeclarations(f, form));
+  ApplyStageForm(gs, PsiStageGS, form);
   Apply(gs, PsiProjectionClassesGS);
-  if (iso || f.NearClip)
-  {
-    Apply(gs, PsiPointIdsGS);
-  }
   if (f.Silhouette || f.ExactSegments || iso)
   {
     Apply(gs, PsiCellGradientGS);
@@ -160,7 +167,7 @@ std::string ComposeGeometry(const ShaderFeatures& f)
     Apply(gs, PsiEarlyDiscardGS,
       { isoTriangles ? "//PSI::EarlyDiscard::Cell" : "//PSI::EarlyDiscard::Piece" });
   }
-  if (SeparateOpacityOn(f))
+  if (SeparateOpacityDrawn(f))
   {
     Apply(gs, PsiSeparateOpacityGS);
   }
@@ -169,35 +176,9 @@ std::string ComposeGeometry(const ShaderFeatures& f)
 }
 } // namespace
 
-std::vector<ShaderVariable> DeclaredOutputs(const std::string& src)
+bool SeparateOpacityDrawn(const ShaderFeatures& f)
 {
-  std::vector<ShaderVariable> outputs;
-  for (const std::string& raw : Lines(src))
-  {
-    std::istringstream words(raw.substr(0, raw.find("//")));
-    std::vector<std::string> w;
-    for (std::string word; words >> word;)
-    {
-      w.push_back(word);
-    }
-    ShaderVariable v;
-    size_t i = 0;
-    while (i < w.size() &&
-      (w[i] == "flat" || w[i] == "smooth" || w[i] == "noperspective" || w[i] == "centroid"))
-    {
-      v.Qualifiers += w[i++] + " ";
-    }
-    if (i + 2 >= w.size() || w[i] != "out")
-    {
-      continue; // not "out <type> <name>"
-    }
-    v.Type = w[i + 1];
-    v.Name = w[i + 2].substr(0, w[i + 2].find_first_of("[;"));
-    const size_t bracket = w[i + 2].find('[');
-    v.Count = bracket == std::string::npos ? 1 : std::stoi(w[i + 2].substr(bracket + 1));
-    outputs.push_back(v);
-  }
-  return outputs;
+  return f.SeparateOpacity && f.Silhouette && !f.Adaptive;
 }
 
 bool ShaderFeatures::operator==(const ShaderFeatures& o) const
@@ -244,7 +225,7 @@ std::string ShaderFeatures::Defines() const
   {
     d += "#define PSI_EARLY_DISCARD\n";
   }
-  if (SeparateOpacityOn(*this))
+  if (SeparateOpacityDrawn(*this))
   {
     d += "#define PSI_SEPARATE_OPACITY\n";
   }
@@ -297,7 +278,7 @@ int ProjectedTrianglesMax(const ShaderFeatures& f)
 int GeometryOutputComponentsPerVertex(const ShaderFeatures& f)
 {
   int total = 4; // gl_Position
-  for (const ShaderVariable& v : DeclaredOutputs(ComposeGeometry(f)))
+  for (const ShaderVariable& v : GeometryOutputs(f))
   {
     total += v.Count * Components(v.Type);
   }
@@ -318,7 +299,7 @@ const char* IntegratorSource(int method)
     (info ? *info : GetIntegrationMethodInfo(Method::PartialPreIntegration)).GlslName);
 }
 
-ShaderSources ComposeShaders(const ShaderFeatures& f, const char* integratorSource)
+ShaderSources ComposeShaders(const ShaderFeatures& f, const char* integratorSource, StageForm form)
 {
   const char* integrator = integratorSource ? integratorSource : IntegratorSource(f.Method);
   const bool iso = f.IsoCount > 0;
@@ -327,18 +308,8 @@ ShaderSources ComposeShaders(const ShaderFeatures& f, const char* integratorSour
   const bool split = isoPerFragment || f.Adaptive;
   ShaderSources out;
 
-  out.Vertex = PsiVolumeVS;
-  if (iso || f.NearClip)
-  {
-    Apply(out.Vertex, PsiPointIdsVS);
-  }
-  if (SeparateOpacityOn(f))
-  {
-    Apply(out.Vertex, PsiSeparateOpacityVS);
-  }
-  RemoveTags(out.Vertex);
-
-  out.Geometry = ComposeGeometry(f);
+  out.Vertex = ComposeVertex(f, form);
+  out.Geometry = ComposeGeometry(f, form);
 
   std::string& fs = out.Fragment;
   fs = PsiVolumeFS;
@@ -416,7 +387,7 @@ ShaderSources ComposeShaders(const ShaderFeatures& f, const char* integratorSour
   {
     Apply(fs, PsiAdaptiveFS);
   }
-  if (SeparateOpacityOn(f))
+  if (SeparateOpacityDrawn(f))
   {
     Apply(fs, PsiSeparateOpacityFS, SeparateOpacitySkips(f, split)); // after the sites' features
   }

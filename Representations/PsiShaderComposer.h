@@ -13,6 +13,7 @@
 #ifndef PsiShaderComposer_h
 #define PsiShaderComposer_h
 
+#include "PsiStageInterface.h"
 #include "PsiVolumeRepresentationsModule.h"
 
 #include <string>
@@ -78,6 +79,10 @@ struct PSIVOLUMEREPRESENTATIONS_EXPORT ShaderFeatures
 /// else the silhouette.
 PSIVOLUMEREPRESENTATIONS_EXPORT bool SilhouetteChosen(int decomposition);
 
+/// Whether `f` draws a separate opacity array: with silhouettes and without adaptive sampling (the
+/// mapper chooses so); another feature set ignores it.
+PSIVOLUMEREPRESENTATIONS_EXPORT bool SeparateOpacityDrawn(const ShaderFeatures& f);
+
 /// Geometry-shader output vertices: the largest projected decomposition (the fan's 8 vertices:
 /// class 2, a strip of 5 and one of 3; the silhouette and the near-plane screen box have 4), and
 /// with marching tetrahedra that once per volume piece (IsoCount + 1) plus a 4-vertex strip per
@@ -88,8 +93,7 @@ PSIVOLUMEREPRESENTATIONS_EXPORT int GeometryOutputVertices(const ShaderFeatures&
 /// tetrahedra 4 per volume piece plus 2 per surface. The compute-shader projector sizes its
 /// slots with it.
 PSIVOLUMEREPRESENTATIONS_EXPORT int ProjectedTrianglesMax(const ShaderFeatures& f);
-/// Output components per geometry-shader vertex: gl_Position plus every `out` variable declared
-/// in the composed geometry shader (counted from its source, so it follows the GLSL).
+/// Output components per geometry-shader vertex: gl_Position plus psi::GeometryOutputs(f).
 PSIVOLUMEREPRESENTATIONS_EXPORT int GeometryOutputComponentsPerVertex(const ShaderFeatures& f);
 /// Whether the composed geometry shader fits GL_MAX_GEOMETRY_OUTPUT_VERTICES and
 /// GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS.
@@ -101,17 +105,6 @@ PSIVOLUMEREPRESENTATIONS_EXPORT bool FitsGeometryOutputLimits(
 /// pre-integration, the mapper's default.
 PSIVOLUMEREPRESENTATIONS_EXPORT const char* IntegratorSource(int method);
 
-/// A stage output: `[qualifiers] out <Type> <Name>[<Count>];`.
-struct ShaderVariable
-{
-  std::string Qualifiers; ///< "flat ", "smooth ", "noperspective ", ... or empty
-  std::string Type;
-  std::string Name;
-  int Count = 1;
-};
-/// The `out` variables declared in `src`, one declaration a line, in order.
-PSIVOLUMEREPRESENTATIONS_EXPORT std::vector<ShaderVariable> DeclaredOutputs(const std::string& src);
-
 struct ShaderSources
 {
   std::string Vertex, Geometry, Fragment;
@@ -120,9 +113,11 @@ struct ShaderSources
 /// Composes the program for `f`. `integratorSource` is substituted at //PSI::Integrator::Impl;
 /// nullptr means IntegratorSource(f.Method). The integrator's inputs (Psi table, unit distance,
 /// pre-integrated table: PsiIntegratorInputsFS.glsl) are declared when its source uses them.
+/// `form` (PsiStageInterface.h): Vertex and Geometry as shaders, or as the functions
+/// psiVertexMain and psiGeometryMain of the compute-shader projector; Fragment is the same.
 /// Throws std::logic_error when a section finds no tag to replace (a template error).
-PSIVOLUMEREPRESENTATIONS_EXPORT ShaderSources ComposeShaders(
-  const ShaderFeatures& f, const char* integratorSource = nullptr);
+PSIVOLUMEREPRESENTATIONS_EXPORT ShaderSources ComposeShaders(const ShaderFeatures& f,
+  const char* integratorSource = nullptr, StageForm form = StageForm::Stages);
 
 } // namespace psi
 

@@ -6,9 +6,8 @@
 // rays leave through the other face sharing the triangle's thin edge a-b (the back plane), where
 // one plane intersection per fragment gives the exact thickness and, with the scalar gradient,
 // the back scalar.
-smooth out vec4 frontPoint; // view-space xyz, w = scalar
-flat out vec4 backPlane;    // n . x = w
-flat out vec4 scalarGrad;   // xyz: gradient of the scalar, w: bound on the thickness
+// The outputs (smooth frontPoint; flat backPlane, scalarGrad) are declared by
+// psi::GeometryOutputs (PsiStageInterface.cxx).
 
 // The segment carried by the next vertex: its view-space point and front scalar.
 void setVertexSegment(vec3 p, vec3 seg)

@@ -1,7 +1,7 @@
 //PSI::HAPTSegments::Dec
 // The ray segment as HAPT's (s_f, s_b, l) triple (Maximo et al. 2010 §3.2), interpolated
 // linearly in screen space: exact in parallel projection, approximate in perspective.
-noperspective out vec3 segment; // front scalar, back scalar, thickness
+// The output (noperspective segment) is declared by psi::GeometryOutputs (PsiStageInterface.cxx).
 
 // The segment carried by the next vertex: p is its view-space point (unused here).
 void setVertexSegment(vec3 p, vec3 seg)

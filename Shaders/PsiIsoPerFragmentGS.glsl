@@ -1,10 +1,7 @@
 //PSI::IsoPerFragment::Dec
 // Per-fragment isosurfaces (the "per-pixel" strategy of Maximo et al. 2010 §3.4): the fragment
 // shader meets the surface exactly along each ray; the normal field g(x) = isoG0 + isoJ (x - isoV0)
-// is passed flat.
-flat out vec3 isoG0;
-flat out mat3 isoJ;
-flat out vec3 isoV0;
+// is passed flat (outputs declared by psi::GeometryOutputs, PsiStageInterface.cxx).
 vec3 tetIsoG0 = vec3(0.0);
 mat3 tetIsoJ = mat3(0.0);
 

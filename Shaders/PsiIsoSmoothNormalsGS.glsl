@@ -9,6 +9,6 @@ void fetchNormals()
 {
   for (int k = 0; k < 4; ++k)
   {
-    pointNormal[k] = normalMatrix * texelFetch(pointGradients, int(vsIds[0][k])).xyz;
+    pointNormal[k] = normalMatrix * texelFetch(pointGradients, int(tetIn[0].ids[k])).xyz;
   }
 }

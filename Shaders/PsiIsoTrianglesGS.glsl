@@ -8,10 +8,10 @@
 // behind, surface, in front). Primitives emitted by one invocation are blended in emission
 // order. Surface vertices carry their normal in the segment slot (setVertexNormal).
 uniform float isoValues[PSI_ISO_COUNT]; // ascending
-// piece (one component, to fit more isovalues in the geometry shader's output): j >= 0, the
-// volume between isoValues[j - 1] and isoValues[j] (j = 0 .. PSI_ISO_COUNT, open-ended at the
-// ends), j = PSI_ISO_COUNT + 1 the whole cell; -(i + 1): the surface of isovalue i.
-flat out float piece;
+// The flat output piece (declared by psi::GeometryOutputs, PsiStageInterface.cxx; one
+// component, to fit more isovalues in the geometry shader's output): j >= 0, the volume between
+// isoValues[j - 1] and isoValues[j] (j = 0 .. PSI_ISO_COUNT, open-ended at the ends),
+// j = PSI_ISO_COUNT + 1 the whole cell; -(i + 1): the surface of isovalue i.
 float currentPiece = float(PSI_ISO_COUNT + 1);
 
 //PSI::IsoTriangles::Flat
@@ -32,8 +32,7 @@ void emitIsoVertex(int a, int b, float c)
   vec3 n = mix(pointNormal[a], pointNormal[b], t);
   setFlat(0);
   setVertexNormal(n);
-  gl_Position = VCDCMatrix * vec4(p, 1.0);
-  EmitVertex();
+  psiEmitVertex(VCDCMatrix * vec4(p, 1.0));
 }
 
 // Marching tetrahedra for isovalue i: a vertex is above when s >= c, so a surface exactly on a
@@ -81,7 +80,7 @@ void emitSurface(int i)
       }
     }
   }
-  EndPrimitive();
+  psiEndPrimitive();
 }
 
 // Draws piece j of the cell's volume (skipped when early discard finds it transparent).

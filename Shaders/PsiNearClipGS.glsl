@@ -3,12 +3,11 @@
 // as a screen quad covering their near-clipped projection, and the fragment shader intersects
 // each ray with the tetrahedron exactly (PsiNearClipFS.glsl). clipTet: the point ids (fetched by
 // the fragment shader), x = -1 when not clipped; one output slot instead of four vertices keeps
-// the geometry-shader output small.
+// the geometry-shader output small (declared by psi::GeometryOutputs, PsiStageInterface.cxx).
 uniform float nearZ; // view-space z of the near plane (negative)
-flat out ivec4 clipTet;
 
 //PSI::NearClip::Flat
-  clipTet = isClipped == 1 ? ivec4(vsIds[0]) : ivec4(-1);
+  clipTet = isClipped == 1 ? ivec4(tetIn[0].ids) : ivec4(-1);
 
 //PSI::NearClip::Impl
 // Extends the screen box lo..hi by the projection of view-space point p (in front of the eye).
@@ -50,10 +49,9 @@ void emitClipped()
   {
     setFlat(1);
     setVertexSegment(vec3(0.0), vec3(0.0));
-    gl_Position = vec4(corner[k], -1.0, 1.0); // on the near plane: passes the depth test
-    EmitVertex();
+    psiEmitVertex(vec4(corner[k], -1.0, 1.0)); // on the near plane: passes the depth test
   }
-  EndPrimitive();
+  psiEndPrimitive();
 }
 
 //PSI::NearClip::Volume

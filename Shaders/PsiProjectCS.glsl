@@ -6,13 +6,13 @@
 // all of a CPU driver's threads (Mesa llvmpipe runs vertex and geometry shading on one), and on
 // GPUs compute is the successor of the geometry shader.
 //
-// psi::ComposeComputeProjector (PsiComputeProjectorComposer.cxx) builds this program from the
-// composed vertex and geometry shaders: their `main`s become psiVertexMain and psiGeometryMain,
-// the stage's inputs and outputs become globals, and EmitVertex/EndPrimitive become
-// psiEmitVertex/psiEndPrimitive below. Each tetrahedron owns a slot of PSI_SLOT_VERTICES
-// vertices (PSI_VERTEX_VEC4S uvec4 each, the bits of the clip position, then of the outputs) and 3
-// PSI_SLOT_TRIANGLES indices; the strips the geometry code emits are written as indexed
-// triangles (v-2, v-1, v), so each triangle's last vertex carries its flat outputs as the
+// psi::ComposeComputeProjector (PsiComputeProjectorComposer.cxx) fills it with the vertex and
+// geometry code composed in their function form (psi::StageForm::Functions, PsiStageInterface.h):
+// psiVertexMain fills tetOut, main() copies it to tetIn[0], and psiGeometryMain sets its outputs
+// (globals) and calls psiEmitVertex/psiEndPrimitive below. Each tetrahedron owns a slot of
+// PSI_SLOT_VERTICES vertices (PSI_VERTEX_VEC4S uvec4 each, the bits of the clip position, then of
+// the outputs) and 3 PSI_SLOT_TRIANGLES indices; the strips the geometry code emits are written as
+// indexed triangles (v-2, v-1, v), so each triangle's last vertex carries its flat outputs as the
 // provoking vertex of a strip would, and unused indices are the primitive-restart index.
 layout(local_size_x = 64) in;
 
@@ -23,7 +23,6 @@ layout(std430, binding = 3) writeonly buffer PsiProjectedIndices { uint projecte
 uniform uint firstTet; // this pass draws tetPoints[firstTet, firstTet + tetCount)
 uniform uint tetCount;
 
-vec4 psiPosition = vec4(0.0); // gl_Position of the geometry code
 uint psiSlot = 0u; // this tetrahedron's slot in this pass
 int psiEmitted = 0;// vertices written to the slot
 int psiStrip = 0;  // vertices of the current strip
@@ -31,24 +30,28 @@ int psiTriangles = 0;// triangles written to the slot
 
 //PSI::Stage::Vertex
 
+// The geometry code's end of a vertex and of a strip, defined below its outputs' declarations.
+void psiEmitVertex(vec4 position);
+void psiEndPrimitive();
+
 //PSI::Stage::Geometry
 
-// Writes the current vertex (position and outputs) at vertex `v` of the pass.
-void psiStoreVertex(uint v)
+// Writes vertex `v` of the pass: its clip position, then the geometry code's outputs.
+void psiStoreVertex(uint v, vec4 position)
 {
   uint base = v * uint(PSI_VERTEX_VEC4S);
-  projectedVertices[base] = floatBitsToUint(psiPosition);
+  projectedVertices[base] = floatBitsToUint(position);
 //PSI::Stage::Store
 }
 
-void psiEmitVertex()
+void psiEmitVertex(vec4 position)
 {
   if (psiEmitted >= PSI_SLOT_VERTICES)
   {
     return; // beyond the slot: cannot happen within psi::GeometryOutputVertices
   }
   uint v = psiSlot * uint(PSI_SLOT_VERTICES) + uint(psiEmitted);
-  psiStoreVertex(v);
+  psiStoreVertex(v, position);
   if (psiStrip >= 2 && psiTriangles < PSI_SLOT_TRIANGLES)
   {
     uint i = (psiSlot * uint(PSI_SLOT_TRIANGLES) + uint(psiTriangles)) * 3u;
@@ -78,6 +81,7 @@ void main()
   psiTriangles = 0;
   tetPointIds = tetPoints[firstTet + psiSlot];
   psiVertexMain();
+  tetIn[0] = tetOut;
   psiGeometryMain();
   for (int t = psiTriangles; t < PSI_SLOT_TRIANGLES; ++t)
   {

@@ -72,27 +72,27 @@ void emitFan()
   {
     emitThin(p0); emitThin(p1); setEdge(p0, p1); emitThick();
     setEdge(p1, p2); emitThin(p2); setEdge(p2, p0); emitThin(p0);
-    EndPrimitive();
+    psiEndPrimitive();
   }
   else if (cls == 2)
   {
     // silhouette quad p0 p2 p1 p3 around the crossing
     emitThin(p0); emitThin(p2); setEdge(p0, p2); emitThick();
     setEdge(p2, p1); emitThin(p1); setEdge(p1, p3); emitThin(p3);
-    EndPrimitive();
+    psiEndPrimitive();
     emitThin(p3); emitThin(p0); setEdge(p3, p0); emitThick();
-    EndPrimitive();
+    psiEndPrimitive();
   }
   else if (cls == 3)
   {
     emitThin(p1); emitThin(p2); setEdge(p1, p2); emitThick();
     setEdge(p2, p0); emitThin(p0);
-    EndPrimitive();
+    psiEndPrimitive();
   }
   else if (cls == 4)
   {
     emitThin(p0); emitThin(p1); setEdge(p0, p1); emitThick();
-    EndPrimitive();
+    psiEndPrimitive();
   }
 }
 
@@ -108,8 +108,7 @@ void emitCover(vec2 q, float z)
 {
   setFlat(0);
   setVertexSegment(viewP[p0], vec3(scalar[p0], scalar[p0], 0.0));
-  gl_Position = vec4(q, z, 1.0);
-  EmitVertex();
+  psiEmitVertex(vec4(q, z, 1.0));
 }
 
 // Covers the convex quad q0 q1 q2 q3 (boundary order) with one triangle when that adds at most
@@ -157,5 +156,5 @@ void emitSilhouette()
   {
     emitThin(p0); emitThin(p1); emitThin(p2);
   }
-  EndPrimitive();
+  psiEndPrimitive();
 }

@@ -25,12 +25,8 @@
 // (Interpolating such terms as varyings would save the fragment shader a few multiply-adds, but
 // the rasterizer's clipping of large triangles near the eye does not keep them exact, and on
 // llvmpipe the interpolated inputs' setup costs what the flat ones save.)
-flat out vec4 rayFace0;    // p0 of each face, its lowest bit 1 where the ray enters (below)
-flat out vec4 rayFaceX;    // px
-flat out vec4 rayFaceY;    // py
-flat out vec4 scalarRay;   // a0, b0, c_x, c_y: a = a0 + k u, b = b0 + (1 - k) u with
-                           // u = x c_x + y c_y and k = 1 in parallel projection, else 0
-smooth out vec3 isoNormal; // marching-tetrahedra surface vertices only
+// The outputs (flat rayFace0, rayFaceX, rayFaceY, scalarRay; smooth isoNormal) are declared by
+// psi::GeometryOutputs (PsiStageInterface.cxx).
 
 uniform vec3 pixelRayOrigin[3]; // O = [0] + x [1] + y [2]
 uniform vec3 pixelRayStep[3];   // S likewise

@@ -1,5 +1,5 @@
 //VTK::System::Dec
-#extension GL_ARB_shader_bit_encoding : enable
+//PSI::Stage::Extensions
 //PSI::Counts::Dec
 // PsiVolumeGS: projects one tetrahedron and emits its Shirley-Tuchman decomposition
 // (1-4 triangles, Maximo et al. 2010 §3.2) carrying front scalar, back scalar and thickness.
@@ -13,14 +13,15 @@
 // Screen-space positions are interpolated back into 3D with perspective-correct weights
 // (lambda_i / w_i). Thin vertices carry (s, s, 0); the thick vertex carries
 // (s_front, s_back, length).
+//
+// psi::ComposeShaders writes this stage in one of two forms (PsiStageInterface.cxx): a geometry
+// shader, or the function psiGeometryMain of the compute-shader projector (PsiProjectCS.glsl).
+// The form's declarations replace //PSI::Stage::Dec: tetIn[0], the tetrahedron from the vertex
+// code; the outputs each feature writes per vertex (psi::GeometryOutputs); and
+// psiEmitVertex(position) / psiEndPrimitive(), which end a vertex and a strip.
 
-layout(points) in;
-layout(triangle_strip, max_vertices = PSI_GS_MAX_VERTICES) out;
-
-in vec4 vsP0[];
-in vec4 vsP1[];
-in vec4 vsP2[];
-in vec4 vsP3[];
+//PSI::Stage::Dec
+//PSI::Stage::Emit
 
 uniform mat4 VCDCMatrix;
 uniform int parallelProjection;
@@ -33,7 +34,6 @@ vec2 ndc[4] = vec2[4](vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0));
 vec3 thickFront = vec3(0.0);
 vec3 thickSeg = vec3(0.0);
 
-//PSI::PointIds::Dec
 //PSI::CellGradient::Dec
 //PSI::SeparateOpacity::Dec
 //PSI::HAPTSegments::Dec
@@ -87,16 +87,14 @@ void emitThin(int i)
 {
   setFlat(0);
   setVertexSegment(viewP[i], vec3(scalar[i], scalar[i], 0.0));
-  gl_Position = clipP[i];
-  EmitVertex();
+  psiEmitVertex(clipP[i]);
 }
 
 void emitThick()
 {
   setFlat(0);
   setVertexSegment(thickFront, thickSeg);
-  gl_Position = VCDCMatrix * vec4(thickFront, 1.0);
-  EmitVertex();
+  psiEmitVertex(VCDCMatrix * vec4(thickFront, 1.0));
 }
 
 // Orders the two ends of the thick ray segment into front and back.
@@ -130,9 +128,9 @@ void emitVolume(bool nearClipped)
 
 //PSI::IsoTriangles::Impl
 
-void main()
+void psiGeometryMain()
 {
-  vec4 raw[4] = vec4[4](vsP0[0], vsP1[0], vsP2[0], vsP3[0]);
+  vec4 raw[4] = tetIn[0].points;
   float smin = min(min(raw[0].w, raw[1].w), min(raw[2].w, raw[3].w));
   float smax = max(max(raw[0].w, raw[1].w), max(raw[2].w, raw[3].w));
   float dmin = smin, dmax = smax; // the scalar range that decides early discard
@@ -165,3 +163,4 @@ void main()
 //PSI::IsoTriangles::Emit
   emitVolume(nearClipped);
 }
+//PSI::Stage::Main

@@ -165,7 +165,7 @@ MUTATIONS = [
     Mutation("separate_opacity_near_clip_vertex", "Shaders/PsiSeparateOpacityFS.glsl",
              "opacityFront = tetO.x + dot(gO, pf - V[0]);", "opacityFront = tetO.x;", SEPARATE),
     Mutation("separate_opacity_discard_on_color", "Shaders/PsiSeparateOpacityGS.glsl",
-             "dmin = min(min(vsOpacity[0].x, vsOpacity[0].y), min(vsOpacity[0].z, vsOpacity[0].w));",
+             "dmin = min(min(cornerOpacity.x, cornerOpacity.y), min(cornerOpacity.z, cornerOpacity.w));",
              "dmin = smin;", SEPARATE),
     # --- The frame plan (Representations/PsiFramePlan.cxx): each effect and table exactly when
     # the scene calls for it.

@@ -147,8 +147,11 @@ void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
     bool On;
   };
   const Expect expects[] = {
-    { &vs, "flat out uvec4 vsIds;", iso || f.NearClip },
-    { &gs, "flat in uvec4 vsIds[];", iso || f.NearClip },
+    { &vs, "flat uvec4 ids;", iso || f.NearClip },
+    { &gs, "flat uvec4 ids;", iso || f.NearClip },
+    { &vs, "out PsiTetrahedron", true },
+    { &gs, "in PsiTetrahedron", true },
+    { &gs, "void main()", true },
     { &gs, "uniform int classTable[81];", true },
     { &gs, "vec3 gradient = ", exact || sil || iso },
     { &gs, "noperspective out vec3 segment;", !exact && !sil },
@@ -159,7 +162,7 @@ void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
     { &fs, "floatBitsToUint(rayFace0) & 1u", sil },
     { &gs, "emitSilhouette();", sil },
     { &gs, "emitFan();", !sil },
-    { &vs, "out vec4 vsOpacity;", separate },
+    { &vs, "vec4 opacity;", separate },
     { &gs, "flat out vec4 opacityPlane;", separate },
     { &fs, "flat in vec4 opacityPlane;", separate },
     { &fs, "opacityBack = mix(opacityFront, opacityBack, toOpaque", separate && f.OpaqueClip },
@@ -226,6 +229,34 @@ void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
       !psi::FitsGeometryOutputLimits(f, vertices, vertices * components - 1),
     "FitsGeometryOutputLimits:\n%s", what.c_str());
 }
+// The function form of the compute-shader projector: the same code with no stage interface left,
+// and every output of the geometry code declared once as a global.
+void CheckFunctionForm(const psi::ShaderFeatures& f)
+{
+  const std::string what = Describe(f);
+  const psi::ShaderSources s = psi::ComposeShaders(f, nullptr, psi::StageForm::Functions);
+  const std::string code = s.Vertex + s.Geometry;
+  PSI_CHECK(Leftovers(code) == 0, "tags or #if left in the function form:\n%s", what.c_str());
+  // Built-ins and declarations of a stage: none may be left.
+  static const std::regex stageOnly("\\b(gl_Position|EmitVertex|EndPrimitive)\\b|void main\\(|layout\\(|"
+                                    "#extension|//VTK::|(^|\n)[ a-z]*\\b(in|out) \\w+ \\w+(\\[\\])?;");
+  std::smatch m;
+  PSI_CHECK(!std::regex_search(code, m, stageOnly), "'%s' in the function form:\n%s",
+    m.str().c_str(), what.c_str());
+  for (const char* entry : { "void psiVertexMain()", "void psiGeometryMain()", "PsiTetrahedron tetIn[1];",
+         "PsiTetrahedron tetOut;", "psiEmitVertex(" })
+  {
+    PSI_CHECK(Has(code, entry), "'%s' missing from the function form:\n%s", entry, what.c_str());
+  }
+  for (const psi::ShaderVariable& v : psi::GeometryOutputs(f))
+  {
+    const std::string global = "\n" + v.Type + " " + v.Name + ";";
+    PSI_CHECK(Has(s.Geometry, global.c_str()) &&
+        Has(s.Fragment, (" in " + v.Type + " " + v.Name + ";").c_str()),
+      "output %s: a global of the geometry code, an input of the fragment shader:\n%s",
+      v.Name.c_str(), what.c_str());
+  }
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -270,6 +301,7 @@ int main(int argc, char* argv[])
       continue;
     }
     CheckComposition(f, s);
+    CheckFunctionForm(f);
     PSI_CHECK(f == f && !(f != f), "operator==");
     const std::string key = f.Key();
     const std::string sources = s.Vertex + "\n--\n" + s.Geometry + "\n--\n" + s.Fragment;
