@@ -6,6 +6,7 @@ pvpython Benchmarks/bench_scale.py [--sizes 20 40 60] [--bluntfin] [--size 512] 
                                               "Projected tetra"
                                               "Bunyk ray cast"]
                                    [--bunyk-max-tets 400000] [--threads 1 2] [--budget 300]
+                                   [--plot scale.png]
 
 --sizes are half-extents of ParaView's Wavelet, tetrahedralized (5 tets per voxel): 20 gives
 320,000 tets, 40 gives 2,560,000 and 60 gives 8,640,000. For each mesh and mapper it prints:
@@ -23,7 +24,9 @@ pvpython Benchmarks/bench_scale.py [--sizes 20 40 60] [--bluntfin] [--size 512] 
 "Psi Volume GS" the geometry shader, "Psi Volume CS" the compute shader ("Psi Volume": Auto).
 "Psi Volume GS fan" draws the geometry shader's Shirley-Tuchman fan instead of the silhouettes
 (the two give the same image). Bunyk runs only up to
---bunyk-max-tets. Ratios are taken within one run; absolute times vary with the machine."""
+--bunyk-max-tets. Ratios are taken within one run; absolute times vary with the machine. --plot draws s/frame
+against tetrahedra (log-log, with each median's range over the rounds) for each mapper: the
+Wavelet sizes as lines, the Blunt Fin as separate points."""
 import argparse
 import json
 import os
@@ -154,6 +157,7 @@ def main():
     p.add_argument("--timeout", type=float, default=3000)
     p.add_argument("--budget", type=float, default=300,
                    help="seconds of interleaved timing rounds per mesh and thread count")
+    p.add_argument("--plot", help="PNG of s/frame against tetrahedra")
     args = p.parse_args()
     if args.worker:
         worker(args)
@@ -162,6 +166,7 @@ def main():
     print("%-10s %-20s %11s %9s %9s %9s %9s %8s %12s" % (
         "tets", "mapper", "first (s)", "s/frame", "speed/PT", "RSS (MB)", "RSS/PT",
         "%d->%d thr" % tuple(args.threads), "step/frame"))
+    measured = []
     for data in datasets:
         mappers = [m for m in args.mappers if not (
             m == "Bunyk ray cast" and data != "bluntfin" and
@@ -178,6 +183,43 @@ def main():
                 r["rss"] / pt["rss"] if pt else float("nan"),
                 s1["spf"] / r["spf"] if s1 and s1["spf"] else float("nan"),
                 r["step"] / r["plain"]), flush=True)
+            measured.append(dict(r, data=data, mapper=mapper))
+    if args.plot and measured:
+        plot(measured, args)
+
+
+def plot(rows, args):
+    """s/frame against tetrahedra for each mapper, from this run's rows."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6.4, 4.2), dpi=100)
+    for i, mapper in enumerate(dict.fromkeys(r["mapper"] for r in rows)):
+        color = "C%d" % i
+        mine = [r for r in rows if r["mapper"] == mapper]
+        for wavelet, style in ((True, "o-"), (False, "D")):
+            pts = sorted((r for r in mine if (r["data"] != "bluntfin") == wavelet),
+                         key=lambda r: r["cells"])
+            if not pts:
+                continue
+            x = [r["cells"] for r in pts]
+            y = [r["spf"] for r in pts]
+            err = [[r["spf"] - r.get("spf_min", r["spf"]) for r in pts],
+                   [r.get("spf_max", r["spf"]) - r["spf"] for r in pts]]
+            ax.errorbar(x, y, yerr=err, fmt=style, color=color, capsize=3,
+                        label=mapper + ("" if wavelet else " (Blunt Fin)"),
+                        fillstyle="full" if wavelet else "none")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("tetrahedra")
+    ax.set_ylabel("s/frame (median over rounds, %d llvmpipe threads)" % args.threads[1])
+    ax.set_title("%d x %d, ParaView's Wavelet tetrahedralized, and the Blunt Fin" % (
+        args.size, args.size), fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(args.plot)
+    print("plot: %s" % args.plot)
 
 
 if __name__ == "__main__":

@@ -18,7 +18,14 @@ while [ $# -gt 0 ] && [ "$1" != "--" ]; do
 done
 [ "${1:-}" = "--" ] && shift
 [ $# -gt 0 ] || { echo "bench-record: no command given" >&2; exit 2; }
-cmd=$*
+cmd="" # the command as one can paste it: arguments with blanks in double quotes
+for arg in "$@"; do
+  case "$arg" in
+    *[[:space:]]*) cmd+=" \"$arg\"" ;;
+    *) cmd+=" $arg" ;;
+  esac
+done
+cmd=${cmd# }
 out=$(mktemp)
 if [ -z "${DISPLAY:-}" ]; then
   wrap=(xvfb-run -a -s "-screen 0 1280x1024x24 -noreset")
