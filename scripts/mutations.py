@@ -367,6 +367,12 @@ MUTATIONS = [
              "m.Points4[4 * i + 3] = UnitFloat(m.ScalarRange, raw.S[i]);",
              "m.Points4[4 * i + 3] = UnitFloat(m.ScalarRange, static_cast<float>(raw.S[i]));",
              ["PsiCore.TetMesh"] + SCALAR_RANGES),
+    # --- The stages' two forms (Representations/PsiStageInterface.cxx, Shaders/PsiProjectCS.glsl).
+    Mutation("compute_tetrahedron_not_handed_on", "Shaders/PsiProjectCS.glsl",
+             "  tetIn[0] = tetOut;\n", "", ["PsiRepresentations.VolumeRender.compute"]),
+    Mutation("tetrahedron_ids_only_for_isosurfaces", "Representations/PsiStageInterface.cxx",
+             "if (f.IsoCount > 0 || f.NearClip)", "if (f.IsoCount > 0)",
+             ["PsiRepresentations.ShaderComposition"]),
     Mutation("prefix_spike_between_samples_ignored", "Core/PsiTransferFunctionAnalysis.cxx",
              "if (n[1] > 0 && x >= 0 && x <= table.Size - 1)",
              "if (n[1] > 1 && x >= 0 && x <= table.Size - 1)",
