@@ -31,7 +31,9 @@ def main(argv):
         head += ["%s, %d tets, %d²: s/frame (min-max)" % (label, rep["cells"], rep["size"][0]),
                  "time / Average", "mean err", "max err"]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-    names = [r["name"] for r in scenes[0][1]["rows"]]
+    names = []  # every scene's rows, in the order they first appear
+    for _, rep in scenes:
+        names += [r["name"] for r in rep["rows"] if r["name"] not in names]
     for name in names:
         row = [name]
         for _, rep in scenes:
