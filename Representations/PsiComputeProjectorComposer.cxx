@@ -4,38 +4,12 @@
 #include "PsiProjectedVS.h"
 #include "PsiShaderTags.h"
 
-#include <map>
 #include <stdexcept>
 
 namespace psi
 {
 namespace
 {
-// How one stage output travels through vec4 texels: `Columns` texels, each holding `Size`
-// components of kind float, int or uint (the integer kinds as float bits).
-struct Packing
-{
-  std::string Kind; // "float", "int", "uint"
-  int Size = 1;
-  int Columns = 1;
-};
-
-Packing PackingOf(const std::string& type)
-{
-  static const std::map<std::string, Packing> packings = { { "float", { "float", 1, 1 } },
-    { "vec2", { "float", 2, 1 } }, { "vec3", { "float", 3, 1 } }, { "vec4", { "float", 4, 1 } },
-    { "int", { "int", 1, 1 } }, { "ivec2", { "int", 2, 1 } }, { "ivec3", { "int", 3, 1 } },
-    { "ivec4", { "int", 4, 1 } }, { "uint", { "uint", 1, 1 } }, { "uvec2", { "uint", 2, 1 } },
-    { "uvec3", { "uint", 3, 1 } }, { "uvec4", { "uint", 4, 1 } }, { "mat2", { "float", 2, 2 } },
-    { "mat3", { "float", 3, 3 } }, { "mat4", { "float", 4, 4 } } };
-  const auto it = packings.find(type);
-  if (it == packings.end())
-  {
-    throw std::logic_error("PsiComputeProjectorComposer: cannot pass on an output of type " + type);
-  }
-  return it->second;
-}
-
 const char* Swizzle(int size)
 {
   static const char* s[] = { "", ".x", ".xy", ".xyz", "" };
@@ -44,7 +18,7 @@ const char* Swizzle(int size)
 
 // One uvec4 texel from `value` (a float, int or uint scalar or vector of `p.Size`): the bits,
 // so that every value (integers, NaN, denormals) passes unchanged.
-std::string ToTexel(const Packing& p, const std::string& value)
+std::string ToTexel(const TypeShape& p, const std::string& value)
 {
   const std::string n = p.Size > 1 ? std::to_string(p.Size) : "";
   const std::string bits = p.Kind == "float" ? "floatBitsToUint(" + value + ")"
@@ -55,7 +29,7 @@ std::string ToTexel(const Packing& p, const std::string& value)
 }
 
 // The value of `p.Size` components back from uvec4 texel expression `texel`.
-std::string FromTexel(const Packing& p, const std::string& texel)
+std::string FromTexel(const TypeShape& p, const std::string& texel)
 {
   const std::string v = texel + Swizzle(p.Size);
   const std::string n = p.Size > 1 ? std::to_string(p.Size) : "";
@@ -86,8 +60,8 @@ ComputeProjectorSources ComposeComputeProjector(
     {
       throw std::logic_error("PsiComputeProjectorComposer: cannot pass on the array " + v.Name);
     }
-    const Packing p = PackingOf(v.Type);
-    declare += Line(v.Qualifiers + "out " + v.Type + " " + v.Name + ";");
+    const TypeShape p = ShapeOf(v.Type); // one texel per column
+    declare += Line(OutputDeclaration(v));
     std::string columns;
     for (int c = 0; c < p.Columns; ++c, ++texel)
     {

@@ -31,17 +31,31 @@ std::string Members(const ShaderFeatures& f, bool qualified)
 }
 } // namespace
 
-int Components(const std::string& type)
+TypeShape ShapeOf(const std::string& type)
 {
-  static const std::map<std::string, int> sizes = { { "float", 1 }, { "int", 1 }, { "uint", 1 },
-    { "vec2", 2 }, { "ivec2", 2 }, { "uvec2", 2 }, { "vec3", 3 }, { "ivec3", 3 }, { "uvec3", 3 },
-    { "vec4", 4 }, { "ivec4", 4 }, { "uvec4", 4 }, { "mat2", 4 }, { "mat3", 9 }, { "mat4", 16 } };
-  const auto it = sizes.find(type);
-  if (it == sizes.end())
+  static const std::map<std::string, TypeShape> shapes = { { "float", { "float", 1, 1 } },
+    { "vec2", { "float", 2, 1 } }, { "vec3", { "float", 3, 1 } }, { "vec4", { "float", 4, 1 } },
+    { "int", { "int", 1, 1 } }, { "ivec2", { "int", 2, 1 } }, { "ivec3", { "int", 3, 1 } },
+    { "ivec4", { "int", 4, 1 } }, { "uint", { "uint", 1, 1 } }, { "uvec2", { "uint", 2, 1 } },
+    { "uvec3", { "uint", 3, 1 } }, { "uvec4", { "uint", 4, 1 } }, { "mat2", { "float", 2, 2 } },
+    { "mat3", { "float", 3, 3 } }, { "mat4", { "float", 4, 4 } } };
+  const auto it = shapes.find(type);
+  if (it == shapes.end())
   {
     throw std::logic_error("PsiStageInterface: a stage output of unknown type " + type);
   }
   return it->second;
+}
+
+int Components(const std::string& type)
+{
+  const TypeShape s = ShapeOf(type);
+  return s.Size * s.Columns;
+}
+
+std::string OutputDeclaration(const ShaderVariable& v)
+{
+  return v.Qualifiers + "out " + Declarator(v) + ";";
 }
 
 std::vector<ShaderVariable> TetrahedronMembers(const ShaderFeatures& f)
@@ -139,8 +153,7 @@ std::string GeometryStageDeclarations(const ShaderFeatures& f, StageForm form)
   }
   for (const ShaderVariable& v : GeometryOutputs(f))
   {
-    d += WithComment(
-      (form == StageForm::Stages ? v.Qualifiers + "out " : std::string()) + Declarator(v) + ";", v);
+    d += WithComment(form == StageForm::Stages ? OutputDeclaration(v) : Declarator(v) + ";", v);
   }
   return d;
 }

@@ -45,9 +45,20 @@ PSIVOLUMEREPRESENTATIONS_EXPORT std::vector<ShaderVariable> TetrahedronMembers(
 /// The geometry code's per-vertex outputs for `f`, in declaration order. The fragment shader
 /// declares each as an input of the same name and qualifiers.
 PSIVOLUMEREPRESENTATIONS_EXPORT std::vector<ShaderVariable> GeometryOutputs(const ShaderFeatures& f);
-/// Components of a GLSL type the stages hand on (float, [iu]vec2-4, mat2-4); throws
-/// std::logic_error for another.
+/// The shape of a GLSL type the stages hand on (float, int, uint, [iu]vec2-4, mat2-4): `Columns`
+/// columns of `Size` components of `Kind` ("float", "int" or "uint").
+struct TypeShape
+{
+  std::string Kind;
+  int Size = 1;
+  int Columns = 1;
+};
+/// The shape of `type`; throws std::logic_error for another type.
+PSIVOLUMEREPRESENTATIONS_EXPORT TypeShape ShapeOf(const std::string& type);
+/// Components of `type` (Size x Columns of ShapeOf).
 PSIVOLUMEREPRESENTATIONS_EXPORT int Components(const std::string& type);
+/// The declaration of `v` as an output of a shader stage: `[Qualifiers]out <Type> <Name>;`.
+PSIVOLUMEREPRESENTATIONS_EXPORT std::string OutputDeclaration(const ShaderVariable& v);
 
 /// The vertex code's declarations (its //PSI::Stage::Dec): the attribute tetPointIds and tetOut.
 std::string VertexStageDeclarations(const ShaderFeatures& f, StageForm form);
