@@ -198,7 +198,8 @@ def plot_methods(rows, ref, path, pairs_per_line=4):
     return True
 
 
-def _write_png(rgb, path):
+def write_png(rgb, path):
+    """Writes `rgb` (rows x columns x 3, bottom row first, as VTK orders images) to a PNG."""
     from vtkmodules.util.numpy_support import numpy_to_vtk
     from vtkmodules.vtkCommonDataModel import vtkImageData
     from vtkmodules.vtkIOImage import vtkPNGWriter
@@ -224,7 +225,7 @@ def _fallback_scatter(pts, path, n=400):
         fy = (y - y.min()) / max(np.ptp(y), 1e-9) * (n - 40) + 20
         for i, j in zip(fx.astype(int), fy.astype(int)):
             canvas[j - 3:j + 4, i - 3:i + 4] = (30, 60, 200)
-    _write_png(canvas, path)
+    write_png(canvas, path)
     return False
 
 
@@ -233,5 +234,5 @@ def _fallback_tiles(shown, ref, path):
     for r in shown:
         err = np.clip(np.abs(r["image"] - ref).mean(axis=2, keepdims=True) * 8, 0, 255)
         tiles.append(np.concatenate([np.clip(r["image"], 0, 255), np.repeat(err, 3, 2)], 1))
-    _write_png(np.concatenate(tiles, 0), path)
+    write_png(np.concatenate(tiles, 0), path)
     return False
