@@ -248,7 +248,7 @@ void MakeGridTets(vtkUnstructuredGrid* grid, int n, bool kuhn)
 
 int main(int argc, char* argv[])
 {
-  const std::string outDir = argc > 1 ? argv[1] : "";
+  const std::string outDir = psitest::ParseArguments(argc, argv);
   psitest::VolumeView view(W, H, nullptr, nullptr); // the volume is added below
   vtkRenderWindow* win = view.Window;
   vtkRenderer* ren = view.Renderer;
@@ -265,6 +265,7 @@ int main(int argc, char* argv[])
   prop->SetScalarOpacity(opacity);
   prop->SetScalarOpacityUnitDistance(unit);
   vtkNew<vtkPsiVolumeMapper> mapper;
+  psitest::ApplyRequested(mapper.GetPointer());
   vtkNew<vtkVolume> vol;
   vol->SetMapper(mapper);
   vol->SetProperty(prop);
@@ -346,7 +347,7 @@ int main(int argc, char* argv[])
 
   PSI_CHECK(psitest::RequestedProjector() < 0 ||
       mapper->GetLastUsedProjector() == psitest::RequestedProjector(),
-    "the last frame used projector %d, not the one asked for (PSI_PROJECTOR)",
+    "the last frame used projector %d, not the one asked for (--projector)",
     mapper->GetLastUsedProjector());
   std::printf("%s\n",
     psitest::Failures() ? "TestPsiDegenerateProjections FAILED" : "TestPsiDegenerateProjections passed");

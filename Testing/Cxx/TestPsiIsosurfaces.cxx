@@ -85,7 +85,7 @@ bool Finite(const std::vector<double>& img)
 
 int main(int argc, char* argv[])
 {
-  const std::string outDir = argc > 1 ? argv[1] : "";
+  const std::string outDir = psitest::ParseArguments(argc, argv);
   vtkNew<vtkUnstructuredGrid> grid;
   psitest::MakeWaveletTets(grid, 3, 3.0); // coarse: scalar ranges per cell are wide
   double r[2];
@@ -105,6 +105,7 @@ int main(int argc, char* argv[])
   property->SetScalarOpacityUnitDistance(2.0);
 
   vtkNew<vtkPsiVolumeMapper> mapper;
+  psitest::ApplyRequested(mapper.GetPointer());
   mapper->SetInputData(grid);
   psitest::VolumeView view(W, H, mapper, property);
   vtkRenderWindow* win = view.Window;
@@ -150,7 +151,7 @@ int main(int argc, char* argv[])
     {
       mapper->SetIntegrationMethod(method);
       mapper->SetIsosurfaceValues({});
-      mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_OFF);
+      mapper->SetAdaptiveSampling(psi::AdaptiveModes::Off);
       const std::vector<double> plain = Grab(win);
       const std::string plainDefines = mapper->GetLastFeatureDefines();
       for (int iso = 0; iso < 3; ++iso)
@@ -165,7 +166,7 @@ int main(int argc, char* argv[])
               : iso == 1                       ? outOfRange1
                                                : outOfRange3);
           mapper->SetAdaptiveSampling(
-            adaptive ? vtkPsiVolumeMapper::ADAPTIVE_ON : vtkPsiVolumeMapper::ADAPTIVE_OFF);
+            adaptive ? psi::AdaptiveModes::On : psi::AdaptiveModes::Off);
           const std::vector<double> img = Grab(win);
           const std::string defs = mapper->GetLastFeatureDefines();
           const Diff d = Compare(img, plain);
@@ -183,7 +184,7 @@ int main(int argc, char* argv[])
         }
       }
       mapper->SetIsosurfaceValues({});
-      mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_OFF);
+      mapper->SetAdaptiveSampling(psi::AdaptiveModes::Off);
       Grab(win);
       PSI_CHECK(mapper->GetLastFeatureDefines() == plainDefines,
         "features switched off again give the plain program");
@@ -210,14 +211,14 @@ int main(int argc, char* argv[])
     property->SetScalarOpacityUnitDistance(1.0);
     const psi::ReferenceScene scene = psitest::MakeReferenceScene(grid, color, spike, 1.0);
     const std::vector<double> ref = Reference(ren, scene);
-    mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_OFF);
+    mapper->SetAdaptiveSampling(psi::AdaptiveModes::Off);
     const std::vector<double> off = Grab(win);
-    mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_ON);
+    mapper->SetAdaptiveSampling(psi::AdaptiveModes::On);
     const std::vector<double> on = Grab(win);
     // the spike's three control points and the range ends
     PSI_CHECK(mapper->GetLastNumberOfAdaptiveNodes() == 5, "spike nodes %d",
       mapper->GetLastNumberOfAdaptiveNodes());
-    mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_AUTO);
+    mapper->SetAdaptiveSampling(psi::AdaptiveModes::Auto);
     const std::vector<double> autoImg = Grab(win);
     PSI_CHECK(mapper->GetLastUsedAdaptiveSampling(), "Auto: the table misses the spike's peak");
     const Diff dOff = Compare(off, ref), dOn = Compare(on, ref), dAuto = Compare(autoImg, on);
@@ -250,7 +251,7 @@ int main(int argc, char* argv[])
     property->SetScalarOpacityUnitDistance(2.0);
     Grab(win);
     PSI_CHECK(!mapper->GetLastUsedAdaptiveSampling(), "Auto: a linear function needs no splitting");
-    mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_OFF);
+    mapper->SetAdaptiveSampling(psi::AdaptiveModes::Off);
   }
 
   // ---- 3. Occlusion: the wavelet peaks at the center, so scalars above the isovalue lie inside
@@ -276,7 +277,7 @@ int main(int argc, char* argv[])
     mapper->SetIsosurfaceValues({ iso });
     mapper->IsosurfaceUseColorMapOff();
     mapper->SetIsosurfaceColor(1, 0, 0);
-    mapper->IsosurfaceLightingOff();
+    mapper->SetIsosurfaceShading(psi::IsosurfaceShadings::Unlit);
     mapper->SetIsosurfaceOpacity(1.0);
     const std::vector<double> opaque = Grab(win);
     mapper->SetIsosurfaceOpacity(0.5);
@@ -306,7 +307,7 @@ int main(int argc, char* argv[])
     }
     property->SetColor(color);
     property->SetScalarOpacity(linear);
-    mapper->IsosurfaceLightingOn();
+    mapper->SetIsosurfaceShading(psi::IsosurfaceShadings::Smooth);
     mapper->IsosurfaceUseColorMapOn();
     mapper->SetIsosurfaceOpacity(1.0);
   }
@@ -367,13 +368,13 @@ int main(int argc, char* argv[])
     {
       twelve.push_back(r[0] + (0.4 + 0.04 * i) * span);
     }
-    const Case cases[] = { { "one", { b }, 1.0, vtkPsiVolumeMapper::ISO_SMOOTH, false, true },
-      { "three translucent", { a, b, c }, 0.4, vtkPsiVolumeMapper::ISO_SMOOTH, false, true },
-      { "three flat", { c, a, b }, 0.6, vtkPsiVolumeMapper::ISO_FLAT, false, true },
-      { "two, opacity gap", { r[0] + 0.3 * span, b }, 0.5, vtkPsiVolumeMapper::ISO_SMOOTH, true,
+    const Case cases[] = { { "one", { b }, 1.0, psi::IsosurfaceShadings::Smooth, false, true },
+      { "three translucent", { a, b, c }, 0.4, psi::IsosurfaceShadings::Smooth, false, true },
+      { "three flat", { c, a, b }, 0.6, psi::IsosurfaceShadings::Flat, false, true },
+      { "two, opacity gap", { r[0] + 0.3 * span, b }, 0.5, psi::IsosurfaceShadings::Smooth, true,
         true },
-      { "twelve (GS limit)", twelve, 0.3, vtkPsiVolumeMapper::ISO_SMOOTH, false, false },
-      { "three own opacities", { a, b, c }, 1.0, vtkPsiVolumeMapper::ISO_SMOOTH, true, true,
+      { "twelve (GS limit)", twelve, 0.3, psi::IsosurfaceShadings::Smooth, false, false },
+      { "three own opacities", { a, b, c }, 1.0, psi::IsosurfaceShadings::Smooth, true, true,
         { 0.2, 1.0, 0.5 } } };
     for (const Case& k : cases)
     {
@@ -390,20 +391,20 @@ int main(int argc, char* argv[])
           ren->AddActor(actor);
           ren->ResetCameraClippingRange();
         }
-        mapper->SetIsosurfaceMethod(vtkPsiVolumeMapper::ISO_PER_FRAGMENT);
+        mapper->SetIsosurfaceMethod(psi::IsosurfaceMethods::PerFragment);
         const std::vector<double> perFragment = Grab(win);
-        PSI_CHECK(mapper->GetLastUsedIsosurfaceMethod() == vtkPsiVolumeMapper::ISO_PER_FRAGMENT,
+        PSI_CHECK(mapper->GetLastUsedIsosurfaceMethod() == psi::IsosurfaceMethods::PerFragment,
           "per-fragment method used");
-        mapper->SetIsosurfaceMethod(vtkPsiVolumeMapper::ISO_MARCHING_TETRAHEDRA);
+        mapper->SetIsosurfaceMethod(psi::IsosurfaceMethods::MarchingTetrahedra);
         const std::vector<double> mt = Grab(win);
         const bool usedMT =
-          mapper->GetLastUsedIsosurfaceMethod() == vtkPsiVolumeMapper::ISO_MARCHING_TETRAHEDRA;
+          mapper->GetLastUsedIsosurfaceMethod() == psi::IsosurfaceMethods::MarchingTetrahedra;
         const bool discarded = mapper->GetLastUsedEarlyDiscard();
-        mapper->SetIsosurfaceMethod(vtkPsiVolumeMapper::ISO_AUTO);
+        mapper->SetIsosurfaceMethod(psi::IsosurfaceMethods::Auto);
         Grab(win);
         PSI_CHECK(mapper->GetLastUsedIsosurfaceMethod() ==
-            (k.Gap && k.FitsGS ? vtkPsiVolumeMapper::ISO_MARCHING_TETRAHEDRA
-                               : vtkPsiVolumeMapper::ISO_PER_FRAGMENT),
+            (k.Gap && k.FitsGS ? psi::IsosurfaceMethods::MarchingTetrahedra
+                               : psi::IsosurfaceMethods::PerFragment),
           "%s view %d: Auto uses marching tetrahedra exactly when early discard applies", k.Name,
           view);
         ren->RemoveActor(actor);
@@ -438,7 +439,7 @@ int main(int argc, char* argv[])
     }
     property->SetScalarOpacity(linear);
     mapper->SetIsosurfaceOpacities({});
-    mapper->SetIsosurfaceShading(vtkPsiVolumeMapper::ISO_SMOOTH);
+    mapper->SetIsosurfaceShading(psi::IsosurfaceShadings::Smooth);
     mapper->SetIsosurfaceOpacity(1.0);
   }
 
@@ -450,9 +451,9 @@ int main(int argc, char* argv[])
     setView(0);
     const double iso = r[0] + 0.6 * span;
     mapper->SetIsosurfaceValues({ iso });
-    mapper->SetIsosurfaceShading(vtkPsiVolumeMapper::ISO_SMOOTH);
-    for (int method : { vtkPsiVolumeMapper::ISO_MARCHING_TETRAHEDRA,
-           vtkPsiVolumeMapper::ISO_PER_FRAGMENT })
+    mapper->SetIsosurfaceShading(psi::IsosurfaceShadings::Smooth);
+    for (int method : { psi::IsosurfaceMethods::MarchingTetrahedra,
+           psi::IsosurfaceMethods::PerFragment })
     {
       mapper->SetIsosurfaceMethod(method);
       mapper->SetInputData(grid);
@@ -479,7 +480,7 @@ int main(int argc, char* argv[])
       const std::vector<double> fresh = Grab(win);
       const Diff d = Compare(next, fresh);
       std::printf("time step, smooth isosurfaces (%s): vs the step drawn first: mean %.5f max "
-                  "%.3f\n", method == vtkPsiVolumeMapper::ISO_PER_FRAGMENT ? "per fragment"
+                  "%.3f\n", method == psi::IsosurfaceMethods::PerFragment ? "per fragment"
                                                                   : "marching tetrahedra",
         d.Mean, d.Max);
       PSI_CHECK(sameMesh && mapper->GetMeshVersion() != version,
@@ -489,12 +490,12 @@ int main(int argc, char* argv[])
     }
     mapper->SetInputData(grid);
     mapper->SetIsosurfaceValues({});
-    mapper->SetIsosurfaceMethod(vtkPsiVolumeMapper::ISO_AUTO);
+    mapper->SetIsosurfaceMethod(psi::IsosurfaceMethods::Auto);
   }
 
   PSI_CHECK(psitest::RequestedProjector() < 0 ||
       mapper->GetLastUsedProjector() == psitest::RequestedProjector(),
-    "the last frame used projector %d, not the one asked for (PSI_PROJECTOR)",
+    "the last frame used projector %d, not the one asked for (--projector)",
     mapper->GetLastUsedProjector());
   std::printf("projector: %s\n", mapper->GetLastUsedProjector() ? "compute shader" : "geometry shader");
   std::printf("%s\n", psitest::Failures() ? "TestPsiIsosurfaces FAILED" : "TestPsiIsosurfaces passed");

@@ -3,7 +3,7 @@
 // reference: the reference ray caster compositing the surfaces' layers at their depths
 // (psi::ReferenceSurface, the same triangles GL draws). A translucent unlit sphere in front of
 // the volume, behind it, cutting through it, and two nested spheres cutting through it; each with
-// the geometry-shader and the compute projector (PSI_PROJECTOR), perspective and parallel.
+// the geometry-shader and the compute projector (--projector), perspective and parallel.
 // Without depth peeling for volumes VTK draws volumes after all translucent geometry, which
 // cannot be intermixed: the mapper then warns once.
 #include "PsiReferenceRaycaster.h"
@@ -87,7 +87,7 @@ vtkSmartPointer<vtkActor> MakeSphere(const Sphere& s, psi::ReferenceScene& ref)
 
 int main(int argc, char* argv[])
 {
-  const std::string outDir = argc > 1 ? argv[1] : "";
+  const std::string outDir = psitest::ParseArguments(argc, argv);
   vtkNew<vtkUnstructuredGrid> grid;
   psitest::MakeWaveletTets(grid, 6, 1.0);
   double r[2];
@@ -106,6 +106,7 @@ int main(int argc, char* argv[])
   property->SetScalarOpacityUnitDistance(2.0);
 
   vtkNew<vtkPsiVolumeMapper> mapper;
+  psitest::ApplyRequested(mapper.GetPointer());
   mapper->SetInputData(grid);
   psitest::VolumeView view(W, H, mapper, property);
   vtkRenderer* ren = view.Renderer;

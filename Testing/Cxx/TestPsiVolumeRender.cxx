@@ -131,12 +131,13 @@ void MakeKuhnWavelet(vtkUnstructuredGrid* grid, int half, double cell)
 
 int main(int argc, char* argv[])
 {
-  const std::string outDir = argc > 1 ? argv[1] : "";
+  const std::string outDir = psitest::ParseArguments(argc, argv);
   Scene s;
   MakeScene(s, 6, 1.0, 1.5);
   const psi::ReferenceScene refScene = MakeReference(s);
 
   vtkNew<vtkPsiVolumeMapper> mapper;
+  psitest::ApplyRequested(mapper.GetPointer());
   mapper->SetInputData(s.Grid);
   psitest::VolumeView view(W, H, mapper, s.Property);
   vtkRenderWindow* win = view.Window;
@@ -201,9 +202,9 @@ int main(int argc, char* argv[])
     cam->SetFocalPoint(0, 0, 0);
     cam->SetPosition(0.3, 0.2, 45);
     ren->ResetCameraClippingRange();
-    mapper->SetSortMethod(vtkPsiVolumeMapper::CENTROID);
+    mapper->SetSortMethod(psi::Sorts::Centroid);
     const Result centroid = Compare("kuhn_centroid", win, ren, vol, kuhnRef, nullptr, outDir);
-    mapper->SetSortMethod(vtkPsiVolumeMapper::MPVONC);
+    mapper->SetSortMethod(psi::Sorts::MPVONC);
     const Result mpvonc = Compare("kuhn_mpvonc", win, ren, vol, kuhnRef, nullptr, outDir);
     PSI_CHECK(mpvonc.Max < 0.03 && mpvonc.Mean < 0.003, "Kuhn cells, MPVONC: mean %g max %g",
       mpvonc.Mean, mpvonc.Max);
@@ -286,7 +287,7 @@ int main(int argc, char* argv[])
     // per-fragment reconstruction is what makes the inside view correct.
     // (silhouettes are exact in both projections: the screen-linear triple is the fan's)
     const int decomposition = mapper->GetDecomposition();
-    mapper->SetDecomposition(vtkPsiVolumeMapper::DECOMPOSITION_FAN);
+    mapper->SetDecomposition(psi::Decompositions::Fan);
     mapper->ExactPerspectiveSegmentsOff();
     const Result linear = Compare("camera_inside_screen_linear", win, ren, vol, refScene, nullptr, outDir);
     mapper->ExactPerspectiveSegmentsOn();
@@ -452,7 +453,7 @@ int main(int argc, char* argv[])
 
   PSI_CHECK(psitest::RequestedProjector() < 0 ||
       mapper->GetLastUsedProjector() == psitest::RequestedProjector(),
-    "the last frame used projector %d, not the one asked for (PSI_PROJECTOR)",
+    "the last frame used projector %d, not the one asked for (--projector)",
     mapper->GetLastUsedProjector());
   std::printf("projector: %s\n", mapper->GetLastUsedProjector() ? "compute shader" : "geometry shader");
   std::printf("%s\n", psitest::Failures() ? "TestPsiVolumeRender FAILED" : "TestPsiVolumeRender passed");
