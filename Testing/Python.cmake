@@ -60,3 +60,7 @@ if (PVSERVER_EXECUTABLE AND MPIEXEC_EXECUTABLE)
 else ()
   message(STATUS "pvserver or mpiexec not found: PsiPython.pvserver is not registered")
 endif ()
+
+# While the camera moves: the volume level of detail chosen by mode and budget, never in still
+# renders or screenshots, close to the full frame; rebuilt for new arrays and data; hard inputs.
+psi_add_python_test(interaction TIMEOUT 300)
