@@ -15,7 +15,7 @@
 #include "PsiShaderParameters.h"
 #include "PsiTransferFunctionAnalysis.h"
 #include "PsiTransferFunctionTable.h"
-#include "PsiTransferTextures.h"
+#include "PsiLookupTextures.h"
 #include "PsiVisibilityOrder.h"
 
 #include "vtkCellData.h"

@@ -13,7 +13,7 @@
  *  - PlanFrame (PsiFramePlan.h): what the scene calls for, from the settings (psi::Settings,
  *    Core/PsiSettings.h) and the scene's facts, with no GL call: the features and the tables
  *    they read;
- *  - PsiTransferTextures, PsiAdaptiveNodes: transfer function, opacity prefix, Psi and
+ *  - PsiLookupTextures, PsiAdaptiveNodes: transfer function, opacity prefix, Psi and
  *    pre-integration tables, adaptive nodes, each a PsiGpuTable;
  *  - psi::ComposeShaders: the program for the plan's features;
  *  - PsiRenderTarget: scene depth copies, the float target, the composite over the scene.

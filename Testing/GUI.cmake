@@ -110,7 +110,4 @@ foreach (name IN LISTS psi_gui_tests)
     # "Unhandled error": any other event QtTesting could not play.
     FAIL_REGULAR_EXPRESSION "Couldn't find object|Failed to parse|The following event FAILED|PsiGUICheck FAILED|Unhandled error"
     RESOURCE_LOCK PsiGUI)
-  if (${name}_disabled)
-    set_tests_properties(PsiGUI.${name} PROPERTIES DISABLED TRUE)
-  endif ()
 endforeach ()
