@@ -13,7 +13,9 @@
 //    MPVONC's equal depths by ascending id (the rule that makes its order reproducible).
 // Needs an X server (run under xvfb-run).
 #include "PsiTestCheck.h"
-#include "PsiTestScene.h"
+#include "PsiTestMeshes.h"
+#include "PsiTestTransferFunction.h"
+#include "PsiTestView.h"
 #include "PsiTetSort.h"
 #include "vtkPsiVolumeMapper.h"
 
@@ -281,26 +283,14 @@ void CheckMPVONCTies()
 
 int main()
 {
-  vtkNew<vtkRenderWindow> win;
-  win->SetSize(64, 64);
-  win->SetMultiSamples(0);
-  vtkNew<vtkRenderer> ren;
-  win->AddRenderer(ren);
-  vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(-2, 0.1, 0.3, 1.0);
-  color->AddRGBPoint(3, 1.0, 0.8, 0.1);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(-2, 0.2);
-  opacity->AddPoint(3, 1.0);
-  vtkNew<vtkVolumeProperty> prop;
-  prop->SetColor(color);
-  prop->SetScalarOpacity(opacity);
+  psitest::TransferFunction tf;
+  psitest::BlueToYellow(tf.Color, -2, 3);
+  psitest::LinearOpacity(tf.Opacity, -2, 3, 0.2, 1.0);
   vtkNew<vtkPsiVolumeMapper> mapper;
   mapper->SetRecordDrawOrder(true); // what each frame streams to the GPU
-  vtkNew<vtkVolume> vol;
-  vol->SetMapper(mapper);
-  vol->SetProperty(prop);
-  ren->AddVolume(vol);
+  psitest::VolumeView view(64, 64, mapper, tf.Property);
+  vtkRenderWindow* win = view.Window;
+  vtkRenderer* ren = view.Renderer;
   vtkCamera* cam = ren->GetActiveCamera();
 
   struct View
