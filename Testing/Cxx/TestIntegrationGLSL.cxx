@@ -271,6 +271,5 @@ int main()
     CompareWithCpp(info, cases, out, table);
   }
   win->GetState()->PopFramebufferBindings();
-  std::printf("%s\n", psitest::Failures() ? "TestIntegrationGLSL FAILED" : "TestIntegrationGLSL passed");
-  return psitest::Failures() ? 1 : 0;
+  return psitest::Report("TestIntegrationGLSL");
 }

@@ -392,6 +392,5 @@ int main(int argc, char* argv[])
     const psi::Rgba c = psi::Integrate(Method::LinearExact, s, &table);
     PSI_CHECK(!Finite(c), "NaN attenuation must propagate to the caller (the mapper drops it)");
   }
-  std::printf("%s\n", psitest::Failures() ? "TestIntegrationMethods FAILED" : "TestIntegrationMethods passed");
-  return psitest::Failures() ? 1 : 0;
+  return psitest::Report("TestIntegrationMethods");
 }

@@ -223,7 +223,5 @@ int main(int argc, char* argv[])
   TestLengthAxis();
   TestTableAccuracy();
   TestGradedSlabImage(argc > 1 ? argv[1] : "");
-  std::printf("%s\n",
-    psitest::Failures() ? "TestPreIntegrationGraded FAILED" : "TestPreIntegrationGraded passed");
-  return psitest::Failures() ? 1 : 0;
+  return psitest::Report("TestPreIntegrationGraded");
 }

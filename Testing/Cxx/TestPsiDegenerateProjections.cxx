@@ -341,11 +341,6 @@ int main(int argc, char* argv[])
     }
   }
 
-  PSI_CHECK(psitest::RequestedProjector() < 0 ||
-      mapper->GetLastUsedProjector() == psitest::RequestedProjector(),
-    "the last frame used projector %d, not the one asked for (PSI_PROJECTOR)",
-    mapper->GetLastUsedProjector());
-  std::printf("%s\n",
-    psitest::Failures() ? "TestPsiDegenerateProjections FAILED" : "TestPsiDegenerateProjections passed");
-  return psitest::Failures() ? 1 : 0;
+  psitest::CheckRequestedProjector(mapper->GetLastUsedProjector());
+  return psitest::Report("TestPsiDegenerateProjections");
 }

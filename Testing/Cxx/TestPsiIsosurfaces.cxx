@@ -527,11 +527,7 @@ int main(int argc, char* argv[])
   CheckTimeStepGradients(s);
 
   vtkPsiVolumeMapper* mapper = s.Mapper;
-  PSI_CHECK(psitest::RequestedProjector() < 0 ||
-      mapper->GetLastUsedProjector() == psitest::RequestedProjector(),
-    "the last frame used projector %d, not the one asked for (PSI_PROJECTOR)",
-    mapper->GetLastUsedProjector());
+  psitest::CheckRequestedProjector(mapper->GetLastUsedProjector());
   std::printf("projector: %s\n", mapper->GetLastUsedProjector() ? "compute shader" : "geometry shader");
-  std::printf("%s\n", psitest::Failures() ? "TestPsiIsosurfaces FAILED" : "TestPsiIsosurfaces passed");
-  return psitest::Failures() ? 1 : 0;
+  return psitest::Report("TestPsiIsosurfaces");
 }

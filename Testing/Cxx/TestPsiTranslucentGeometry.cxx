@@ -255,6 +255,5 @@ int main(int argc, char* argv[])
   CheckSpheres(s, cases);
   CheckSphereAndOpaquePlane(s, cases[2].Spheres[0]);
   CheckOnePeelAndNoVolumePeeling(s, cases[3].Spheres);
-  std::printf("%s\n", psitest::Failures() ? "TestPsiTranslucentGeometry FAILED" : "TestPsiTranslucentGeometry passed");
-  return psitest::Failures() ? 1 : 0;
+  return psitest::Report("TestPsiTranslucentGeometry");
 }

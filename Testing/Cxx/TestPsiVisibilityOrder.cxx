@@ -17,6 +17,7 @@
 #include "PsiTestTransferFunction.h"
 #include "PsiTestView.h"
 #include "PsiTetSort.h"
+#include "PsiVec3.h"
 #include "vtkPsiVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -45,20 +46,10 @@
 
 namespace
 {
-using Vec3 = std::array<double, 3>;
-
-Vec3 Sub(const Vec3& a, const Vec3& b)
-{
-  return { { a[0] - b[0], a[1] - b[1], a[2] - b[2] } };
-}
-double Dot(const Vec3& a, const Vec3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec3 Cross(const Vec3& a, const Vec3& b)
-{
-  return { { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] } };
-}
+using psi::Cross;
+using psi::Dot;
+using psi::Sub;
+using psi::Vec3;
 
 // A structured grid of n^3 cells (spacing 1, corner at the origin), split into Kuhn tetrahedra
 // (6 per cube) or by vtkDataSetTriangleFilter.
@@ -343,6 +334,5 @@ int main()
     CheckCentroidDefinition(grid, skew, true);
   }
   CheckMPVONCTies();
-  std::printf("%s\n", psitest::Failures() ? "TestPsiVisibilityOrder FAILED" : "TestPsiVisibilityOrder passed");
-  return psitest::Failures() ? 1 : 0;
+  return psitest::Report("TestPsiVisibilityOrder");
 }

@@ -455,11 +455,7 @@ int main(int argc, char* argv[])
   CheckEarlyDiscard(f);
 
   vtkPsiVolumeMapper* mapper = f.Mapper;
-  PSI_CHECK(psitest::RequestedProjector() < 0 ||
-      mapper->GetLastUsedProjector() == psitest::RequestedProjector(),
-    "the last frame used projector %d, not the one asked for (PSI_PROJECTOR)",
-    mapper->GetLastUsedProjector());
+  psitest::CheckRequestedProjector(mapper->GetLastUsedProjector());
   std::printf("projector: %s\n", mapper->GetLastUsedProjector() ? "compute shader" : "geometry shader");
-  std::printf("%s\n", psitest::Failures() ? "TestPsiVolumeRender FAILED" : "TestPsiVolumeRender passed");
-  return psitest::Failures() ? 1 : 0;
+  return psitest::Report("TestPsiVolumeRender");
 }

@@ -478,7 +478,5 @@ int main(int argc, char* argv[])
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf(" (%.1f s)\n", seconds);
-  std::printf("%s\n",
-    psitest::Failures() ? "TestShaderComposition FAILED" : "TestShaderComposition passed");
-  return psitest::Failures() ? 1 : 0;
+  return psitest::Report("TestShaderComposition");
 }

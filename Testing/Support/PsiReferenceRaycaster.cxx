@@ -1,6 +1,7 @@
 #include "PsiReferenceRaycaster.h"
 
 #include "PsiIntegration.h"
+#include "PsiVec3.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,21 +10,6 @@ namespace psi
 {
 namespace
 {
-using Vec3 = std::array<double, 3>;
-
-Vec3 Sub(const Vec3& a, const Vec3& b)
-{
-  return { { a[0] - b[0], a[1] - b[1], a[2] - b[2] } };
-}
-double Dot(const Vec3& a, const Vec3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec3 CrossP(const Vec3& a, const Vec3& b)
-{
-  return { { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] } };
-}
-
 // Homogeneous transform of (x, y, z, 1) by a row-major matrix, divided by w.
 Vec3 Transform(const std::array<double, 16>& m, double x, double y, double z)
 {
@@ -59,7 +45,7 @@ TetGeometry MakeTet(const ReferenceScene& sc, const std::array<int, 4>& t)
     V[i] = sc.Points[t[i]];
   }
   const Vec3 e1 = Sub(V[1], V[0]), e2 = Sub(V[2], V[0]), e3 = Sub(V[3], V[0]);
-  const double det = Dot(e1, CrossP(e2, e3));
+  const double det = Dot(e1, Cross(e2, e3));
   g.Valid = std::abs(det) > 0 && std::isfinite(det);
   if (!g.Valid)
   {
@@ -68,7 +54,7 @@ TetGeometry MakeTet(const ReferenceScene& sc, const std::array<int, 4>& t)
   for (int i = 0; i < 4; ++i)
   {
     const Vec3 &a = V[(i + 1) % 4], &b = V[(i + 2) % 4], &c = V[(i + 3) % 4];
-    Vec3 n = CrossP(Sub(b, a), Sub(c, a));
+    Vec3 n = Cross(Sub(b, a), Sub(c, a));
     if (Dot(n, Sub(V[i], a)) > 0)
     {
       n = { { -n[0], -n[1], -n[2] } };
@@ -79,7 +65,7 @@ TetGeometry MakeTet(const ReferenceScene& sc, const std::array<int, 4>& t)
   // Gradient: solve [e1 e2 e3]^T g = ds by Cramer's rule.
   const double ds[3] = { sc.Scalars[t[1]] - sc.Scalars[t[0]], sc.Scalars[t[2]] - sc.Scalars[t[0]],
     sc.Scalars[t[3]] - sc.Scalars[t[0]] };
-  const Vec3 c23 = CrossP(e2, e3), c31 = CrossP(e3, e1), c12 = CrossP(e1, e2);
+  const Vec3 c23 = Cross(e2, e3), c31 = Cross(e3, e1), c12 = Cross(e1, e2);
   for (int k = 0; k < 3; ++k)
   {
     g.Gradient[k] = (ds[0] * c23[k] + ds[1] * c31[k] + ds[2] * c12[k]) / det;
@@ -111,7 +97,7 @@ std::vector<Layer> SurfaceLayers(
     for (const auto& tri : surface.Triangles)
     {
       const Vec3 e1 = Sub(tri[1], tri[0]), e2 = Sub(tri[2], tri[0]);
-      const Vec3 p = CrossP(d, e2);
+      const Vec3 p = Cross(d, e2);
       const double det = Dot(e1, p);
       if (std::abs(det) < 1e-300)
       {
@@ -119,7 +105,7 @@ std::vector<Layer> SurfaceLayers(
       }
       const Vec3 s = Sub(o, tri[0]);
       const double u = Dot(s, p) / det;
-      const Vec3 q = CrossP(s, e1);
+      const Vec3 q = Cross(s, e1);
       const double v = Dot(d, q) / det;
       const double t = Dot(e2, q) / det;
       if (u >= 0 && v >= 0 && u + v <= 1 && t > 0 && t < tMax)
