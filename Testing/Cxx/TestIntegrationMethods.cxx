@@ -185,6 +185,23 @@ std::string Edited(std::string s, const std::string& from, const std::string& to
   return pos == std::string::npos ? std::string() : s.replace(pos, from.size(), to);
 }
 
+// The mapper takes the table's values, clamped, and names them from the table; returns its
+// default method. (The one check of this test that needs the Representations module.)
+int CheckMapperTakesTheTable()
+{
+  const auto& table = psi::IntegrationMethodTable();
+  vtkNew<vtkPsiVolumeMapper> mapper;
+  const int last = psi::NumberOfIntegrationMethods() - 1;
+  mapper->SetIntegrationMethod(-3);
+  PSI_CHECK(mapper->GetIntegrationMethod() == 0, "clamped below");
+  mapper->SetIntegrationMethod(last + 5);
+  PSI_CHECK(mapper->GetIntegrationMethod() == last, "clamped above");
+  PSI_CHECK(std::string(vtkPsiVolumeMapper::GetIntegrationMethodName(last)) == table[last].Name &&
+      std::string(vtkPsiVolumeMapper::GetIntegrationMethodName(last + 1)) == "Unknown",
+    "mapper names");
+  return vtkNew<vtkPsiVolumeMapper>()->GetIntegrationMethod();
+}
+
 void CheckTable(const char* xmlPath)
 {
   const auto& table = psi::IntegrationMethodTable();
@@ -218,17 +235,8 @@ void CheckTable(const char* xmlPath)
       std::string(psi::MethodName(Method::Count)) == "Unknown",
     "lookups outside the table");
 
-  // The mapper takes the table's values, clamped, and names them from the table.
-  vtkNew<vtkPsiVolumeMapper> mapper;
   const int last = psi::NumberOfIntegrationMethods() - 1;
-  mapper->SetIntegrationMethod(-3);
-  PSI_CHECK(mapper->GetIntegrationMethod() == 0, "clamped below");
-  mapper->SetIntegrationMethod(last + 5);
-  PSI_CHECK(mapper->GetIntegrationMethod() == last, "clamped above");
-  PSI_CHECK(std::string(vtkPsiVolumeMapper::GetIntegrationMethodName(last)) == table[last].Name &&
-      std::string(vtkPsiVolumeMapper::GetIntegrationMethodName(last + 1)) == "Unknown",
-    "mapper names");
-  const int mapperDefault = vtkNew<vtkPsiVolumeMapper>()->GetIntegrationMethod();
+  const int mapperDefault = CheckMapperTakesTheTable();
 
   // The panel's enumeration against the table.
   const std::string xml = ReadFile(xmlPath);
