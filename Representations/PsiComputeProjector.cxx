@@ -11,7 +11,6 @@
 #include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 #include <algorithm>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -80,20 +79,15 @@ bool PsiComputeProjector::IsSupported(vtkOpenGLRenderWindow* renWin)
   return major > 4 || (major == 4 && minor >= 3);
 }
 
-bool PsiComputeProjector::Chosen(int projector, vtkOpenGLRenderWindow* renWin)
+bool PsiComputeProjector::Chosen(bool asked, vtkOpenGLRenderWindow* renWin)
 {
-  const char* site = std::getenv("PSI_PROJECTOR");
-  if (projector == 2) // Auto
-  {
-    projector = site && std::string(site) == "compute" ? 1 : 0;
-  }
-  if (projector == 1 && !IsSupported(renWin))
+  if (asked && !IsSupported(renWin))
   {
     vtkGenericWarningMacro(
       "Psi Volume: the compute projector needs OpenGL 4.3; using the geometry shader.");
     return false;
   }
-  return projector == 1;
+  return asked;
 }
 
 vtkShaderProgram* PsiComputeProjector::ReadyComputeProgram(

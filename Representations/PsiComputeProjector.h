@@ -29,11 +29,10 @@ public:
 
   /// Whether the context can run the projector (OpenGL 4.3: compute shaders, storage buffers).
   static bool IsSupported(vtkOpenGLRenderWindow* renWin);
-  /// Whether this frame projects with compute shaders, for vtkPsiVolumeMapper's Projector
-  /// (0 geometry shader, 1 compute shader, 2 Auto: the environment's PSI_PROJECTOR, "geometry"
-  /// or "compute", else the geometry shader, measured the faster here; docs/decisions.md, "Projectors").
-  /// The compute shader asked for where OpenGL 4.3 is missing gives false, with a warning.
-  static bool Chosen(int projector, vtkOpenGLRenderWindow* renWin);
+  /// Whether this frame projects with compute shaders, when the settings ask for them
+  /// (psi::UsesComputeProjector): asked for where OpenGL 4.3 is missing gives false, with a
+  /// warning.
+  static bool Chosen(bool asked, vtkOpenGLRenderWindow* renWin);
   /// Composes and builds the programs for `f` (once per feature key: `built` tells) and leaves
   /// the compute program bound. Null, with `error` set, when a program does not build.
   vtkShaderProgram* ReadyComputeProgram(

@@ -1,7 +1,7 @@
 #include "PsiFramePlan.h"
 
 #include "PsiIntegrationMethods.h"
-#include "vtkPsiVolumeMapper.h"
+#include "PsiShaderComposer.h"
 
 namespace
 {
@@ -12,17 +12,16 @@ const psi::IntegrationMethodInfo& MethodInfo(int method)
 
 // Röttger's table tabulates one scalar for color and opacity: with a separate opacity array full
 // pre-integration draws as partial pre-integration (the tables and the program both follow).
-int DrawnMethod(const PsiFrameSettings& s, const PsiSceneFacts& facts)
+int DrawnMethod(const psi::Settings& s, const PsiSceneFacts& facts)
 {
-  return facts.SeparateOpacity && MethodInfo(s.Method).NeedsPreIntegrationTable
+  return facts.SeparateOpacity && MethodInfo(s.IntegrationMethod).NeedsPreIntegrationTable
     ? static_cast<int>(psi::Method::PartialPreIntegration)
-    : s.Method;
+    : s.IntegrationMethod;
 }
 
-// Marching tetrahedra when asked for, or under 'Auto' when early discard applies (plain
-// contours: only the surfaces and the visible pieces are drawn), and only when the composed
+// Marching tetrahedra as psi::UsesMarchingTetrahedra resolves it, and only when the composed
 // geometry shader fits the driver's output limits; else per fragment.
-bool IsoTriangles(const PsiFrameSettings& s, const PsiSceneFacts& facts, psi::ShaderFeatures f)
+bool IsoTriangles(const psi::Settings& s, const PsiSceneFacts& facts, psi::ShaderFeatures f)
 {
   if (!MayUseIsoTriangles(s, facts))
   {
@@ -34,32 +33,31 @@ bool IsoTriangles(const PsiFrameSettings& s, const PsiSceneFacts& facts, psi::Sh
 }
 } // namespace
 
-bool NeedsAdaptiveNodes(const PsiFrameSettings& s)
+bool NeedsAdaptiveNodes(const psi::Settings& s)
 {
-  return s.AdaptiveSampling != vtkPsiVolumeMapper::ADAPTIVE_OFF;
+  return s.AdaptiveSampling != psi::AdaptiveModes::Off;
 }
 
-bool MayUseIsoTriangles(const PsiFrameSettings& s, const PsiSceneFacts& facts)
+bool MayUseIsoTriangles(const psi::Settings& s, const PsiSceneFacts& facts)
 {
-  return s.IsoCount > 0 &&
-    (s.IsosurfaceMethod == vtkPsiVolumeMapper::ISO_MARCHING_TETRAHEDRA ||
-      (s.IsosurfaceMethod == vtkPsiVolumeMapper::ISO_AUTO && s.EarlyDiscard && facts.ZeroOpacity));
+  return s.Isosurfaces().Count() > 0 && psi::UsesMarchingTetrahedra(s, facts.ZeroOpacity);
 }
 
-PsiFramePlan PlanFrame(const PsiFrameSettings& s, const PsiSceneFacts& facts)
+PsiFramePlan PlanFrame(const psi::Settings& s, const PsiSceneFacts& facts)
 {
   PsiFramePlan plan;
   psi::ShaderFeatures& f = plan.Features;
   f.Method = DrawnMethod(s, facts);
-  plan.MethodReplaced = f.Method != s.Method;
+  plan.MethodReplaced = f.Method != s.IntegrationMethod;
   f.ExactSegments = !facts.Parallel && s.ExactPerspectiveSegments;
   // within depth peeling, the silhouettes' exact segments are clipped to the pass's intervals
   f.DepthPeel = facts.DepthPeeled;
-  f.Silhouette = psi::SilhouetteChosen(s.Decomposition) || f.DepthPeel;
+  f.Silhouette = psi::UsesSilhouettes(s) || f.DepthPeel;
   f.NearClip = facts.NearPlaneCuts;
   f.OpaqueClip = facts.OpaqueOverlaps;
-  f.IsoCount = s.IsoCount;
-  f.IsoSmooth = f.IsoCount > 0 && s.IsosurfaceShading == vtkPsiVolumeMapper::ISO_SMOOTH;
+  f.IsoCount = s.Isosurfaces().Count();
+  // unlit isosurfaces need no normals; flat ones take each cell's gradient
+  f.IsoSmooth = f.IsoCount > 0 && s.IsosurfaceShading == psi::IsosurfaceShadings::Smooth;
   f.IsoTriangles = IsoTriangles(s, facts, f);
   // Early discard (Maximo et al. 2010 §3.5) only when the opacity function has zero regions,
   // and not with per-fragment isosurfaces (visible where the volume is transparent; marching
@@ -67,10 +65,8 @@ PsiFramePlan PlanFrame(const PsiFrameSettings& s, const PsiSceneFacts& facts)
   f.EarlyDiscard = s.EarlyDiscard && facts.ZeroOpacity && (f.IsoCount == 0 || f.IsoTriangles);
   // Adaptive sampling (Moreland's dissertation §4.3) when on, or under 'Auto' when the sampled
   // table misses the function's nodes; never when the nodes cannot follow the function.
-  f.Adaptive = NeedsAdaptiveNodes(s) && facts.NodesFaithful &&
-    (s.AdaptiveSampling == vtkPsiVolumeMapper::ADAPTIVE_ON ||
-      facts.TableDeviation > s.AdaptiveAutoDeviation);
-  f.MaxAdaptiveNodes = s.MaxAdaptiveNodes;
+  f.Adaptive = facts.NodesFaithful && psi::UsesAdaptiveSampling(s, facts.TableDeviation);
+  f.MaxAdaptiveNodes = psi::MaxAdaptiveNodes;
   // A separate opacity array: drawn with silhouettes, whose fragments carry both scalars; not
   // with adaptive sampling (nodes of one scalar); early discard judged on the opacity scalar,
   // per cell, so not per marching-tetrahedra piece.

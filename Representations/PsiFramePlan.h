@@ -1,4 +1,5 @@
-// PsiFramePlan: what one frame simulates, decided in one place from the user's settings and the
+// PsiFramePlan: what one frame simulates, decided in one place from the user's settings
+// (psi::Settings, Core/PsiSettings.h, which resolves each 'Auto') and the
 // facts of the scene, with no GL call and no table in sight: "simulate only the effects a scene
 // calls for". The mapper gathers the facts (camera, other props, depth peeling, the sampled
 // transfer function's zero regions and its adaptive nodes, the driver's geometry-shader limits),
@@ -7,23 +8,9 @@
 #ifndef PsiFramePlan_h
 #define PsiFramePlan_h
 
-#include "PsiShaderComposer.h"
+#include "PsiSettings.h"
+#include "PsiShaderFeatures.h"
 #include "PsiVolumeRepresentationsModule.h"
-
-/// The mapper's settings that decide a frame (vtkPsiVolumeMapper's properties, their values).
-struct PsiFrameSettings
-{
-  int Method = 1;                  ///< IntegrationMethod (psi::Method)
-  bool ExactPerspectiveSegments = true;
-  int Decomposition = 2;           ///< vtkPsiVolumeMapper::Decompositions
-  bool EarlyDiscard = true;
-  int IsoCount = 0;                ///< isovalues drawn
-  int IsosurfaceMethod = 2;        ///< vtkPsiVolumeMapper::IsosurfaceMethods
-  int IsosurfaceShading = 1;       ///< vtkPsiVolumeMapper::IsosurfaceShadings
-  int AdaptiveSampling = 2;        ///< vtkPsiVolumeMapper::AdaptiveSamplingModes
-  int MaxAdaptiveNodes = 64;
-  double AdaptiveAutoDeviation = 1.0 / 255; ///< 'Auto' samples adaptively beyond this
-};
 
 /// What the frame finds in the scene and in its data.
 struct PsiSceneFacts
@@ -62,13 +49,13 @@ struct PsiFramePlan
 
 /// The frame's plan (the rules are commented where they are applied, PsiFramePlan.cxx).
 PSIVOLUMEREPRESENTATIONS_EXPORT PsiFramePlan PlanFrame(
-  const PsiFrameSettings& settings, const PsiSceneFacts& facts);
+  const psi::Settings& settings, const PsiSceneFacts& facts);
 /// Whether the scene calls for the adaptive nodes to be computed before the plan: adaptive
 /// sampling is on or 'Auto' (the nodes' deviation decides 'Auto').
-PSIVOLUMEREPRESENTATIONS_EXPORT bool NeedsAdaptiveNodes(const PsiFrameSettings& settings);
+PSIVOLUMEREPRESENTATIONS_EXPORT bool NeedsAdaptiveNodes(const psi::Settings& settings);
 /// Whether isosurfaces may be drawn by marching tetrahedra (then the facts need the driver's
 /// geometry-shader limits).
 PSIVOLUMEREPRESENTATIONS_EXPORT bool MayUseIsoTriangles(
-  const PsiFrameSettings& settings, const PsiSceneFacts& facts);
+  const psi::Settings& settings, const PsiSceneFacts& facts);
 
 #endif

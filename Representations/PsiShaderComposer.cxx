@@ -40,7 +40,6 @@
 #include "PsiVolumeGS.h"
 #include "PsiVolumeVS.h"
 
-#include <cstdlib>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -69,11 +68,6 @@ const char* SegmentsSource(const ShaderFeatures& f, const char* ray, const char*
 }
 
 // Depth-peeled draws clip the silhouettes' ray segments (the mapper draws silhouettes then).
-bool DepthPeelOn(const ShaderFeatures& f)
-{
-  return f.DepthPeel && f.Silhouette;
-}
-
 // The sections of PsiSeparateOpacityFS.glsl whose sites the other features of `f` leave out.
 std::set<std::string> SeparateOpacitySkips(const ShaderFeatures& f, bool split)
 {
@@ -95,7 +89,7 @@ std::set<std::string> SeparateOpacitySkips(const ShaderFeatures& f, bool split)
   {
     skip.insert("//PSI::SeparateOpacity::NearClip");
   }
-  if (!DepthPeelOn(f))
+  if (!DepthPeelDrawn(f))
   {
     skip.insert("//PSI::SeparateOpacity::DepthPeel");
   }
@@ -175,105 +169,6 @@ std::string ComposeGeometry(const ShaderFeatures& f, StageForm form)
   return gs;
 }
 } // namespace
-
-bool SeparateOpacityDrawn(const ShaderFeatures& f)
-{
-  return f.SeparateOpacity && f.Silhouette && !f.Adaptive;
-}
-
-bool ShaderFeatures::operator==(const ShaderFeatures& o) const
-{
-  return Method == o.Method && ExactSegments == o.ExactSegments && Silhouette == o.Silhouette &&
-    NearClip == o.NearClip &&
-    OpaqueClip == o.OpaqueClip && EarlyDiscard == o.EarlyDiscard && IsoCount == o.IsoCount &&
-    IsoSmooth == o.IsoSmooth && IsoTriangles == o.IsoTriangles && Adaptive == o.Adaptive &&
-    SeparateOpacity == o.SeparateOpacity && DepthPeel == o.DepthPeel &&
-    MaxAdaptiveNodes == o.MaxAdaptiveNodes && MaxLights == o.MaxLights;
-}
-
-std::string ShaderFeatures::Defines() const
-{
-  std::string d;
-  if (OpaqueClip)
-  {
-    d += "#define PSI_OPAQUE_CLIP\n";
-  }
-  if (Silhouette)
-  {
-    d += "#define PSI_SILHOUETTE\n";
-  }
-  else if (ExactSegments)
-  {
-    d += "#define PSI_EXACT_SEGMENTS\n";
-  }
-  if (NearClip)
-  {
-    d += "#define PSI_NEAR_CLIP\n";
-  }
-  if (IsoCount > 0)
-  {
-    d += Define("PSI_ISO_COUNT", IsoCount) + Define("PSI_MAX_LIGHTS", MaxLights);
-    if (IsoSmooth)
-    {
-      d += "#define PSI_ISO_SMOOTH\n";
-    }
-    d += IsoTriangles
-      ? "#define PSI_ISO_TRIANGLES\n" + Define("PSI_GS_MAX_VERTICES", GeometryOutputVertices(*this))
-      : std::string("#define PSI_ISO_PER_FRAGMENT\n");
-  }
-  if (EarlyDiscard)
-  {
-    d += "#define PSI_EARLY_DISCARD\n";
-  }
-  if (SeparateOpacityDrawn(*this))
-  {
-    d += "#define PSI_SEPARATE_OPACITY\n";
-  }
-  if (DepthPeelOn(*this))
-  {
-    d += "#define PSI_DEPTH_PEEL\n";
-  }
-  if (Adaptive)
-  {
-    d += "#define PSI_ADAPTIVE\n" + Define("PSI_TF_NODES_MAX", MaxAdaptiveNodes);
-  }
-  return d;
-}
-
-std::string ShaderFeatures::Key() const
-{
-  return this->Defines() + "method " + std::to_string(Method) + "\n";
-}
-
-bool SilhouetteChosen(int decomposition)
-{
-  const char* site = std::getenv("PSI_DECOMPOSITION");
-  return decomposition == 2 ? !(site && std::string(site) == "fan") : decomposition == 0;
-}
-
-int GeometryOutputVertices(const ShaderFeatures& f)
-{
-  // PsiProjectionClassesGS.glsl: the fan of class 2, strips of 5 and 3; a silhouette quad
-  const int projection = f.Silhouette ? 4 : 8;
-  const int surface = 4;    // PsiIsoTrianglesGS.glsl emitSurface: a strip of at most 4
-  if (f.IsoCount > 0 && f.IsoTriangles)
-  {
-    return projection * (f.IsoCount + 1) + surface * f.IsoCount;
-  }
-  return projection;
-}
-
-int ProjectedTrianglesMax(const ShaderFeatures& f)
-{
-  // class 2: four triangles (Shirley & Tuchman's largest split); a silhouette quad has two
-  const int projection = f.Silhouette ? 2 : 4;
-  const int surface = 2;    // a marching-tetrahedra quad
-  if (f.IsoCount > 0 && f.IsoTriangles)
-  {
-    return projection * (f.IsoCount + 1) + surface * f.IsoCount;
-  }
-  return projection;
-}
 
 int GeometryOutputComponentsPerVertex(const ShaderFeatures& f)
 {
@@ -370,7 +265,7 @@ ShaderSources ComposeShaders(const ShaderFeatures& f, const char* integratorSour
   {
     Apply(fs, PsiIsoTrianglesFS);
   }
-  if (DepthPeelOn(f))
+  if (DepthPeelDrawn(f))
   {
     Apply(fs, PsiDepthPeelFS, isoTriangles ? std::set<std::string>{}
                                            : std::set<std::string>{ "//PSI::DepthPeel::Surface" });

@@ -1,5 +1,5 @@
 #include "PsiStageInterface.h"
-#include "PsiShaderComposer.h"
+#include "PsiShaderFeatures.h"
 
 #include <map>
 #include <stdexcept>

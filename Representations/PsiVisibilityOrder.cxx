@@ -1,5 +1,7 @@
 #include "PsiVisibilityOrder.h"
 
+#include "PsiSettings.h"
+
 #include "vtkMatrix4x4.h"
 #include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
@@ -45,7 +47,7 @@ void PsiVisibilityOrder::Update(const psi::TetMesh& mesh, int meshVersion,
   this->Finish();
   if (this->NeedsMesh(meshVersion, method))
   {
-    this->Sort = method == MPVONC ? psi::NewMPVONCSort() : psi::NewCentroidSort();
+    this->Sort = method == psi::Sorts::MPVONC ? psi::NewMPVONCSort() : psi::NewCentroidSort();
     this->Sort->SetMesh(&mesh, std::move(faceNeighbors));
   }
   this->Mesh = &mesh;

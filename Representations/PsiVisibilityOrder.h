@@ -26,16 +26,10 @@ class vtkWindow;
 class PsiVisibilityOrder
 {
 public:
-  enum Methods
-  {
-    CENTROID = 0,
-    MPVONC = 1
-  };
-
   PsiVisibilityOrder();
   ~PsiVisibilityOrder();
 
-  /// mcvc: model (shifted) to view matrix, row-major.
+  /// method: psi::Sorts (Core/PsiSettings.h). mcvc: model (shifted) to view matrix, row-major.
   bool NeedsUpdate(int meshVersion, int method, const double mcvc[16], bool parallel) const;
   /// Whether the next Update takes a new mesh (the mesh or the method changed): only then does it
   /// use the face neighbours it is offered.

@@ -60,12 +60,49 @@ vtkPsiVolumeMapper::vtkPsiVolumeMapper()
 
 vtkPsiVolumeMapper::~vtkPsiVolumeMapper() = default;
 
-void vtkPsiVolumeMapper::SetIntegrationMethod(int method)
+void vtkPsiVolumeMapper::SetSettings(const psi::Settings& settings)
 {
-  method = std::min(std::max(method, 0), psi::NumberOfIntegrationMethods() - 1);
-  if (method != this->IntegrationMethod)
+  for (const psi::SettingInfo& info : psi::SettingTable())
   {
-    this->IntegrationMethod = method;
+    this->SetRanged(info.Id, info.Int ? settings.*info.Int : settings.*info.Double);
+  }
+  for (const psi::BoolSettingInfo& info : psi::BoolSettingTable())
+  {
+    this->SetBool(info.Member, settings.*info.Member);
+  }
+  this->SetIsosurfaceColor(
+    settings.IsosurfaceColor[0], settings.IsosurfaceColor[1], settings.IsosurfaceColor[2]);
+  this->SetIsosurfaceValues(settings.IsosurfaceValues);
+  this->SetIsosurfaceOpacities(settings.IsosurfaceOpacities);
+}
+
+// The one clamp of a ranged setting, with its one warning (psi::SetClamped).
+void vtkPsiVolumeMapper::SetRanged(psi::Setting id, double value)
+{
+  psi::Settings s = this->Settings;
+  const std::string warning = psi::SetClamped(s, id, value);
+  if (!warning.empty())
+  {
+    vtkWarningMacro(<< warning);
+  }
+  const psi::SettingInfo& info = psi::GetSettingInfo(id);
+  if (info.Int ? s.*info.Int != this->Settings.*info.Int
+               : s.*info.Double != this->Settings.*info.Double)
+  {
+    this->Settings = std::move(s);
+    if (id == psi::Setting::IsosurfaceOpacity)
+    {
+      this->UpdateIsosurfaceList();
+    }
+    this->Modified();
+  }
+}
+
+void vtkPsiVolumeMapper::SetBool(bool psi::Settings::*member, bool on)
+{
+  if (this->Settings.*member != on)
+  {
+    this->Settings.*member = on;
     this->Modified();
   }
 }
@@ -119,9 +156,8 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   const PsiFrameCamera cam = PsiFrameCamera::FromRenderer(ren, vol, I.Mesh.GetMesh().Shift);
   const bool sorted = this->UpdateVisibilityOrder(input, cam);
-  const PsiFrameSettings settings = this->FrameSettings();
-  const PsiTableSources sources = this->UpdateTransferFunction(renWin, vol, settings);
-  const PsiFramePlan plan = PlanFrame(settings, this->SceneFacts(ren, vol, cam, settings));
+  const PsiTableSources sources = this->UpdateTransferFunction(renWin, vol);
+  const PsiFramePlan plan = PlanFrame(this->Settings, this->SceneFacts(ren, vol, cam));
   this->NotePlan(plan);
   const std::vector<PsiGpuTable*> tables = this->TablesOf(plan);
   this->UpdateTables(renWin, plan, tables, sources);
@@ -145,20 +181,21 @@ bool vtkPsiVolumeMapper::UpdateVisibilityOrder(
   vtkUnstructuredGridBase* input, const PsiFrameCamera& cam)
 {
   Internals& I = *this->Impl;
-  if (!I.Order.NeedsUpdate(I.Mesh.GetVersion(), this->SortMethod, cam.MCVC, cam.Parallel))
+  const int method = this->Settings.SortMethod;
+  if (!I.Order.NeedsUpdate(I.Mesh.GetVersion(), method, cam.MCVC, cam.Parallel))
   {
     return false;
   }
   vtkVLogScopeF(PARAVIEW_LOG_RENDERING_VERBOSITY(), "Psi Volume: visibility order");
   std::vector<int32_t> neighbors;
-  if (this->SortMethod == MPVONC && I.Order.NeedsMesh(I.Mesh.GetVersion(), this->SortMethod))
+  if (method == psi::Sorts::MPVONC && I.Order.NeedsMesh(I.Mesh.GetVersion(), method))
   {
     psi::FaceNeighborsFromArray(I.Mesh.GetMesh(),
       input->GetCellData() ? input->GetCellData()->GetArray("FaceNeighbors") : nullptr,
       input->GetNumberOfCells(), neighbors);
   }
-  I.Order.Update(I.Mesh.GetMesh(), I.Mesh.GetVersion(), std::move(neighbors), this->SortMethod,
-    cam.MCVC, cam.Parallel);
+  I.Order.Update(
+    I.Mesh.GetMesh(), I.Mesh.GetVersion(), std::move(neighbors), method, cam.MCVC, cam.Parallel);
   return true;
 }
 
@@ -172,8 +209,9 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   Internals& I = *this->Impl;
   const psi::ShaderFeatures& features = plan.Features;
   const bool gradients = plan.Tables.Gradients;
-  const bool compute = PsiComputeProjector::Chosen(this->Projector, renWin);
-  this->LastUsedProjector = compute ? PROJECTOR_COMPUTE_SHADER : PROJECTOR_GEOMETRY_SHADER;
+  const bool compute = PsiComputeProjector::Chosen(psi::UsesComputeProjector(this->Settings), renWin);
+  this->LastUsedProjector =
+    compute ? psi::Projectors::ComputeShader : psi::Projectors::GeometryShader;
   vtkShaderProgram* program = this->ReadyProjection(renWin, features, compute);
   if (!program)
   {
@@ -278,7 +316,6 @@ vtkShaderProgram* vtkPsiVolumeMapper::ReadyProjection(
   vtkShaderProgram* program = !integrator ? nullptr
     : compute ? I.Compute.ReadyComputeProgram(features, integrator, error, built)
               : I.Geometry.ReadyProgram(renWin, features, integrator, built);
-  this->NumberOfProgramBuilds += built ? 1 : 0;
   if (!program)
   {
     vtkErrorMacro("Psi Volume: " << (integrator ? error
@@ -306,10 +343,11 @@ void vtkPsiVolumeMapper::SetShaderParameters(vtkShaderProgram* program, vtkRende
   }
   if (f.IsoCount > 0)
   {
+    const psi::Settings& s = this->Settings;
     PsiIsosurfaceStyle style;
-    style.UseColorMap = this->IsosurfaceUseColorMap;
-    std::copy(this->IsosurfaceColor, this->IsosurfaceColor + 3, style.Color);
-    style.Lighting = this->IsosurfaceLighting;
+    style.UseColorMap = s.IsosurfaceUseColorMap;
+    std::copy(s.IsosurfaceColor, s.IsosurfaceColor + 3, style.Color);
+    style.Lighting = s.IsosurfaceShading != psi::IsosurfaceShadings::Unlit;
     style.Smooth = f.IsoSmooth;
     style.MaxLights = f.MaxLights;
     SetIsosurfaceShaderParameters(
@@ -342,11 +380,15 @@ void vtkPsiVolumeMapper::ResetStatistics()
 void vtkPsiVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "IntegrationMethod: " << GetIntegrationMethodName(this->IntegrationMethod)
-     << "\n";
-  os << indent << "TransferFunctionSamples: " << this->TransferFunctionSamples << "\n";
-  os << indent << "IsosurfaceMethod: " << this->IsosurfaceMethod
-     << ", IsosurfaceShading: " << this->IsosurfaceShading << "\n";
+  for (const psi::SettingInfo& info : psi::SettingTable())
+  {
+    os << indent << info.Name << ": "
+       << (info.Int ? this->Settings.*info.Int : this->Settings.*info.Double) << "\n";
+  }
+  for (const psi::BoolSettingInfo& info : psi::BoolSettingTable())
+  {
+    os << indent << info.Name << ": " << (this->Settings.*info.Member ? "on" : "off") << "\n";
+  }
   os << indent << "NumberOfTetrahedra: " << this->Stats.NumberOfTetrahedra << "\n";
   os << indent << "NumberOfSkippedCells: " << this->Stats.NumberOfSkippedCells << "\n";
 }

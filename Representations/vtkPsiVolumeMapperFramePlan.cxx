@@ -32,7 +32,7 @@ std::string OneLine(std::string defines)
 
 // The sampled transfer function, and the adaptive nodes when adaptive sampling may be used.
 PsiTableSources vtkPsiVolumeMapper::UpdateTransferFunction(
-  vtkOpenGLRenderWindow* renWin, vtkVolume* vol, const PsiFrameSettings& settings)
+  vtkOpenGLRenderWindow* renWin, vtkVolume* vol)
 {
   Internals& I = *this->Impl;
   const psi::TetMesh& mesh = I.Mesh.GetMesh();
@@ -41,13 +41,13 @@ PsiTableSources vtkPsiVolumeMapper::UpdateTransferFunction(
   in.ScalarRange = mesh.ScalarRange;
   // with a separate opacity array the attenuation is sampled over the opacity scalars' range
   in.OpacityRange = mesh.Opacity.empty() ? nullptr : mesh.OpacityRange;
-  in.Samples = this->TransferFunctionSamples;
+  in.Samples = this->Settings.TransferFunctionSamples;
   in.Transfer = &I.Tables.Transfer;
   in.LengthAxis = psi::MakePreIntegrationLengthAxis(mesh.MinEdgeLength, mesh.MaxEdgeLength);
-  in.MaxNodes = MaxAdaptiveNodes;
-  in.NodeTolerance = AdaptiveNodeTolerance;
+  in.MaxNodes = psi::MaxAdaptiveNodes;
+  in.NodeTolerance = psi::AdaptiveNodeTolerance;
   std::vector<PsiGpuTable*> first{ &I.Tables.Transfer };
-  if (NeedsAdaptiveNodes(settings))
+  if (NeedsAdaptiveNodes(this->Settings))
   {
     first.push_back(&I.AdaptiveNodes);
   }
@@ -55,26 +55,10 @@ PsiTableSources vtkPsiVolumeMapper::UpdateTransferFunction(
   return in;
 }
 
-PsiFrameSettings vtkPsiVolumeMapper::FrameSettings() const
-{
-  PsiFrameSettings s;
-  s.Method = this->IntegrationMethod;
-  s.ExactPerspectiveSegments = this->ExactPerspectiveSegments;
-  s.Decomposition = this->Decomposition;
-  s.EarlyDiscard = this->EarlyDiscard;
-  s.IsoCount = this->Isosurfaces.Count();
-  s.IsosurfaceMethod = this->IsosurfaceMethod;
-  s.IsosurfaceShading = this->IsosurfaceShading;
-  s.AdaptiveSampling = this->AdaptiveSampling;
-  s.MaxAdaptiveNodes = MaxAdaptiveNodes;
-  s.AdaptiveAutoDeviation = AdaptiveAutoDeviation;
-  return s;
-}
-
 // Everything the plan needs to know, asked here: the camera, the other props, the depth-peeling
 // stage, the data, the sampled function, and the driver's geometry-shader limits.
 PsiSceneFacts vtkPsiVolumeMapper::SceneFacts(
-  vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam, const PsiFrameSettings& settings)
+  vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam)
 {
   Internals& I = *this->Impl;
   PsiSceneFacts facts;
@@ -87,7 +71,7 @@ PsiSceneFacts vtkPsiVolumeMapper::SceneFacts(
   facts.ZeroOpacity = I.Tables.Transfer.HasZeroOpacity();
   facts.NodesFaithful = I.AdaptiveNodes.IsFaithful();
   facts.TableDeviation = I.AdaptiveNodes.GetTableDeviation();
-  if (MayUseIsoTriangles(settings, facts))
+  if (MayUseIsoTriangles(this->Settings, facts))
   {
     glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &facts.MaxGeometryOutputVertices);
     glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &facts.MaxGeometryOutputComponents);
@@ -104,7 +88,9 @@ void vtkPsiVolumeMapper::NotePlan(const PsiFramePlan& plan)
   this->LastUsedNearPlaneClipping = f.NearClip;
   this->LastUsedOpaqueClipping = f.OpaqueClip;
   this->LastUsedIsosurfaceMethod =
-    f.IsoCount == 0 ? -1 : f.IsoTriangles ? ISO_MARCHING_TETRAHEDRA : ISO_PER_FRAGMENT;
+    f.IsoCount == 0               ? -1
+    : f.IsoTriangles ? psi::IsosurfaceMethods::MarchingTetrahedra
+                     : psi::IsosurfaceMethods::PerFragment;
   this->LastUsedEarlyDiscard = f.EarlyDiscard;
   this->LastUsedAdaptiveSampling = f.Adaptive;
   this->LastNumberOfAdaptiveNodes = f.Adaptive ? I.AdaptiveNodes.Size() : 0;

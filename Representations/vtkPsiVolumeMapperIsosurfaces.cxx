@@ -9,22 +9,27 @@
 
 void vtkPsiVolumeMapper::SetIsosurfaceOpacity(double opacity)
 {
-  opacity = std::min(1.0, std::max(0.0, opacity));
-  if (opacity != this->IsosurfaceOpacity)
+  this->SetRanged(psi::Setting::IsosurfaceOpacity, opacity);
+}
+
+void vtkPsiVolumeMapper::SetIsosurfaceColor(double r, double g, double b)
+{
+  double* c = this->Settings.IsosurfaceColor;
+  if (c[0] != r || c[1] != g || c[2] != b)
   {
-    this->IsosurfaceOpacity = opacity;
-    this->UpdateIsosurfaceList();
+    c[0] = r;
+    c[1] = g;
+    c[2] = b;
     this->Modified();
   }
 }
 
 void vtkPsiVolumeMapper::UpdateIsosurfaceList()
 {
-  this->Isosurfaces = psi::IsosurfaceList::Normalize(
-    this->IsosurfaceValues, this->IsosurfaceOpacities, this->IsosurfaceOpacity);
+  this->Isosurfaces = this->Settings.Isosurfaces();
   if (this->Isosurfaces.Dropped)
   {
-    vtkWarningMacro("Psi Volume draws at most " << MaxIsosurfaces << " isosurfaces; "
+    vtkWarningMacro("Psi Volume draws at most " << psi::IsosurfaceList::MaxCount << " isosurfaces; "
                                                 << this->Isosurfaces.Dropped << " ignored.");
   }
 }
@@ -41,9 +46,9 @@ void vtkPsiVolumeMapper::SetIsosurfaceVector(std::vector<double>& member, std::v
 
 void vtkPsiVolumeMapper::SetNumberOfIsosurfaces(int n)
 {
-  std::vector<double> v = this->IsosurfaceValues;
+  std::vector<double> v = this->Settings.IsosurfaceValues;
   v.resize(std::max(n, 0), 0.0);
-  this->SetIsosurfaceVector(this->IsosurfaceValues, std::move(v));
+  this->SetIsosurfaceVector(this->Settings.IsosurfaceValues, std::move(v));
 }
 
 void vtkPsiVolumeMapper::SetIsosurfaceValue(int i, double value)
@@ -52,29 +57,29 @@ void vtkPsiVolumeMapper::SetIsosurfaceValue(int i, double value)
   {
     return;
   }
-  std::vector<double> v = this->IsosurfaceValues;
+  std::vector<double> v = this->Settings.IsosurfaceValues;
   v.resize(std::max<size_t>(v.size(), i + 1), 0.0);
   v[i] = value;
-  this->SetIsosurfaceVector(this->IsosurfaceValues, std::move(v));
+  this->SetIsosurfaceVector(this->Settings.IsosurfaceValues, std::move(v));
 }
 
 void vtkPsiVolumeMapper::SetIsosurfaceValues(const std::vector<double>& values)
 {
-  this->SetIsosurfaceVector(this->IsosurfaceValues, values);
+  this->SetIsosurfaceVector(this->Settings.IsosurfaceValues, values);
 }
 
 double vtkPsiVolumeMapper::GetIsosurfaceValue(int i) const
 {
-  return i >= 0 && static_cast<size_t>(i) < this->IsosurfaceValues.size()
-    ? this->IsosurfaceValues[i]
+  return i >= 0 && static_cast<size_t>(i) < this->Settings.IsosurfaceValues.size()
+    ? this->Settings.IsosurfaceValues[i]
     : 0.0;
 }
 
 void vtkPsiVolumeMapper::SetNumberOfIsosurfaceOpacities(int n)
 {
-  std::vector<double> v = this->IsosurfaceOpacities;
-  v.resize(std::max(n, 0), this->IsosurfaceOpacity);
-  this->SetIsosurfaceVector(this->IsosurfaceOpacities, std::move(v));
+  std::vector<double> v = this->Settings.IsosurfaceOpacities;
+  v.resize(std::max(n, 0), this->Settings.IsosurfaceOpacity);
+  this->SetIsosurfaceVector(this->Settings.IsosurfaceOpacities, std::move(v));
 }
 
 void vtkPsiVolumeMapper::SetIsosurfaceOpacityValue(int i, double opacity)
@@ -83,13 +88,13 @@ void vtkPsiVolumeMapper::SetIsosurfaceOpacityValue(int i, double opacity)
   {
     return;
   }
-  std::vector<double> v = this->IsosurfaceOpacities;
-  v.resize(std::max<size_t>(v.size(), i + 1), this->IsosurfaceOpacity);
+  std::vector<double> v = this->Settings.IsosurfaceOpacities;
+  v.resize(std::max<size_t>(v.size(), i + 1), this->Settings.IsosurfaceOpacity);
   v[i] = opacity;
-  this->SetIsosurfaceVector(this->IsosurfaceOpacities, std::move(v));
+  this->SetIsosurfaceVector(this->Settings.IsosurfaceOpacities, std::move(v));
 }
 
 void vtkPsiVolumeMapper::SetIsosurfaceOpacities(const std::vector<double>& opacities)
 {
-  this->SetIsosurfaceVector(this->IsosurfaceOpacities, opacities);
+  this->SetIsosurfaceVector(this->Settings.IsosurfaceOpacities, opacities);
 }

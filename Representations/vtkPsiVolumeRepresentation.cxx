@@ -1,7 +1,5 @@
 #include "vtkPsiVolumeRepresentation.h"
 
-#include "PsiIntegrationMethods.h"
-
 #include "vtkDataSet.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -12,27 +10,10 @@
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolumeRepresentationPreprocessor.h"
 
-#include <algorithm>
 
 namespace
 {
 constexpr const char* MapperName = "Psi Volume";
-
-// An integer setting outside its values (possible through the server manager, which does not
-// check enumeration domains) is clamped, with a warning that names it.
-int InRange(vtkObject* self, const char* name, int value, int lo, int hi)
-{
-  if (value >= lo && value <= hi)
-  {
-    return value;
-  }
-  const int used = value < lo ? lo : hi;
-  vtkWarningWithObjectMacro(self, "'Psi Volume' " << name << " = " << value
-                                                  << " is not one of its values (" << lo
-                                                  << " to " << hi << "): " << used
-                                                  << " is used.");
-  return used;
-}
 
 // Whether `data` has cells other than tetrahedra (every dataset but an all-tetrahedra
 // unstructured grid; an empty one has nothing to split).
@@ -98,14 +79,22 @@ vtkAlgorithmOutput* vtkPsiVolumeRepresentation::GetInternalOutputPort(int port, 
   return this->Conforming->GetOutputPort();
 }
 
-void vtkPsiVolumeRepresentation::SetIntegrationMethod(int method)
+// Each property goes to the mapper as it is: the mapper holds the settings and clamps them
+// (psi::SetClamped). The representation is modified when the mapper is.
+template <typename Setter, typename... Values>
+void vtkPsiVolumeRepresentation::Forward(Setter set, Values... values)
 {
-  method = InRange(this, "IntegrationMethod", method, 0, psi::NumberOfIntegrationMethods() - 1);
-  if (method != this->PsiMapper->GetIntegrationMethod())
+  const vtkMTimeType before = this->PsiMapper->GetMTime();
+  (this->PsiMapper.GetPointer()->*set)(values...);
+  if (this->PsiMapper->GetMTime() != before)
   {
-    this->PsiMapper->SetIntegrationMethod(method);
     this->Modified();
   }
+}
+
+void vtkPsiVolumeRepresentation::SetIntegrationMethod(int method)
+{
+  this->Forward(&vtkPsiVolumeMapper::SetIntegrationMethod, method);
 }
 
 int vtkPsiVolumeRepresentation::GetIntegrationMethod()
@@ -115,11 +104,7 @@ int vtkPsiVolumeRepresentation::GetIntegrationMethod()
 
 void vtkPsiVolumeRepresentation::SetEarlyDiscard(bool on)
 {
-  if (on != this->PsiMapper->GetEarlyDiscard())
-  {
-    this->PsiMapper->SetEarlyDiscard(on);
-    this->Modified();
-  }
+  this->Forward(&vtkPsiVolumeMapper::SetEarlyDiscard, on);
 }
 
 bool vtkPsiVolumeRepresentation::GetEarlyDiscard()
@@ -129,13 +114,7 @@ bool vtkPsiVolumeRepresentation::GetEarlyDiscard()
 
 void vtkPsiVolumeRepresentation::SetSortMethod(int method)
 {
-  method = InRange(this, "SortMethod", method, vtkPsiVolumeMapper::CENTROID,
-    vtkPsiVolumeMapper::MPVONC);
-  if (method != this->PsiMapper->GetSortMethod())
-  {
-    this->PsiMapper->SetSortMethod(method);
-    this->Modified();
-  }
+  this->Forward(&vtkPsiVolumeMapper::SetSortMethod, method);
 }
 
 int vtkPsiVolumeRepresentation::GetSortMethod()
@@ -145,13 +124,7 @@ int vtkPsiVolumeRepresentation::GetSortMethod()
 
 void vtkPsiVolumeRepresentation::SetProjector(int projector)
 {
-  projector = InRange(this, "Projector", projector, vtkPsiVolumeMapper::PROJECTOR_GEOMETRY_SHADER,
-    vtkPsiVolumeMapper::PROJECTOR_AUTO);
-  if (projector != this->PsiMapper->GetProjector())
-  {
-    this->PsiMapper->SetProjector(projector);
-    this->Modified();
-  }
+  this->Forward(&vtkPsiVolumeMapper::SetProjector, projector);
 }
 
 int vtkPsiVolumeRepresentation::GetProjector()
@@ -161,13 +134,7 @@ int vtkPsiVolumeRepresentation::GetProjector()
 
 void vtkPsiVolumeRepresentation::SetDecomposition(int decomposition)
 {
-  decomposition = InRange(this, "Decomposition", decomposition,
-    vtkPsiVolumeMapper::DECOMPOSITION_SILHOUETTE, vtkPsiVolumeMapper::DECOMPOSITION_AUTO);
-  if (decomposition != this->PsiMapper->GetDecomposition())
-  {
-    this->PsiMapper->SetDecomposition(decomposition);
-    this->Modified();
-  }
+  this->Forward(&vtkPsiVolumeMapper::SetDecomposition, decomposition);
 }
 
 int vtkPsiVolumeRepresentation::GetDecomposition()
@@ -177,90 +144,47 @@ int vtkPsiVolumeRepresentation::GetDecomposition()
 
 void vtkPsiVolumeRepresentation::SetNumberOfIsosurfaces(int n)
 {
-  if (n != this->PsiMapper->GetNumberOfIsosurfaces())
-  {
-    this->PsiMapper->SetNumberOfIsosurfaces(n);
-    this->Modified();
-  }
+  this->Forward(&vtkPsiVolumeMapper::SetNumberOfIsosurfaces, n);
 }
 
 void vtkPsiVolumeRepresentation::SetIsosurfaceValue(int i, double value)
 {
-  if (i >= this->PsiMapper->GetNumberOfIsosurfaces() ||
-    this->PsiMapper->GetIsosurfaceValue(i) != value)
-  {
-    this->PsiMapper->SetIsosurfaceValue(i, value);
-    this->Modified();
-  }
+  this->Forward(&vtkPsiVolumeMapper::SetIsosurfaceValue, i, value);
 }
 
 void vtkPsiVolumeRepresentation::SetIsosurfaceOpacity(double opacity)
 {
-  if (opacity != this->PsiMapper->GetIsosurfaceOpacity())
-  {
-    this->PsiMapper->SetIsosurfaceOpacity(opacity);
-    this->Modified();
-  }
+  this->Forward(&vtkPsiVolumeMapper::SetIsosurfaceOpacity, opacity);
 }
 
 void vtkPsiVolumeRepresentation::SetNumberOfIsosurfaceOpacities(int n)
 {
-  if (static_cast<size_t>(std::max(0, n)) != this->PsiMapper->GetIsosurfaceOpacities().size())
-  {
-    this->PsiMapper->SetNumberOfIsosurfaceOpacities(n);
-    this->Modified();
-  }
+  this->Forward(&vtkPsiVolumeMapper::SetNumberOfIsosurfaceOpacities, n);
 }
 
 void vtkPsiVolumeRepresentation::SetIsosurfaceOpacityValue(int i, double opacity)
 {
-  const std::vector<double>& o = this->PsiMapper->GetIsosurfaceOpacities();
-  if (i < 0 || static_cast<size_t>(i) >= o.size() || o[i] != opacity)
-  {
-    this->PsiMapper->SetIsosurfaceOpacityValue(i, opacity);
-    this->Modified();
-  }
+  this->Forward(&vtkPsiVolumeMapper::SetIsosurfaceOpacityValue, i, opacity);
 }
 
 void vtkPsiVolumeRepresentation::SetIsosurfaceColor(double r, double g, double b)
 {
-  this->PsiMapper->SetIsosurfaceColor(r, g, b);
-  this->Modified();
+  this->Forward(&vtkPsiVolumeMapper::SetIsosurfaceColor, r, g, b);
 }
 
 void vtkPsiVolumeRepresentation::SetIsosurfaceUseColorMap(int on)
 {
-  if ((on != 0) != this->PsiMapper->GetIsosurfaceUseColorMap())
-  {
-    this->PsiMapper->SetIsosurfaceUseColorMap(on != 0);
-    this->Modified();
-  }
+  this->Forward(&vtkPsiVolumeMapper::SetIsosurfaceUseColorMap, on != 0);
 }
 
 void vtkPsiVolumeRepresentation::SetIsosurfaceShading(int shading)
 {
-  shading = InRange(this, "IsosurfaceShading", shading, 0, 2);
-  const bool lit = shading != 2;
-  const int mode =
-    shading == 1 ? vtkPsiVolumeMapper::ISO_FLAT : vtkPsiVolumeMapper::ISO_SMOOTH;
-  if (lit != this->PsiMapper->GetIsosurfaceLighting() ||
-    mode != this->PsiMapper->GetIsosurfaceShading())
-  {
-    this->PsiMapper->SetIsosurfaceLighting(lit);
-    this->PsiMapper->SetIsosurfaceShading(mode);
-    this->Modified();
-  }
+  this->Forward(&vtkPsiVolumeMapper::SetIsosurfaceShading, shading);
 }
 
 void vtkPsiVolumeRepresentation::SetIsosurfaceMethod(int method)
 {
-  method = InRange(this, "IsosurfaceMethod", method, vtkPsiVolumeMapper::ISO_MARCHING_TETRAHEDRA,
-    vtkPsiVolumeMapper::ISO_AUTO);
-  if (method != this->PsiMapper->GetIsosurfaceMethod())
-  {
-    this->PsiMapper->SetIsosurfaceMethod(method);
-    this->Modified();
-  }
+  this->Forward(&vtkPsiVolumeMapper::SetIsosurfaceMethod, method);
 }
 
 int vtkPsiVolumeRepresentation::GetLastUsedIsosurfaceMethod()
@@ -275,13 +199,7 @@ int vtkPsiVolumeRepresentation::GetLastNumberOfAdaptiveNodes()
 
 void vtkPsiVolumeRepresentation::SetAdaptiveSampling(int mode)
 {
-  mode = InRange(this, "AdaptiveSampling", mode, vtkPsiVolumeMapper::ADAPTIVE_OFF,
-    vtkPsiVolumeMapper::ADAPTIVE_AUTO);
-  if (mode != this->PsiMapper->GetAdaptiveSampling())
-  {
-    this->PsiMapper->SetAdaptiveSampling(mode);
-    this->Modified();
-  }
+  this->Forward(&vtkPsiVolumeMapper::SetAdaptiveSampling, mode);
 }
 
 int vtkPsiVolumeRepresentation::GetAdaptiveSampling()

@@ -74,7 +74,7 @@ public:
   void SetIsosurfaceOpacityValue(int i, double opacity);
   void SetIsosurfaceColor(double r, double g, double b);
   void SetIsosurfaceUseColorMap(int on);
-  /// 0: smooth, 1: flat (both lit by the view's lights), 2: unlit.
+  /// psi::IsosurfaceShadings: 0 smooth, 1 flat (both lit by the view's lights), 2 unlit.
   void SetIsosurfaceShading(int shading);
   void SetIsosurfaceMethod(int method);
   int GetLastUsedIsosurfaceMethod();
@@ -112,6 +112,10 @@ protected:
 
 private:
   vtkPsiVolumeRepresentation(const vtkPsiVolumeRepresentation&) = delete;
+#ifndef __VTK_WRAP__
+  template <typename Setter, typename... Values>
+  void Forward(Setter set, Values... values);
+#endif
   void operator=(const vtkPsiVolumeRepresentation&) = delete;
 };
 

@@ -43,3 +43,10 @@ add_executable(TestMPVONC Cxx/TestMPVONC.cxx)
 target_link_libraries(TestMPVONC PRIVATE PsiVolume::Filters PsiVolume::Core CGAL::CGAL
   VTK::CommonCore VTK::CommonDataModel VTK::CommonExecutionModel)
 add_test(NAME PsiCore.MPVONC COMMAND TestMPVONC)
+
+# The one settings type: the representation's XML defaults and ranges against it, the clamp and
+# its warning, each 'Auto'.
+add_executable(TestSettings Cxx/TestSettings.cxx)
+target_link_libraries(TestSettings PRIVATE PsiVolume::Core ParaView::VTKExtensionsCore)
+add_test(NAME PsiCore.Settings COMMAND TestSettings
+  "${PROJECT_SOURCE_DIR}/XML/PsiVolumeRepresentation.xml")

@@ -1,20 +1,18 @@
 # Tests of the Representations module (the OpenGL mapper and its parts), included from
 # Testing/CMakeLists.txt. GL tests need an X server.
 
-# Every render test runs once per projector (vtkPsiVolumeMapper::Projectors), chosen through
-# PSI_PROJECTOR (the test checks that the frames used it), and with FAN also drawn with Shirley
+# Every render test runs once per projector (psi::Projectors), set on the mapper from the
+# command line (the test checks that the frames used it), and with FAN also drawn with Shirley
 # and Tuchman's fan instead of the default silhouettes. The geometry-shader run writes images.
 function(psi_add_render_test name executable)
   cmake_parse_arguments(arg "FAN" "TIMEOUT" "" ${ARGN})
   set(test PsiRepresentations.${name})
-  add_test(NAME ${test} COMMAND ${executable} "${CMAKE_BINARY_DIR}/Testing/Images")
-  set_tests_properties(${test} PROPERTIES ENVIRONMENT "PSI_PROJECTOR=geometry")
-  add_test(NAME ${test}.compute COMMAND ${executable})
-  set_tests_properties(${test}.compute PROPERTIES ENVIRONMENT "PSI_PROJECTOR=compute")
+  add_test(NAME ${test} COMMAND ${executable} "${CMAKE_BINARY_DIR}/Testing/Images"
+    --projector geometry)
+  add_test(NAME ${test}.compute COMMAND ${executable} --projector compute)
   set(variants ${test} ${test}.compute)
   if (arg_FAN)
-    add_test(NAME ${test}.fan COMMAND ${executable})
-    set_tests_properties(${test}.fan PROPERTIES ENVIRONMENT "PSI_DECOMPOSITION=fan")
+    add_test(NAME ${test}.fan COMMAND ${executable} --decomposition fan)
     list(APPEND variants ${test}.fan)
   endif ()
   if (arg_TIMEOUT)

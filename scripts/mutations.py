@@ -178,6 +178,16 @@ MUTATIONS = [
     Mutation("plan_scene_depth_only_when_sampled", "Representations/PsiFramePlan.cxx",
              "plan.SceneDepth = facts.SceneOpaque || f.NearClip || f.OpaqueClip;",
              "plan.SceneDepth = f.NearClip || f.OpaqueClip;", ["PsiRepresentations.FramePlan"]),
+    # --- The one settings type (Core/PsiSettings.cxx): the clamp, its warning, each 'Auto'.
+    Mutation("settings_clamp_silent", "Core/PsiSettings.cxx",
+             "if (used == value && (!info.Int || used == std::floor(used)))",
+             "if (true)", ["PsiCore.Settings"]),
+    Mutation("settings_auto_projector_compute", "Core/PsiSettings.cxx",
+             "return s.Projector == Projectors::ComputeShader;",
+             "return s.Projector != Projectors::GeometryShader;", ["PsiCore.Settings"]),
+    Mutation("settings_auto_isosurfaces_ignore_discard", "Core/PsiSettings.cxx",
+             "(s.IsosurfaceMethod == IsosurfaceMethods::Auto && s.EarlyDiscard && zeroOpacity)",
+             "(s.IsosurfaceMethod == IsosurfaceMethods::Auto && zeroOpacity)", ["PsiCore.Settings"]),
     # --- Translucent geometry with depth peeling for volumes (Representations/PsiDepthPeelingCalls,
     # PsiRenderTarget).
     Mutation("peeling_stages_ignored", "Representations/PsiDepthPeelingCalls.cxx",

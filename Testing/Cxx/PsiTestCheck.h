@@ -15,13 +15,66 @@ inline int& Failures()
   return n;
 }
 
-/// The projector a run asks for through PSI_PROJECTOR ("geometry" or "compute"; CTest runs each
-/// render test once with each): 0 geometry shader, 1 compute shader (vtkPsiVolumeMapper's
-/// Projectors), -1 when unset.
+/// The settings a render test's command line asks for (CTest runs each render test once per
+/// projector, some also with the fan): psi::Projectors and psi::Decompositions values, -1 when
+/// not asked.
+struct RequestedSettings
+{
+  int Projector = -1;
+  int Decomposition = -1;
+};
+
+inline RequestedSettings& Requested()
+{
+  static RequestedSettings r;
+  return r;
+}
+
+/// Reads `[IMAGE_FOLDER] [--projector geometry|compute] [--decomposition silhouette|fan]` into
+/// Requested() and returns the image folder ("" when none: no images are written).
+inline std::string ParseArguments(int argc, char* argv[])
+{
+  std::string folder;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    const std::string value = i + 1 < argc ? argv[i + 1] : "";
+    if (a == "--projector")
+    {
+      Requested().Projector = value == "compute" ? 1 : 0;
+      ++i;
+    }
+    else if (a == "--decomposition")
+    {
+      Requested().Decomposition = value == "fan" ? 1 : 0;
+      ++i;
+    }
+    else
+    {
+      folder = a;
+    }
+  }
+  return folder;
+}
+
+/// Gives `mapper` the projector and decomposition the command line asked for.
+template <typename Mapper>
+void ApplyRequested(Mapper* mapper)
+{
+  if (Requested().Projector >= 0)
+  {
+    mapper->SetProjector(Requested().Projector);
+  }
+  if (Requested().Decomposition >= 0)
+  {
+    mapper->SetDecomposition(Requested().Decomposition);
+  }
+}
+
+/// The projector the command line asked for, -1 when none.
 inline int RequestedProjector()
 {
-  const char* p = std::getenv("PSI_PROJECTOR");
-  return !p ? -1 : std::string(p) == "compute" ? 1 : std::string(p) == "geometry" ? 0 : -1;
+  return Requested().Projector;
 }
 } // namespace psitest
 
@@ -39,12 +92,12 @@ inline int RequestedProjector()
 
 namespace psitest
 {
-/// Checks that the last frame used the projector PSI_PROJECTOR asks for (`used`: the mapper's
-/// GetLastUsedProjector()).
+/// Checks that the last frame used the projector the command line asked for (`used`: the
+/// mapper's GetLastUsedProjector()).
 inline void CheckRequestedProjector(int used)
 {
   PSI_CHECK(RequestedProjector() < 0 || used == RequestedProjector(),
-    "the last frame used projector %d, not the one asked for (PSI_PROJECTOR)", used);
+    "the last frame used projector %d, not the one asked for (--projector)", used);
 }
 
 /// Prints "<test> passed" or "<test> FAILED"; the exit code of the test's main.

@@ -8,20 +8,19 @@
 // (silhouettes); the scene depth copied only when something tests or samples it.
 #include "PsiFramePlan.h"
 #include "PsiIntegrationMethods.h"
+#include "PsiSettings.h"
 #include "PsiTestCheck.h"
-#include "vtkPsiVolumeMapper.h"
 
+#include <cmath>
 #include <cstdlib>
 
 namespace
 {
-using M = vtkPsiVolumeMapper;
-
 // A scene with nothing special: no isosurfaces, an opacity without zero regions.
-PsiFrameSettings Settings()
+psi::Settings Settings()
 {
-  PsiFrameSettings s;
-  s.Decomposition = M::DECOMPOSITION_SILHOUETTE;
+  psi::Settings s;
+  s.Decomposition = psi::Decompositions::Silhouette;
   return s;
 }
 
@@ -37,8 +36,8 @@ void TestMethodTables()
 {
   for (int m = 0; m < psi::NumberOfIntegrationMethods(); ++m)
   {
-    PsiFrameSettings s = Settings();
-    s.Method = m;
+    psi::Settings s = Settings();
+    s.IntegrationMethod = m;
     const PsiFramePlan plan = PlanFrame(s, Facts());
     const psi::IntegrationMethodInfo& info = psi::GetIntegrationMethodInfo(psi::Method(m));
     PSI_CHECK(plan.Features.Method == m, "method %d drawn as %d", m, plan.Features.Method);
@@ -52,7 +51,7 @@ void TestMethodTables()
 
 void TestEarlyDiscard()
 {
-  PsiFrameSettings s = Settings();
+  psi::Settings s = Settings();
   PsiSceneFacts facts = Facts();
   PSI_CHECK(!PlanFrame(s, facts).Features.EarlyDiscard, "early discard without zero opacity");
   facts.ZeroOpacity = true;
@@ -61,8 +60,8 @@ void TestEarlyDiscard()
   s.EarlyDiscard = false;
   PSI_CHECK(!PlanFrame(s, facts).Tables.OpacityPrefix, "early discard switched off");
   s.EarlyDiscard = true;
-  s.IsoCount = 2;
-  s.IsosurfaceMethod = M::ISO_PER_FRAGMENT;
+  s.IsosurfaceValues = { 0.2, 0.6 };
+  s.IsosurfaceMethod = psi::IsosurfaceMethods::PerFragment;
   plan = PlanFrame(s, facts);
   PSI_CHECK(!plan.Features.EarlyDiscard && !plan.Features.IsoTriangles,
     "per-fragment isosurfaces are seen where the volume is transparent: no discard");
@@ -70,51 +69,59 @@ void TestEarlyDiscard()
 
 void TestIsosurfaces()
 {
-  PsiFrameSettings s = Settings();
+  psi::Settings s = Settings();
   PsiSceneFacts facts = Facts();
-  s.IsoCount = 3;
+  s.IsosurfaceValues = { 0.2, 0.4, 0.6 };
   PSI_CHECK(!PlanFrame(s, facts).Features.IsoTriangles, "'Auto' without zero opacity");
   facts.ZeroOpacity = true;
   PsiFramePlan plan = PlanFrame(s, facts);
   PSI_CHECK(plan.Features.IsoTriangles && plan.Features.EarlyDiscard, "'Auto' with zero opacity");
   PSI_CHECK(plan.Tables.Gradients && plan.Features.IsoSmooth, "smooth shading reads gradients");
-  s.IsosurfaceShading = M::ISO_FLAT;
+  s.IsosurfaceShading = psi::IsosurfaceShadings::Flat;
   PSI_CHECK(!PlanFrame(s, facts).Tables.Gradients, "flat shading needs no gradients");
+  s.IsosurfaceShading = psi::IsosurfaceShadings::Unlit;
+  PSI_CHECK(!PlanFrame(s, facts).Tables.Gradients && PlanFrame(s, facts).Features.IsoCount == 3,
+    "unlit isosurfaces need no gradients");
+  s.IsosurfaceShading = psi::IsosurfaceShadings::Flat;
   facts.MaxGeometryOutputVertices = 16; // a driver whose budget the pieces exceed
   PSI_CHECK(MayUseIsoTriangles(s, facts) && !PlanFrame(s, facts).Features.IsoTriangles,
     "marching tetrahedra beyond the geometry-shader limits");
   facts = Facts();
-  s.IsosurfaceMethod = M::ISO_MARCHING_TETRAHEDRA;
+  s.IsosurfaceMethod = psi::IsosurfaceMethods::MarchingTetrahedra;
   PSI_CHECK(PlanFrame(s, facts).Features.IsoTriangles, "marching tetrahedra asked for");
-  s.IsoCount = 0;
+  s.IsosurfaceValues.clear();
   PSI_CHECK(!MayUseIsoTriangles(s, facts), "no isovalues: no limits to ask the driver");
+  s.IsosurfaceValues = { std::nan(""), std::nan("") };
+  PSI_CHECK(!MayUseIsoTriangles(s, facts) && PlanFrame(s, facts).Features.IsoCount == 0 &&
+      !PlanFrame(s, facts).Features.IsoTriangles,
+    "only non-finite isovalues: no isosurfaces");
 }
 
 void TestAdaptive()
 {
-  PsiFrameSettings s = Settings();
+  psi::Settings s = Settings();
   PsiSceneFacts facts = Facts();
-  facts.TableDeviation = 0.5 * s.AdaptiveAutoDeviation;
+  facts.TableDeviation = 0.5 * psi::AdaptiveAutoDeviation;
   PSI_CHECK(!PlanFrame(s, facts).Features.Adaptive, "'Auto' where the table follows the nodes");
-  facts.TableDeviation = 2 * s.AdaptiveAutoDeviation;
+  facts.TableDeviation = 2 * psi::AdaptiveAutoDeviation;
   PsiFramePlan plan = PlanFrame(s, facts);
   PSI_CHECK(plan.Features.Adaptive && plan.Tables.AdaptiveNodes, "'Auto' where the table misses");
   facts.NodesFaithful = false;
   PSI_CHECK(!PlanFrame(s, facts).Features.Adaptive, "nodes that cannot follow the function");
   facts = Facts();
-  s.AdaptiveSampling = M::ADAPTIVE_ON;
+  s.AdaptiveSampling = psi::AdaptiveModes::On;
   PSI_CHECK(PlanFrame(s, facts).Features.Adaptive, "on");
-  s.AdaptiveSampling = M::ADAPTIVE_OFF;
+  s.AdaptiveSampling = psi::AdaptiveModes::Off;
   facts.TableDeviation = 1;
   PSI_CHECK(!PlanFrame(s, facts).Features.Adaptive && !NeedsAdaptiveNodes(s), "off");
 }
 
 void TestSeparateOpacityAndPeeling()
 {
-  PsiFrameSettings s = Settings();
-  s.Decomposition = M::DECOMPOSITION_FAN;
-  s.AdaptiveSampling = M::ADAPTIVE_ON;
-  s.Method = static_cast<int>(psi::Method::FullPreIntegration);
+  psi::Settings s = Settings();
+  s.Decomposition = psi::Decompositions::Fan;
+  s.AdaptiveSampling = psi::AdaptiveModes::On;
+  s.IntegrationMethod = static_cast<int>(psi::Method::FullPreIntegration);
   PsiSceneFacts facts = Facts();
   PsiFramePlan plan = PlanFrame(s, facts);
   PSI_CHECK(!plan.Features.Silhouette && plan.Features.Adaptive && plan.Tables.PreIntegration,
@@ -134,7 +141,7 @@ void TestSeparateOpacityAndPeeling()
 
 void TestSceneDepth()
 {
-  const PsiFrameSettings s = Settings();
+  const psi::Settings s = Settings();
   PsiSceneFacts facts = Facts();
   facts.Parallel = true;
   PSI_CHECK(!PlanFrame(s, facts).Features.ExactSegments, "parallel: screen-linear is exact");

@@ -251,7 +251,7 @@ void MakeGridTets(vtkUnstructuredGrid* grid, int n, bool kuhn)
 
 int main(int argc, char* argv[])
 {
-  const std::string outDir = argc > 1 ? argv[1] : "";
+  const std::string outDir = psitest::ParseArguments(argc, argv);
   psitest::VolumeView view(W, H, nullptr, nullptr); // the volume is added below
   vtkRenderWindow* win = view.Window;
   vtkRenderer* ren = view.Renderer;
@@ -262,6 +262,7 @@ int main(int argc, char* argv[])
   vtkColorTransferFunction* color = tf.Color;
   vtkPiecewiseFunction* opacity = tf.Opacity;
   vtkNew<vtkPsiVolumeMapper> mapper;
+  psitest::ApplyRequested(mapper.GetPointer());
   vtkNew<vtkVolume> vol;
   vol->SetMapper(mapper);
   vol->SetProperty(tf.Property);

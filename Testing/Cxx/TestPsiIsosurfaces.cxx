@@ -88,6 +88,7 @@ struct Scene
   explicit Scene(const std::string& outDir)
     : OutDir(outDir)
   {
+    psitest::ApplyRequested(this->Mapper.GetPointer());
     psitest::MakeWaveletTets(this->Grid, 3, 3.0);
     this->Grid->GetPointData()->GetScalars()->GetRange(this->R);
     this->Span = this->R[1] - this->R[0];
@@ -140,7 +141,7 @@ void CheckVariantsDrawThePlainVolume(Scene& s)
     {
       mapper->SetIntegrationMethod(method);
       mapper->SetIsosurfaceValues({});
-      mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_OFF);
+      mapper->SetAdaptiveSampling(psi::AdaptiveModes::Off);
       const std::vector<double> plain = Grab(win);
       const std::string plainDefines = mapper->GetLastFeatureDefines();
       for (int iso = 0; iso < 3; ++iso)
@@ -154,7 +155,7 @@ void CheckVariantsDrawThePlainVolume(Scene& s)
           mapper->SetIsosurfaceValues(iso == 0 ? std::vector<double>()
               : iso == 1                       ? outOfRange1
                                                : outOfRange3);
-          mapper->SetAdaptiveSampling(adaptive ? vtkPsiVolumeMapper::ADAPTIVE_ON : vtkPsiVolumeMapper::ADAPTIVE_OFF);
+          mapper->SetAdaptiveSampling(adaptive ? psi::AdaptiveModes::On : psi::AdaptiveModes::Off);
           const std::vector<double> img = Grab(win);
           const std::string defs = mapper->GetLastFeatureDefines();
           const Diff d = Compare(img, plain);
@@ -172,7 +173,7 @@ void CheckVariantsDrawThePlainVolume(Scene& s)
         }
       }
       mapper->SetIsosurfaceValues({});
-      mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_OFF);
+      mapper->SetAdaptiveSampling(psi::AdaptiveModes::Off);
       Grab(win);
       PSI_CHECK(mapper->GetLastFeatureDefines() == plainDefines,
         "features switched off again give the plain program");
@@ -207,14 +208,14 @@ void CheckAdaptiveSamplingCatchesASpike(Scene& s)
   property->SetScalarOpacityUnitDistance(1.0);
   const psi::ReferenceScene scene = psitest::MakeReferenceScene(s.Grid, s.TF.Color, spike, 1.0);
   const std::vector<double> ref = Reference(ren, scene);
-  mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_OFF);
+  mapper->SetAdaptiveSampling(psi::AdaptiveModes::Off);
   const std::vector<double> off = Grab(win);
-  mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_ON);
+  mapper->SetAdaptiveSampling(psi::AdaptiveModes::On);
   const std::vector<double> on = Grab(win);
   // the spike's three control points and the range ends
   PSI_CHECK(mapper->GetLastNumberOfAdaptiveNodes() == 5, "spike nodes %d",
     mapper->GetLastNumberOfAdaptiveNodes());
-  mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_AUTO);
+  mapper->SetAdaptiveSampling(psi::AdaptiveModes::Auto);
   const std::vector<double> autoImg = Grab(win);
   PSI_CHECK(mapper->GetLastUsedAdaptiveSampling(), "Auto: the table misses the spike's peak");
   const Diff dOff = Compare(off, ref), dOn = Compare(on, ref), dAuto = Compare(autoImg, on);
@@ -247,7 +248,7 @@ void CheckAdaptiveSamplingCatchesASpike(Scene& s)
   property->SetScalarOpacityUnitDistance(2.0);
   Grab(win);
   PSI_CHECK(!mapper->GetLastUsedAdaptiveSampling(), "Auto: a linear function needs no splitting");
-  mapper->SetAdaptiveSampling(vtkPsiVolumeMapper::ADAPTIVE_OFF);
+  mapper->SetAdaptiveSampling(psi::AdaptiveModes::Off);
 }
 
 // 3. Occlusion: the wavelet peaks at the center, so scalars above the isovalue lie inside the
@@ -279,7 +280,7 @@ void CheckIsosurfaceOcclusion(Scene& s)
   mapper->SetIsosurfaceValues({ iso });
   mapper->IsosurfaceUseColorMapOff();
   mapper->SetIsosurfaceColor(1, 0, 0);
-  mapper->IsosurfaceLightingOff();
+  mapper->SetIsosurfaceShading(psi::IsosurfaceShadings::Unlit);
   mapper->SetIsosurfaceOpacity(1.0);
   const std::vector<double> opaque = Grab(win);
   mapper->SetIsosurfaceOpacity(0.5);
@@ -309,7 +310,7 @@ void CheckIsosurfaceOcclusion(Scene& s)
   }
   property->SetColor(s.TF.Color);
   property->SetScalarOpacity(s.TF.Opacity);
-  mapper->IsosurfaceLightingOn();
+  mapper->SetIsosurfaceShading(psi::IsosurfaceShadings::Smooth);
   mapper->IsosurfaceUseColorMapOn();
   mapper->SetIsosurfaceOpacity(1.0);
 }
@@ -365,20 +366,20 @@ void CheckIsosurfaceMethodsAgreeInView(Scene& s, const IsoCase& k, int index, in
   vtkPsiVolumeMapper* mapper = s.Mapper;
   vtkRenderWindow* win = s.View.Window;
   SetView(s, view);
-  mapper->SetIsosurfaceMethod(vtkPsiVolumeMapper::ISO_PER_FRAGMENT);
+  mapper->SetIsosurfaceMethod(psi::IsosurfaceMethods::PerFragment);
   const std::vector<double> perFragment = Grab(win);
-  PSI_CHECK(mapper->GetLastUsedIsosurfaceMethod() == vtkPsiVolumeMapper::ISO_PER_FRAGMENT,
+  PSI_CHECK(mapper->GetLastUsedIsosurfaceMethod() == psi::IsosurfaceMethods::PerFragment,
     "per-fragment method used");
-  mapper->SetIsosurfaceMethod(vtkPsiVolumeMapper::ISO_MARCHING_TETRAHEDRA);
+  mapper->SetIsosurfaceMethod(psi::IsosurfaceMethods::MarchingTetrahedra);
   const std::vector<double> mt = Grab(win);
   const bool usedMT =
-    mapper->GetLastUsedIsosurfaceMethod() == vtkPsiVolumeMapper::ISO_MARCHING_TETRAHEDRA;
+    mapper->GetLastUsedIsosurfaceMethod() == psi::IsosurfaceMethods::MarchingTetrahedra;
   const bool discarded = mapper->GetLastUsedEarlyDiscard();
-  mapper->SetIsosurfaceMethod(vtkPsiVolumeMapper::ISO_AUTO);
+  mapper->SetIsosurfaceMethod(psi::IsosurfaceMethods::Auto);
   Grab(win);
   PSI_CHECK(mapper->GetLastUsedIsosurfaceMethod() ==
-      (k.Gap && k.FitsGS ? vtkPsiVolumeMapper::ISO_MARCHING_TETRAHEDRA
-                         : vtkPsiVolumeMapper::ISO_PER_FRAGMENT),
+      (k.Gap && k.FitsGS ? psi::IsosurfaceMethods::MarchingTetrahedra
+                         : psi::IsosurfaceMethods::PerFragment),
     "%s view %d: Auto uses marching tetrahedra exactly when early discard applies", k.Name, view);
   s.View.Renderer->RemoveActor(s.Plane);
   const Diff d = Compare(mt, perFragment);
@@ -429,13 +430,13 @@ void CheckIsosurfaceMethodsAgree(Scene& s)
   {
     twelve.push_back(r[0] + (0.4 + 0.04 * i) * span);
   }
-  const IsoCase cases[] = { { "one", { b }, 1.0, vtkPsiVolumeMapper::ISO_SMOOTH, false, true },
-    { "three translucent", { a, b, c }, 0.4, vtkPsiVolumeMapper::ISO_SMOOTH, false, true },
-    { "three flat", { c, a, b }, 0.6, vtkPsiVolumeMapper::ISO_FLAT, false, true },
-    { "two, opacity gap", { r[0] + 0.3 * span, b }, 0.5, vtkPsiVolumeMapper::ISO_SMOOTH, true,
+  const IsoCase cases[] = { { "one", { b }, 1.0, psi::IsosurfaceShadings::Smooth, false, true },
+    { "three translucent", { a, b, c }, 0.4, psi::IsosurfaceShadings::Smooth, false, true },
+    { "three flat", { c, a, b }, 0.6, psi::IsosurfaceShadings::Flat, false, true },
+    { "two, opacity gap", { r[0] + 0.3 * span, b }, 0.5, psi::IsosurfaceShadings::Smooth, true,
       true },
-    { "twelve (GS limit)", twelve, 0.3, vtkPsiVolumeMapper::ISO_SMOOTH, false, false },
-    { "three own opacities", { a, b, c }, 1.0, vtkPsiVolumeMapper::ISO_SMOOTH, true, true,
+    { "twelve (GS limit)", twelve, 0.3, psi::IsosurfaceShadings::Smooth, false, false },
+    { "three own opacities", { a, b, c }, 1.0, psi::IsosurfaceShadings::Smooth, true, true,
       { 0.2, 1.0, 0.5 } } };
   for (const IsoCase& k : cases)
   {
@@ -451,7 +452,7 @@ void CheckIsosurfaceMethodsAgree(Scene& s)
   }
   s.TF.Property->SetScalarOpacity(s.TF.Opacity);
   mapper->SetIsosurfaceOpacities({});
-  mapper->SetIsosurfaceShading(vtkPsiVolumeMapper::ISO_SMOOTH);
+  mapper->SetIsosurfaceShading(psi::IsosurfaceShadings::Smooth);
   mapper->SetIsosurfaceOpacity(1.0);
 }
 
@@ -483,9 +484,9 @@ void CheckTimeStepGradients(Scene& s)
   SetView(s, 0);
   const double iso = s.R[0] + 0.6 * s.Span;
   mapper->SetIsosurfaceValues({ iso });
-  mapper->SetIsosurfaceShading(vtkPsiVolumeMapper::ISO_SMOOTH);
-  for (int method : { vtkPsiVolumeMapper::ISO_MARCHING_TETRAHEDRA,
-         vtkPsiVolumeMapper::ISO_PER_FRAGMENT })
+  mapper->SetIsosurfaceShading(psi::IsosurfaceShadings::Smooth);
+  for (int method : { psi::IsosurfaceMethods::MarchingTetrahedra,
+         psi::IsosurfaceMethods::PerFragment })
   {
     mapper->SetIsosurfaceMethod(method);
     mapper->SetInputData(s.Grid);
@@ -502,7 +503,7 @@ void CheckTimeStepGradients(Scene& s)
     const std::vector<double> fresh = Grab(win);
     const Diff d = Compare(next, fresh);
     std::printf("time step, smooth isosurfaces (%s): vs the step drawn first: mean %.5f max "
-                "%.3f\n", method == vtkPsiVolumeMapper::ISO_PER_FRAGMENT ? "per fragment"
+                "%.3f\n", method == psi::IsosurfaceMethods::PerFragment ? "per fragment"
                                                                 : "marching tetrahedra",
       d.Mean, d.Max);
     PSI_CHECK(sameMesh && mapper->GetMeshVersion() != version,
@@ -512,13 +513,13 @@ void CheckTimeStepGradients(Scene& s)
   }
   mapper->SetInputData(s.Grid);
   mapper->SetIsosurfaceValues({});
-  mapper->SetIsosurfaceMethod(vtkPsiVolumeMapper::ISO_AUTO);
+  mapper->SetIsosurfaceMethod(psi::IsosurfaceMethods::Auto);
 }
 } // namespace
 
 int main(int argc, char* argv[])
 {
-  Scene s(argc > 1 ? argv[1] : "");
+  Scene s(psitest::ParseArguments(argc, argv));
   CheckVariantsDrawThePlainVolume(s);
   CheckAdaptiveSamplingCatchesASpike(s);
   CheckIsosurfaceOcclusion(s);

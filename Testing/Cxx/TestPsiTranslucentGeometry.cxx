@@ -3,7 +3,7 @@
 // reference: the reference ray caster compositing the surfaces' layers at their depths
 // (psi::ReferenceSurface, the same triangles GL draws). A translucent unlit sphere in front of
 // the volume, behind it, cutting through it, and two nested spheres cutting through it; each with
-// the geometry-shader and the compute projector (PSI_PROJECTOR), perspective and parallel.
+// the geometry-shader and the compute projector (--projector), perspective and parallel.
 // Without depth peeling for volumes VTK draws volumes after all translucent geometry, which
 // cannot be intermixed: the mapper then warns once.
 #include "PsiReferenceRaycaster.h"
@@ -124,6 +124,7 @@ struct Scene
   explicit Scene(const std::string& outDir)
     : OutDir(outDir)
   {
+    psitest::ApplyRequested(this->Mapper.GetPointer());
     psitest::MakeWaveletTets(this->Grid, 6, 1.0);
     double r[2];
     this->Grid->GetPointData()->GetScalars()->GetRange(r);
@@ -250,7 +251,7 @@ void CheckOnePeelAndNoVolumePeeling(Scene& s, const std::vector<Sphere>& nested)
 
 int main(int argc, char* argv[])
 {
-  Scene s(argc > 1 ? argv[1] : "");
+  Scene s(psitest::ParseArguments(argc, argv));
   const std::vector<Case> cases = Cases();
   CheckSpheres(s, cases);
   CheckSphereAndOpaquePlane(s, cases[2].Spheres[0]);

@@ -96,6 +96,7 @@ struct Fixture
   explicit Fixture(const std::string& outDir)
     : OutDir(outDir)
   {
+    psitest::ApplyRequested(this->Mapper.GetPointer());
     MakeScene(this->S, 6, 1.0, 1.5);
     this->Ref = MakeReference(this->S);
     this->Mapper->SetInputData(this->S.Grid);
@@ -178,9 +179,9 @@ void CheckKuhnCellsOrder(Fixture& f)
   cam->SetFocalPoint(0, 0, 0);
   cam->SetPosition(0.3, 0.2, 45);
   f.View.Renderer->ResetCameraClippingRange();
-  mapper->SetSortMethod(vtkPsiVolumeMapper::CENTROID);
+  mapper->SetSortMethod(psi::Sorts::Centroid);
   const psitest::Result centroid = f.Compare("kuhn_centroid", kuhnRef);
-  mapper->SetSortMethod(vtkPsiVolumeMapper::MPVONC);
+  mapper->SetSortMethod(psi::Sorts::MPVONC);
   const psitest::Result mpvonc = f.Compare("kuhn_mpvonc", kuhnRef);
   PSI_CHECK(mpvonc.Max < 0.03 && mpvonc.Mean < 0.003, "Kuhn cells, MPVONC: mean %g max %g",
     mpvonc.Mean, mpvonc.Max);
@@ -234,7 +235,7 @@ void CheckFiveChunks(Fixture& f)
     const psitest::Result r = f.Compare("five_chunks_" + std::to_string(chunk), fineRef);
     PSI_CHECK(n > 4 * chunk && chunk == (side == W ? 4096u : 32768u),
       "five chunks: %zu tetrahedra in chunks of %zu", n, chunk);
-    // (at 232^2 Shirley-Tuchman's fan, PSI_DECOMPOSITION=fan, leaves one stray pixel at 0.15)
+    // (at 232^2 Shirley-Tuchman's fan, --decomposition fan, leaves one stray pixel at 0.15)
     PSI_CHECK(r.Mean < 0.006 && (side == W ? r.Max : r.P999) < 0.05 && r.Outliers < 1e-4,
       "five chunks of %zu: mean error %g, max %g, 99.9%% %g", chunk, r.Mean, r.Max, r.P999);
   }
@@ -265,7 +266,7 @@ void CheckCameraInside(Fixture& f)
   // per-fragment reconstruction is what makes the inside view correct.
   // (silhouettes are exact in both projections: the screen-linear triple is the fan's)
   const int decomposition = mapper->GetDecomposition();
-  mapper->SetDecomposition(vtkPsiVolumeMapper::DECOMPOSITION_FAN);
+  mapper->SetDecomposition(psi::Decompositions::Fan);
   mapper->ExactPerspectiveSegmentsOff();
   const psitest::Result linear = f.Compare("camera_inside_screen_linear", f.Ref);
   mapper->ExactPerspectiveSegmentsOn();
@@ -441,7 +442,7 @@ void CheckEarlyDiscard(Fixture& f)
 
 int main(int argc, char* argv[])
 {
-  Fixture f(argc > 1 ? argv[1] : "");
+  Fixture f(psitest::ParseArguments(argc, argv));
   CheckPerspectiveMethods(f);
   CheckKuhnCellsOrder(f);
   CheckTimeStep(f);
