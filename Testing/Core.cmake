@@ -1,9 +1,13 @@
-# Tests of the Core module (GL-free math), included from Testing/CMakeLists.txt.
+# Tests of the Core module (GL-free math), included from Testing/CMakeLists.txt. A test of Core
+# code links PsiVolume::Core (with PsiTestSupport for the exact references, and VTK's own modules
+# for the data it builds), not the Representations module or ParaView's rendering libraries:
+# only TestIntegrationMethods does, for its check of the mapper's IntegrationMethod (clamped to
+# the table, named from it, its default the XML's).
 
 # The PTINT truth table and its fan, Psi and the segment integrals against an independent
 # quadrature, the Psi table.
 add_executable(TestPsiMath Cxx/TestPsiMath.cxx)
-target_link_libraries(TestPsiMath PRIVATE PsiVolume::Representations PsiTestSupport)
+target_link_libraries(TestPsiMath PRIVATE PsiVolume::Core PsiTestSupport)
 add_test(NAME PsiCore.Math COMMAND TestPsiMath)
 
 # Every integration method against the reference of its model; the panel's IntegrationMethod
@@ -36,8 +40,8 @@ add_test(NAME PsiCore.TetMesh COMMAND TestTetMesh)
 set(CGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE TRUE)
 find_package(CGAL REQUIRED)
 add_executable(TestMPVONC Cxx/TestMPVONC.cxx)
-target_link_libraries(TestMPVONC PRIVATE PsiVolume::Filters PsiVolume::Representations PsiTestSupport
-  CGAL::CGAL VTK::CommonCore VTK::CommonDataModel VTK::CommonExecutionModel)
+target_link_libraries(TestMPVONC PRIVATE PsiVolume::Filters PsiVolume::Core CGAL::CGAL
+  VTK::CommonCore VTK::CommonDataModel VTK::CommonExecutionModel)
 add_test(NAME PsiCore.MPVONC COMMAND TestMPVONC)
 
 # The one settings type: the representation's XML defaults and ranges against it, the clamp and

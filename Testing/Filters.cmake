@@ -1,9 +1,8 @@
 # Tests of the Filters module (the CGAL conforming tetrahedralization), included from
 # Testing/CMakeLists.txt (after Core.cmake, which finds CGAL).
 add_executable(TestConformingTetrahedralize Cxx/TestConformingTetrahedralize.cxx)
-target_link_libraries(TestConformingTetrahedralize PRIVATE PsiVolume::Filters
-  PsiVolume::Representations CGAL::CGAL VTK::CommonCore VTK::CommonDataModel
-  VTK::CommonExecutionModel VTK::IOLegacy VTK::IOParallel)
+target_link_libraries(TestConformingTetrahedralize PRIVATE PsiVolume::Filters CGAL::CGAL
+  VTK::CommonCore VTK::CommonDataModel VTK::CommonExecutionModel VTK::IOLegacy VTK::IOParallel)
 add_test(NAME PsiFilters.ConformingTetrahedralize
   COMMAND TestConformingTetrahedralize synthetic)
 add_test(NAME PsiFilters.ConformingTetrahedralize.BluntFin

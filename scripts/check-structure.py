@@ -2,6 +2,9 @@
 """Checks the size limits of the code layout (docs/architecture.md):
   - no C++ function in Core/, Representations/, Filters/ or Readers/ longer than 150 lines;
   - no C++ file there longer than 600 lines, and vtkPsiVolumeMapper.cxx at most 500;
+  - the same two limits for the test code (Testing/Cxx, Testing/Support, Testing/Fuzz): a test is
+    one named function per check, and a test file past 600 lines holds more than one concept
+    (its mesh builders or checkers belong in a header of their own);
   - no shader file (Shaders/*.glsl) longer than 300 lines;
   - Filters/vtk.module does not depend on the Representations module.
 Function bodies are found by brace matching on the source with comments and strings removed:
@@ -12,7 +15,8 @@ import re
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-FOLDERS = ["Core", "Representations", "Filters", "Readers"]
+FOLDERS = ["Core", "Representations", "Filters", "Readers",
+           "Testing/Cxx", "Testing/Support", "Testing/Fuzz"]
 MAX_FUNCTION, MAX_FILE, MAX_MAPPER, MAX_SHADER = 150, 600, 500, 300
 
 

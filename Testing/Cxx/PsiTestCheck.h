@@ -1,4 +1,5 @@
-// Minimal checking for the C++ tests: each CHECK prints what failed; main returns the count.
+// Minimal checking for the C++ tests: each CHECK prints what failed; main reports and returns
+// whether any did.
 #ifndef PsiTestCheck_h
 #define PsiTestCheck_h
 
@@ -88,5 +89,23 @@ inline int RequestedProjector()
       std::printf("\n");                                                                           \
     }                                                                                              \
   } while (0)
+
+namespace psitest
+{
+/// Checks that the last frame used the projector the command line asked for (`used`: the
+/// mapper's GetLastUsedProjector()).
+inline void CheckRequestedProjector(int used)
+{
+  PSI_CHECK(RequestedProjector() < 0 || used == RequestedProjector(),
+    "the last frame used projector %d, not the one asked for (--projector)", used);
+}
+
+/// Prints "<test> passed" or "<test> FAILED"; the exit code of the test's main.
+inline int Report(const char* test)
+{
+  std::printf("%s %s\n", test, Failures() ? "FAILED" : "passed");
+  return Failures() ? 1 : 0;
+}
+} // namespace psitest
 
 #endif

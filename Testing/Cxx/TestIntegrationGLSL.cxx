@@ -107,6 +107,64 @@ double GpuVsCpuBound(psi::Method m)
   }
 }
 constexpr double UnitDistance = 1.5;
+
+// Every table row has its GLSL integrator embedded, and every embedded integrator has a row.
+void CheckEmbeddedIntegrators()
+{
+  for (const psi::IntegrationMethodInfo& info : psi::IntegrationMethodTable())
+  {
+    PSI_CHECK(psi::IntegratorGlslSource(info.GlslName) != nullptr,
+      "%s: Shaders/%s.glsl is not embedded", info.Name, info.GlslName);
+  }
+  for (const std::string& name : psi::IntegratorGlslNames())
+  {
+    const auto& table = psi::IntegrationMethodTable();
+    PSI_CHECK(std::any_of(table.begin(), table.end(),
+                [&](const psi::IntegrationMethodInfo& info) { return name == info.GlslName; }),
+      "Shaders/%s.glsl has no row in psi::IntegrationMethodTable()", name.c_str());
+  }
+}
+
+// The GLSL outputs `out` (RGBA per case) of method `info` against its C++ function and the
+// reference of its model on the same float inputs; prints the largest differences.
+void CompareWithCpp(const psi::IntegrationMethodInfo& info, const std::vector<Case>& cases,
+  const std::vector<float>& out, const psi::PsiTable& table)
+{
+  const int W = static_cast<int>(cases.size());
+  double gpuCpu = 0, gpuRef = 0, cpuRef = 0;
+  int nonFinite = 0;
+  for (int i = 0; i < W; ++i)
+  {
+    // The GPU sees float inputs (alpha = 1 - 1e-6 is off by 1% in 1 - alpha as a float): the
+    // C++ side gets the same rounded inputs, so the comparison measures the formulas.
+    psi::TFSegment rounded = cases[i].S;
+    for (int k = 0; k < 3; ++k)
+    {
+      rounded.Lf[k] = static_cast<float>(rounded.Lf[k]);
+      rounded.Lb[k] = static_cast<float>(rounded.Lb[k]);
+    }
+    rounded.af = static_cast<float>(rounded.af);
+    rounded.ab = static_cast<float>(rounded.ab);
+    rounded.D = static_cast<float>(rounded.D);
+    const psi::Rgba cpu = info.Integrate(rounded, &table);
+    const psi::Rgba ref = psi::IntegrateReferenceFor(info.Id, rounded);
+    for (int k = 0; k < 4; ++k)
+    {
+      const double g = out[4 * i + k];
+      if (!std::isfinite(g))
+      {
+        ++nonFinite;
+        continue;
+      }
+      gpuCpu = std::max(gpuCpu, std::abs(g - cpu[k]));
+      gpuRef = std::max(gpuRef, std::abs(g - ref[k]));
+      cpuRef = std::max(cpuRef, std::abs(cpu[k] - ref[k]));
+    }
+  }
+  std::printf("%-34s %12.2e %12.2e %12.2e\n", info.Name, gpuCpu, gpuRef, cpuRef);
+  PSI_CHECK(nonFinite == 0, "%s: %d non-finite GLSL outputs", info.Name, nonFinite);
+  PSI_CHECK(gpuCpu < GpuVsCpuBound(info.Id), "%s: GLSL differs from C++ by %g", info.Name, gpuCpu);
+}
 } // namespace
 
 int main()
@@ -158,19 +216,7 @@ int main()
   win->GetState()->PushFramebufferBindings();
   fbo->PopulateFramebuffer(W, 1, true, 1, VTK_FLOAT, false, 0, 0);
 
-  // Every table row has its GLSL integrator embedded, and every embedded integrator has a row.
-  for (const psi::IntegrationMethodInfo& info : psi::IntegrationMethodTable())
-  {
-    PSI_CHECK(psi::IntegratorGlslSource(info.GlslName) != nullptr,
-      "%s: Shaders/%s.glsl is not embedded", info.Name, info.GlslName);
-  }
-  for (const std::string& name : psi::IntegratorGlslNames())
-  {
-    const auto& table = psi::IntegrationMethodTable();
-    PSI_CHECK(std::any_of(table.begin(), table.end(),
-                [&](const psi::IntegrationMethodInfo& info) { return name == info.GlslName; }),
-      "Shaders/%s.glsl has no row in psi::IntegrationMethodTable()", name.c_str());
-  }
+  CheckEmbeddedIntegrators();
   std::printf("%-34s %12s %12s %12s   (over %d segments, %d hard cases)\n", "method",
     "GLSL-C++", "GLSL-ref", "C++-ref", W, static_cast<int>(std::count_if(cases.begin(), cases.end(), [](const Case& c) { return c.Hard; })));
   for (const psi::IntegrationMethodInfo& info : psi::IntegrationMethodTable())
@@ -222,41 +268,8 @@ int main()
     tl->Deactivate();
     psiTex->Deactivate();
 
-    double gpuCpu = 0, gpuRef = 0, cpuRef = 0;
-    int nonFinite = 0;
-    for (int i = 0; i < W; ++i)
-    {
-      // The GPU sees float inputs (alpha = 1 - 1e-6 is off by 1% in 1 - alpha as a float): the
-      // C++ side gets the same rounded inputs, so the comparison measures the formulas.
-      psi::TFSegment rounded = cases[i].S;
-      for (int k = 0; k < 3; ++k)
-      {
-        rounded.Lf[k] = static_cast<float>(rounded.Lf[k]);
-        rounded.Lb[k] = static_cast<float>(rounded.Lb[k]);
-      }
-      rounded.af = static_cast<float>(rounded.af);
-      rounded.ab = static_cast<float>(rounded.ab);
-      rounded.D = static_cast<float>(rounded.D);
-      const psi::Rgba cpu = info.Integrate(rounded, &table);
-      const psi::Rgba ref = psi::IntegrateReferenceFor(info.Id, rounded);
-      for (int k = 0; k < 4; ++k)
-      {
-        const double g = out[4 * i + k];
-        if (!std::isfinite(g))
-        {
-          ++nonFinite;
-          continue;
-        }
-        gpuCpu = std::max(gpuCpu, std::abs(g - cpu[k]));
-        gpuRef = std::max(gpuRef, std::abs(g - ref[k]));
-        cpuRef = std::max(cpuRef, std::abs(cpu[k] - ref[k]));
-      }
-    }
-    std::printf("%-34s %12.2e %12.2e %12.2e\n", info.Name, gpuCpu, gpuRef, cpuRef);
-    PSI_CHECK(nonFinite == 0, "%s: %d non-finite GLSL outputs", info.Name, nonFinite);
-    PSI_CHECK(gpuCpu < GpuVsCpuBound(info.Id), "%s: GLSL differs from C++ by %g", info.Name, gpuCpu);
+    CompareWithCpp(info, cases, out, table);
   }
   win->GetState()->PopFramebufferBindings();
-  std::printf("%s\n", psitest::Failures() ? "TestIntegrationGLSL FAILED" : "TestIntegrationGLSL passed");
-  return psitest::Failures() ? 1 : 0;
+  return psitest::Report("TestIntegrationGLSL");
 }

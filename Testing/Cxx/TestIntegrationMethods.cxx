@@ -185,6 +185,23 @@ std::string Edited(std::string s, const std::string& from, const std::string& to
   return pos == std::string::npos ? std::string() : s.replace(pos, from.size(), to);
 }
 
+// The mapper takes the table's values, clamped, and names them from the table; returns its
+// default method. (The one check of this test that needs the Representations module.)
+int CheckMapperTakesTheTable()
+{
+  const auto& table = psi::IntegrationMethodTable();
+  vtkNew<vtkPsiVolumeMapper> mapper;
+  const int last = psi::NumberOfIntegrationMethods() - 1;
+  mapper->SetIntegrationMethod(-3);
+  PSI_CHECK(mapper->GetIntegrationMethod() == 0, "clamped below");
+  mapper->SetIntegrationMethod(last + 5);
+  PSI_CHECK(mapper->GetIntegrationMethod() == last, "clamped above");
+  PSI_CHECK(std::string(vtkPsiVolumeMapper::GetIntegrationMethodName(last)) == table[last].Name &&
+      std::string(vtkPsiVolumeMapper::GetIntegrationMethodName(last + 1)) == "Unknown",
+    "mapper names");
+  return vtkNew<vtkPsiVolumeMapper>()->GetIntegrationMethod();
+}
+
 void CheckTable(const char* xmlPath)
 {
   const auto& table = psi::IntegrationMethodTable();
@@ -218,17 +235,8 @@ void CheckTable(const char* xmlPath)
       std::string(psi::MethodName(Method::Count)) == "Unknown",
     "lookups outside the table");
 
-  // The mapper takes the table's values, clamped, and names them from the table.
-  vtkNew<vtkPsiVolumeMapper> mapper;
   const int last = psi::NumberOfIntegrationMethods() - 1;
-  mapper->SetIntegrationMethod(-3);
-  PSI_CHECK(mapper->GetIntegrationMethod() == 0, "clamped below");
-  mapper->SetIntegrationMethod(last + 5);
-  PSI_CHECK(mapper->GetIntegrationMethod() == last, "clamped above");
-  PSI_CHECK(std::string(vtkPsiVolumeMapper::GetIntegrationMethodName(last)) == table[last].Name &&
-      std::string(vtkPsiVolumeMapper::GetIntegrationMethodName(last + 1)) == "Unknown",
-    "mapper names");
-  const int mapperDefault = vtkNew<vtkPsiVolumeMapper>()->GetIntegrationMethod();
+  const int mapperDefault = CheckMapperTakesTheTable();
 
   // The panel's enumeration against the table.
   const std::string xml = ReadFile(xmlPath);
@@ -260,14 +268,10 @@ void CheckTable(const char* xmlPath)
       xmlPath, psi::NumberOfIntegrationMethods());
   }
 }
-} // namespace
 
-int main(int argc, char* argv[])
+// Special functions against SciPy's dawsn / erfcx (values printed by scipy.special, 17 digits).
+void CheckSpecialFunctions()
 {
-  CheckTable(argc > 1 ? argv[1] : PSI_REPRESENTATION_XML);
-  const psi::PsiTable& table = psi::GetDefaultPsiTable();
-
-  // Special functions against SciPy's dawsn / erfcx (values printed by scipy.special, 17 digits).
   const double dawson[][2] = { { 0.05, 0.049916749940509222 }, { 0.19, 0.18549268702269875 },
     { 0.2, 0.19475103336802793 }, { 0.5, 0.42443638350202229 }, { 1.0, 0.5380795069127684 },
     { 2.0, 0.301340388923792 }, { 3.7, 0.14075117411541541 }, { 10.0, 0.050253847187598538 },
@@ -286,9 +290,12 @@ int main(int argc, char* argv[])
     const double rel = std::abs(psi::Erfcx(v[0]) - v[1]) / v[1];
     PSI_CHECK(rel < 1e-12, "erfcx(%g) relative error %g", v[0], rel);
   }
+}
 
-  // Closed-form Psi (Williams-Max-Stein, stable branches) against quadrature over 15 decades of
-  // tau D and every ratio, including tau_b = tau_f exactly and within 1e-12.
+// Closed-form Psi (Williams-Max-Stein, stable branches) against quadrature over 15 decades of
+// tau D and every ratio, including tau_b = tau_f exactly and within 1e-12.
+void CheckClosedFormPsi()
+{
   double worstClosed = 0;
   for (double a = 1e-9; a <= 1e6; a *= 4.3)
   {
@@ -305,9 +312,12 @@ int main(int argc, char* argv[])
   // The erfc fit behind erfcx has 1.2e-7 relative error; Rybicki's Dawson ~2e-7.
   PSI_CHECK(worstClosed < 1e-10, "closed-form Psi vs quadrature: %g", worstClosed);
   std::printf("closed-form Psi (WMS) within %.2g of quadrature for tau D in [1e-9, 1e6]\n", worstClosed);
+}
 
-  // The linear-opacity reference against brute force: 10^6 homogeneous slabs, each composited
-  // exactly (slab opacity from the local alpha), front to back.
+// The linear-opacity reference against brute force: 10^6 homogeneous slabs, each composited
+// exactly (slab opacity from the local alpha), front to back.
+void CheckLinearOpacityReference()
+{
   for (const auto& c : { std::array<double, 3>{ { 0.2, 0.7, 1.0 } }, std::array<double, 3>{ { 0.9, 0.1, 3.0 } },
          std::array<double, 3>{ { 1.0, 0.3, 1.0 } }, std::array<double, 3>{ { 0.3, 1.0, 0.5 } } })
   {
@@ -332,8 +342,12 @@ int main(int argc, char* argv[])
       "linear-opacity reference (%g, %g, D=%g): %g/%g vs brute force %g/%g", c[0], c[1], c[2], r[0],
       r[3], color, 1 - trans);
   }
+}
 
-  // Moreland's sweeps: error of each method against its own model's reference.
+// Moreland's sweeps: error of each method against its own model's reference, within the bound
+// of its table row; returns those bounds.
+std::vector<double> CheckSweeps(const psi::PsiTable& table)
+{
   std::printf("\n%-34s %10s %10s %10s %10s   (max error over the alpha plane)\n", "method",
     "D=0.001", "D=0.1", "D=1", "D=100");
   // each method's bound is its table row's SweepErrorBound
@@ -368,8 +382,12 @@ int main(int argc, char* argv[])
     "improved linear-opacity approximation should beat the initial one at D = 1");
   PSI_CHECK(atD1(Method::PartialPreIntegration) < 0.01 * atD1(Method::Average),
     "partial pre-integration should be two orders better than averaging at D = 1");
+  return bounds;
+}
 
-  // Hard cases: every method gives finite output within its bound of the reference.
+// Hard cases: every method gives finite output within its bound of the reference.
+void CheckHardCases(const psi::PsiTable& table, const std::vector<double>& bounds)
+{
   const auto hard = psitest::HardCases(false);
   for (const psitest::HardCase& h : hard)
   {
@@ -392,6 +410,17 @@ int main(int argc, char* argv[])
     const psi::Rgba c = psi::Integrate(Method::LinearExact, s, &table);
     PSI_CHECK(!Finite(c), "NaN attenuation must propagate to the caller (the mapper drops it)");
   }
-  std::printf("%s\n", psitest::Failures() ? "TestIntegrationMethods FAILED" : "TestIntegrationMethods passed");
-  return psitest::Failures() ? 1 : 0;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  CheckTable(argc > 1 ? argv[1] : PSI_REPRESENTATION_XML);
+  const psi::PsiTable& table = psi::GetDefaultPsiTable();
+  CheckSpecialFunctions();
+  CheckClosedFormPsi();
+  CheckLinearOpacityReference();
+  const std::vector<double> bounds = CheckSweeps(table);
+  CheckHardCases(table, bounds);
+  return psitest::Report("TestIntegrationMethods");
 }

@@ -396,6 +396,5 @@ int main()
   TestDisconnected();
   TestDegenerateFaces();
   TestCycles();
-  std::printf("%s\n", psitest::Failures() ? "TestMPVONC FAILED" : "TestMPVONC passed");
-  return psitest::Failures() ? 1 : 0;
+  return psitest::Report("TestMPVONC");
 }

@@ -136,6 +136,5 @@ int main()
   {
     TestCamera(k);
   }
-  std::printf("%s\n", psitest::Failures() ? "TestPixelRays FAILED" : "TestPixelRays passed");
-  return psitest::Failures() ? 1 : 0;
+  return psitest::Report("TestPixelRays");
 }

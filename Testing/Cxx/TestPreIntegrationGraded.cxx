@@ -21,10 +21,13 @@
 #include "PsiReferenceIntegrals.h"
 #include "PsiTable.h"
 #include "PsiTestCheck.h"
-#include "PsiTestScene.h"
+#include "PsiTestImageCompare.h"
+#include "PsiTestTransferFunction.h"
+#include "PsiTestView.h"
 #include "PsiTransferFunctionTable.h"
 #include "vtkPsiVolumeMapper.h"
 
+#include "vtkDataSetTriangleFilter.h"
 #include "vtkDoubleArray.h"
 #include "vtkRectilinearGrid.h"
 #include "vtkVolumeProperty.h"
@@ -184,22 +187,14 @@ void TestGradedSlabImage(const std::string& outDir)
   grid->GetPointData()->GetScalars()->GetRange(r);
   // Linear in RGB, opacity linear: the reference is exact, and partial pre-integration nearly so.
   // Unit distance 0.005: the thinnest layers have optical depth about 1, the thick ones are opaque.
-  vtkNew<vtkColorTransferFunction> color;
-  color->SetColorSpaceToRGB();
-  color->AddRGBPoint(r[0], 0.1, 0.3, 1.0);
-  color->AddRGBPoint(r[1], 1.0, 0.8, 0.1);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(r[0], 0.1);
-  opacity->AddPoint(r[1], 1.0);
-  vtkNew<vtkVolumeProperty> property;
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(0.005);
-  const psi::ReferenceScene ref = psitest::MakeReferenceScene(grid, color, opacity, 0.005);
+  psitest::TransferFunction tf(0.005);
+  psitest::BlueToYellow(tf.Color, r[0], r[1]);
+  psitest::LinearOpacity(tf.Opacity, r[0], r[1], 0.1, 1.0);
+  const psi::ReferenceScene ref = psitest::MakeReferenceScene(grid, tf.Color, tf.Opacity, 0.005);
 
   vtkNew<vtkPsiVolumeMapper> mapper;
   mapper->SetInputData(grid);
-  psitest::VolumeView view(W, H, mapper, property);
+  psitest::VolumeView view(W, H, mapper, tf.Property);
   vtkRenderWindow* win = view.Window;
   vtkRenderer* ren = view.Renderer;
   vtkVolume* vol = view.Volume;
@@ -228,7 +223,5 @@ int main(int argc, char* argv[])
   TestLengthAxis();
   TestTableAccuracy();
   TestGradedSlabImage(argc > 1 ? argv[1] : "");
-  std::printf("%s\n",
-    psitest::Failures() ? "TestPreIntegrationGraded FAILED" : "TestPreIntegrationGraded passed");
-  return psitest::Failures() ? 1 : 0;
+  return psitest::Report("TestPreIntegrationGraded");
 }

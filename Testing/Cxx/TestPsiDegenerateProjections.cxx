@@ -17,7 +17,10 @@
 #include "PsiProjectionClasses.h"
 #include "PsiReferenceRaycaster.h"
 #include "PsiTestCheck.h"
-#include "PsiTestScene.h"
+#include "PsiTestMeshes.h"
+#include "PsiTestTransferFunction.h"
+#include "PsiTestImageCompare.h"
+#include "PsiTestView.h"
 #include "vtkPsiVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -252,23 +255,17 @@ int main(int argc, char* argv[])
   psitest::VolumeView view(W, H, nullptr, nullptr); // the volume is added below
   vtkRenderWindow* win = view.Window;
   vtkRenderer* ren = view.Renderer;
-  vtkNew<vtkColorTransferFunction> color;
-  color->SetColorSpaceToRGB();
-  color->AddRGBPoint(0.0, 0.1, 0.3, 1.0);
-  color->AddRGBPoint(1.0, 1.0, 0.8, 0.1);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(0.0, 0.2);
-  opacity->AddPoint(1.0, 1.0);
   const double unit = 0.75;
-  vtkNew<vtkVolumeProperty> prop;
-  prop->SetColor(color);
-  prop->SetScalarOpacity(opacity);
-  prop->SetScalarOpacityUnitDistance(unit);
+  psitest::TransferFunction tf(unit);
+  psitest::BlueToYellow(tf.Color, 0.0, 1.0);
+  psitest::LinearOpacity(tf.Opacity, 0.0, 1.0, 0.2, 1.0);
+  vtkColorTransferFunction* color = tf.Color;
+  vtkPiecewiseFunction* opacity = tf.Opacity;
   vtkNew<vtkPsiVolumeMapper> mapper;
   psitest::ApplyRequested(mapper.GetPointer());
   vtkNew<vtkVolume> vol;
   vol->SetMapper(mapper);
-  vol->SetProperty(prop);
+  vol->SetProperty(tf.Property);
   ren->AddVolume(vol);
   vtkCamera* cam = ren->GetActiveCamera();
   auto look = [&](double eyeX, double eyeY, double eyeZ, bool parallel) {
@@ -345,11 +342,6 @@ int main(int argc, char* argv[])
     }
   }
 
-  PSI_CHECK(psitest::RequestedProjector() < 0 ||
-      mapper->GetLastUsedProjector() == psitest::RequestedProjector(),
-    "the last frame used projector %d, not the one asked for (--projector)",
-    mapper->GetLastUsedProjector());
-  std::printf("%s\n",
-    psitest::Failures() ? "TestPsiDegenerateProjections FAILED" : "TestPsiDegenerateProjections passed");
-  return psitest::Failures() ? 1 : 0;
+  psitest::CheckRequestedProjector(mapper->GetLastUsedProjector());
+  return psitest::Report("TestPsiDegenerateProjections");
 }

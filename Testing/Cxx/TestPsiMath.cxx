@@ -248,6 +248,5 @@ int main()
   TestPsi();
   TestSegmentIntegrals();
   TestPsiTable();
-  std::printf("%s\n", psitest::Failures() ? "TestPsiMath FAILED" : "TestPsiMath passed");
-  return psitest::Failures() ? 1 : 0;
+  return psitest::Report("TestPsiMath");
 }

@@ -8,7 +8,10 @@
 // cannot be intermixed: the mapper then warns once.
 #include "PsiReferenceRaycaster.h"
 #include "PsiTestCheck.h"
-#include "PsiTestScene.h"
+#include "PsiTestImageCompare.h"
+#include "PsiTestMeshes.h"
+#include "PsiTestTransferFunction.h"
+#include "PsiTestView.h"
 #include "vtkPsiVolumeMapper.h"
 
 #include "vtkActor.h"
@@ -83,57 +86,23 @@ vtkSmartPointer<vtkActor> MakeSphere(const Sphere& s, psi::ReferenceScene& ref)
   actor->GetProperty()->SetOpacity(surface.Opacity);
   return actor;
 }
-} // namespace
-
-int main(int argc, char* argv[])
+// The cases' spheres along the view direction: in front of the volume's bounding sphere, behind
+// it, through it, and two nested ones through it.
+struct Case
 {
-  const std::string outDir = psitest::ParseArguments(argc, argv);
-  vtkNew<vtkUnstructuredGrid> grid;
-  psitest::MakeWaveletTets(grid, 6, 1.0);
-  double r[2];
-  grid->GetPointData()->GetScalars()->GetRange(r);
-  vtkNew<vtkColorTransferFunction> color;
-  color->SetColorSpaceToRGB();
-  color->AddRGBPoint(r[0], 0.1, 0.2, 0.9);
-  color->AddRGBPoint(0.5 * (r[0] + r[1]), 0.95, 0.95, 0.9);
-  color->AddRGBPoint(r[1], 0.9, 0.15, 0.1);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(r[0], 0.05);
-  opacity->AddPoint(r[1], 0.8);
-  vtkNew<vtkVolumeProperty> property;
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(2.0);
+  const char* Name;
+  std::vector<Sphere> Spheres;
+};
 
-  vtkNew<vtkPsiVolumeMapper> mapper;
-  psitest::ApplyRequested(mapper.GetPointer());
-  mapper->SetInputData(grid);
-  psitest::VolumeView view(W, H, mapper, property);
-  vtkRenderer* ren = view.Renderer;
-  view.Window->SetAlphaBitPlanes(1);
-  ren->SetUseDepthPeeling(1);
-  ren->SetUseDepthPeelingForVolumes(true);
-  ren->SetMaximumNumberOfPeels(16);
-  ren->SetOcclusionRatio(0.0);
-  vtkCamera* cam = ren->GetActiveCamera();
-  cam->SetFocalPoint(0, 0, 0);
-  cam->SetPosition(21, 14, 29);
-  cam->SetViewUp(0, 1, 0);
-  cam->SetViewAngle(30);
-
-  // Along the view direction: in front of the volume's bounding sphere, behind it, through it.
+std::vector<Case> Cases()
+{
   const double toEye[3] = { 21 / 38.5, 14 / 38.5, 29 / 38.5 };
   auto along = [&](double t, double radius, const double rgb[3]) {
     return Sphere{ { t * toEye[0], t * toEye[1], t * toEye[2] }, radius,
       { rgb[0], rgb[1], rgb[2] }, 0.5 };
   };
   const double orange[3] = { 1.0, 0.5, 0.25 };
-  struct Case
-  {
-    const char* Name;
-    std::vector<Sphere> Spheres;
-  };
-  const Case cases[] = {
+  return {
     { "sphere_in_front", { along(16, 3, orange) } },
     { "sphere_behind", { along(-15, 4, orange) } },
     { "sphere_through", { Sphere{ { 2, 1, 3 }, 5, { 1.0, 0.5, 0.25 }, 0.5 } } },
@@ -141,6 +110,63 @@ int main(int argc, char* argv[])
       { Sphere{ { -1, 0, 1 }, 3, { 0.2, 0.9, 0.3 }, 0.25 },
         Sphere{ { -1, 0, 1 }, 6.5, { 1.0, 0.5, 0.25 }, 0.25 } } },
   };
+}
+
+// The Wavelet on [-6, 6]^3 in a view that peels translucent geometry, volumes included.
+struct Scene
+{
+  std::string OutDir;
+  vtkNew<vtkUnstructuredGrid> Grid;
+  psitest::TransferFunction TF{ 2.0 };
+  vtkNew<vtkPsiVolumeMapper> Mapper;
+  psitest::VolumeView View{ W, H, Mapper, TF.Property };
+
+  explicit Scene(const std::string& outDir)
+    : OutDir(outDir)
+  {
+    psitest::ApplyRequested(this->Mapper.GetPointer());
+    psitest::MakeWaveletTets(this->Grid, 6, 1.0);
+    double r[2];
+    this->Grid->GetPointData()->GetScalars()->GetRange(r);
+    psitest::BlueWhiteRed(this->TF.Color, r[0], r[1]);
+    psitest::LinearOpacity(this->TF.Opacity, r[0], r[1], 0.05, 0.8);
+    this->Mapper->SetInputData(this->Grid);
+    vtkRenderer* ren = this->View.Renderer;
+    this->View.Window->SetAlphaBitPlanes(1);
+    ren->SetUseDepthPeeling(1);
+    ren->SetUseDepthPeelingForVolumes(true);
+    ren->SetMaximumNumberOfPeels(16);
+    ren->SetOcclusionRatio(0.0);
+    psitest::LookAtCentre(ren, 21, 14, 29);
+  }
+
+  // Adds the spheres to the renderer and to `ref`.
+  std::vector<vtkSmartPointer<vtkActor>> AddSpheres(
+    const std::vector<Sphere>& spheres, psi::ReferenceScene& ref)
+  {
+    std::vector<vtkSmartPointer<vtkActor>> actors;
+    for (const Sphere& s : spheres)
+    {
+      actors.push_back(MakeSphere(s, ref));
+      this->View.Renderer->AddActor(actors.back());
+    }
+    return actors;
+  }
+
+  void Remove(const std::vector<vtkSmartPointer<vtkActor>>& actors)
+  {
+    for (auto& a : actors)
+    {
+      this->View.Renderer->RemoveActor(a);
+    }
+  }
+};
+
+// Each case in perspective and in parallel projection, against the exact compositing.
+void CheckSpheres(Scene& s, const std::vector<Case>& cases)
+{
+  vtkRenderer* ren = s.View.Renderer;
+  vtkCamera* cam = ren->GetActiveCamera();
   for (const bool parallel : { false, true })
   {
     cam->SetParallelProjection(parallel);
@@ -148,89 +174,87 @@ int main(int argc, char* argv[])
     ren->ResetCameraClippingRange(-20, 20, -20, 20, -20, 20);
     for (const Case& k : cases)
     {
-      psi::ReferenceScene ref = psitest::MakeReferenceScene(grid, color, opacity, 2.0);
-      std::vector<vtkSmartPointer<vtkActor>> actors;
-      for (const Sphere& s : k.Spheres)
-      {
-        actors.push_back(MakeSphere(s, ref));
-        ren->AddActor(actors.back());
-      }
+      psi::ReferenceScene ref = psitest::MakeReferenceScene(s.Grid, s.TF);
+      const std::vector<vtkSmartPointer<vtkActor>> actors = s.AddSpheres(k.Spheres, ref);
       const std::string name = std::string(k.Name) + (parallel ? "_parallel" : "");
       const psitest::Result res =
-        psitest::Compare(name, view.Window, ren, view.Volume, ref, nullptr, outDir);
+        psitest::Compare(name, s.View.Window, ren, s.View.Volume, ref, nullptr, s.OutDir);
       // A pixel whose ray grazes a triangle edge of the sphere may see the layer on one side
       // only: a few outlying channels are allowed, not a wrong order.
       PSI_CHECK(res.Mean < 0.004 && res.Outliers < 0.002 && res.P999 < 0.015,
         "%s: mean error %g, %g%% over 0.05, 99.9th percentile %g", name.c_str(), res.Mean,
         100 * res.Outliers, res.P999);
       PSI_CHECK(res.Covered > W * H / 8, "%s: image nearly empty", name.c_str());
-      for (auto& a : actors)
-      {
-        ren->RemoveActor(a);
-      }
+      s.Remove(actors);
     }
   }
-  // Opaque geometry through the volume and a translucent sphere through both: the intervals end
-  // at the opaque surface (before the peels: behind the layers up to it; in a peel: the front
-  // interval clamped to it).
-  {
-    cam->SetParallelProjection(false);
-    ren->ResetCameraClippingRange(-20, 20, -20, 20, -20, 20);
-    psi::ReferenceScene ref = psitest::MakeReferenceScene(grid, color, opacity, 2.0);
-    vtkSmartPointer<vtkActor> sphere = MakeSphere(cases[2].Spheres[0], ref);
-    vtkSmartPointer<vtkActor> plane = psitest::MakeOpaquePlane(6.0);
-    ren->AddActor(sphere);
-    ren->AddActor(plane);
-    const psitest::Result res = psitest::Compare(
-      "sphere_and_opaque_plane", view.Window, ren, view.Volume, ref, plane, outDir, { sphere });
-    PSI_CHECK(res.Mean < 0.004 && res.Outliers < 0.002 && res.P999 < 0.015,
-      "sphere and opaque plane: mean error %g, %g%% over 0.05, 99.9th percentile %g", res.Mean,
-      100 * res.Outliers, res.P999);
-    ren->RemoveActor(sphere);
-    ren->RemoveActor(plane);
-  }
+}
 
-  // Peeling stopped after one peel: the two inner layers and the volume between them are left to
-  // the pass's final alpha blend, which composites them in draw order (VTK's approximation), so
-  // the image differs from the exact one only inside the inner sphere, by about one layer.
-  {
-    cam->SetParallelProjection(false);
-    ren->ResetCameraClippingRange(-20, 20, -20, 20, -20, 20);
-    ren->SetMaximumNumberOfPeels(1);
-    psi::ReferenceScene ref = psitest::MakeReferenceScene(grid, color, opacity, 2.0);
-    std::vector<vtkSmartPointer<vtkActor>> actors;
-    for (const Sphere& s : cases[3].Spheres)
-    {
-      actors.push_back(MakeSphere(s, ref));
-      ren->AddActor(actors.back());
-    }
-    const psitest::Result res =
-      psitest::Compare("nested_one_peel", view.Window, ren, view.Volume, ref, nullptr, outDir);
-    PSI_CHECK(res.Mean < 0.02 && res.Covered > W * H / 8,
-      "one peel, then the final blend: mean error %g", res.Mean);
-    ren->SetMaximumNumberOfPeels(16);
+// Opaque geometry through the volume and a translucent sphere through both: the intervals end
+// at the opaque surface (before the peels: behind the layers up to it; in a peel: the front
+// interval clamped to it).
+void CheckSphereAndOpaquePlane(Scene& s, const Sphere& sphereThrough)
+{
+  vtkRenderer* ren = s.View.Renderer;
+  ren->GetActiveCamera()->SetParallelProjection(false);
+  ren->ResetCameraClippingRange(-20, 20, -20, 20, -20, 20);
+  psi::ReferenceScene ref = psitest::MakeReferenceScene(s.Grid, s.TF);
+  vtkSmartPointer<vtkActor> sphere = MakeSphere(sphereThrough, ref);
+  vtkSmartPointer<vtkActor> plane = psitest::MakeOpaquePlane(6.0);
+  ren->AddActor(sphere);
+  ren->AddActor(plane);
+  const psitest::Result res = psitest::Compare(
+    "sphere_and_opaque_plane", s.View.Window, ren, s.View.Volume, ref, plane, s.OutDir, { sphere });
+  PSI_CHECK(res.Mean < 0.004 && res.Outliers < 0.002 && res.P999 < 0.015,
+    "sphere and opaque plane: mean error %g, %g%% over 0.05, 99.9th percentile %g", res.Mean,
+    100 * res.Outliers, res.P999);
+  ren->RemoveActor(sphere);
+  ren->RemoveActor(plane);
+}
 
-    // Without depth peeling for volumes VTK draws the volume after all translucent geometry:
-    // the mapper says so, once.
-    int warnings = 0;
-    vtkNew<vtkCallbackCommand> onWarning;
-    onWarning->SetClientData(&warnings);
-    onWarning->SetCallback([](vtkObject*, unsigned long, void* count, void*) {
-      ++*static_cast<int*>(count);
-    });
-    mapper->AddObserver(vtkCommand::WarningEvent, onWarning);
-    ren->SetUseDepthPeelingForVolumes(false);
-    view.Window->Render();
-    view.Window->Render();
-    PSI_CHECK(warnings == 1, "without depth peeling for volumes: %d warnings (1 expected)",
-      warnings);
-    for (auto& a : actors)
-    {
-      ren->RemoveActor(a);
-    }
-    view.Window->Render();
-    PSI_CHECK(warnings == 1, "no translucent geometry: no more warnings (%d)", warnings);
-  }
-  std::printf("%s\n", psitest::Failures() ? "TestPsiTranslucentGeometry FAILED" : "TestPsiTranslucentGeometry passed");
-  return psitest::Failures() ? 1 : 0;
+// Peeling stopped after one peel: the two inner layers and the volume between them are left to
+// the pass's final alpha blend, which composites them in draw order (VTK's approximation), so
+// the image differs from the exact one only inside the inner sphere, by about one layer. Then,
+// without depth peeling for volumes, VTK draws the volume after all translucent geometry: the
+// mapper says so, once.
+void CheckOnePeelAndNoVolumePeeling(Scene& s, const std::vector<Sphere>& nested)
+{
+  vtkRenderer* ren = s.View.Renderer;
+  ren->GetActiveCamera()->SetParallelProjection(false);
+  ren->ResetCameraClippingRange(-20, 20, -20, 20, -20, 20);
+  ren->SetMaximumNumberOfPeels(1);
+  psi::ReferenceScene ref = psitest::MakeReferenceScene(s.Grid, s.TF);
+  const std::vector<vtkSmartPointer<vtkActor>> actors = s.AddSpheres(nested, ref);
+  const psitest::Result res =
+    psitest::Compare("nested_one_peel", s.View.Window, ren, s.View.Volume, ref, nullptr, s.OutDir);
+  PSI_CHECK(res.Mean < 0.02 && res.Covered > W * H / 8,
+    "one peel, then the final blend: mean error %g", res.Mean);
+  ren->SetMaximumNumberOfPeels(16);
+
+  int warnings = 0;
+  vtkNew<vtkCallbackCommand> onWarning;
+  onWarning->SetClientData(&warnings);
+  onWarning->SetCallback([](vtkObject*, unsigned long, void* count, void*) {
+    ++*static_cast<int*>(count);
+  });
+  s.Mapper->AddObserver(vtkCommand::WarningEvent, onWarning);
+  ren->SetUseDepthPeelingForVolumes(false);
+  s.View.Window->Render();
+  s.View.Window->Render();
+  PSI_CHECK(warnings == 1, "without depth peeling for volumes: %d warnings (1 expected)",
+    warnings);
+  s.Remove(actors);
+  s.View.Window->Render();
+  PSI_CHECK(warnings == 1, "no translucent geometry: no more warnings (%d)", warnings);
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  Scene s(psitest::ParseArguments(argc, argv));
+  const std::vector<Case> cases = Cases();
+  CheckSpheres(s, cases);
+  CheckSphereAndOpaquePlane(s, cases[2].Spheres[0]);
+  CheckOnePeelAndNoVolumePeeling(s, cases[3].Spheres);
+  return psitest::Report("TestPsiTranslucentGeometry");
 }

@@ -13,8 +13,11 @@
 //    MPVONC's equal depths by ascending id (the rule that makes its order reproducible).
 // Needs an X server (run under xvfb-run).
 #include "PsiTestCheck.h"
-#include "PsiTestScene.h"
+#include "PsiTestMeshes.h"
+#include "PsiTestTransferFunction.h"
+#include "PsiTestView.h"
 #include "PsiTetSort.h"
+#include "PsiVec3.h"
 #include "vtkPsiVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -43,20 +46,10 @@
 
 namespace
 {
-using Vec3 = std::array<double, 3>;
-
-Vec3 Sub(const Vec3& a, const Vec3& b)
-{
-  return { { a[0] - b[0], a[1] - b[1], a[2] - b[2] } };
-}
-double Dot(const Vec3& a, const Vec3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec3 Cross(const Vec3& a, const Vec3& b)
-{
-  return { { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] } };
-}
+using psi::Cross;
+using psi::Dot;
+using psi::Sub;
+using psi::Vec3;
 
 // A structured grid of n^3 cells (spacing 1, corner at the origin), split into Kuhn tetrahedra
 // (6 per cube) or by vtkDataSetTriangleFilter.
@@ -281,26 +274,14 @@ void CheckMPVONCTies()
 
 int main()
 {
-  vtkNew<vtkRenderWindow> win;
-  win->SetSize(64, 64);
-  win->SetMultiSamples(0);
-  vtkNew<vtkRenderer> ren;
-  win->AddRenderer(ren);
-  vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(-2, 0.1, 0.3, 1.0);
-  color->AddRGBPoint(3, 1.0, 0.8, 0.1);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(-2, 0.2);
-  opacity->AddPoint(3, 1.0);
-  vtkNew<vtkVolumeProperty> prop;
-  prop->SetColor(color);
-  prop->SetScalarOpacity(opacity);
+  psitest::TransferFunction tf;
+  psitest::BlueToYellow(tf.Color, -2, 3);
+  psitest::LinearOpacity(tf.Opacity, -2, 3, 0.2, 1.0);
   vtkNew<vtkPsiVolumeMapper> mapper;
   mapper->SetRecordDrawOrder(true); // what each frame streams to the GPU
-  vtkNew<vtkVolume> vol;
-  vol->SetMapper(mapper);
-  vol->SetProperty(prop);
-  ren->AddVolume(vol);
+  psitest::VolumeView view(64, 64, mapper, tf.Property);
+  vtkRenderWindow* win = view.Window;
+  vtkRenderer* ren = view.Renderer;
   vtkCamera* cam = ren->GetActiveCamera();
 
   struct View
@@ -353,6 +334,5 @@ int main()
     CheckCentroidDefinition(grid, skew, true);
   }
   CheckMPVONCTies();
-  std::printf("%s\n", psitest::Failures() ? "TestPsiVisibilityOrder FAILED" : "TestPsiVisibilityOrder passed");
-  return psitest::Failures() ? 1 : 0;
+  return psitest::Report("TestPsiVisibilityOrder");
 }

@@ -7,30 +7,26 @@
 #include "PsiIntegrationMethods.h"
 #include "PsiReferenceRaycaster.h"
 #include "PsiTestCheck.h"
-#include "PsiTestScene.h"
+#include "PsiTestImageCompare.h"
+#include "PsiTestMeshes.h"
+#include "PsiTestTransferFunction.h"
+#include "PsiTestView.h"
 #include "PsiVisibilityOrder.h"
 #include "vtkPsiVolumeMapper.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
-#include "vtkDataSetTriangleFilter.h"
 #include "vtkFloatArray.h"
-#include "vtkImageData.h"
-#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
-#include "vtkRTAnalyticSource.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkTransform.h"
-#include "vtkTransformFilter.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
@@ -45,15 +41,11 @@ namespace
 {
 constexpr int W = 96, H = 96;
 
-struct Scene
+// A mesh and its transfer function.
+struct Scene : psitest::TransferFunction
 {
   vtkNew<vtkUnstructuredGrid> Grid;
-  vtkNew<vtkVolumeProperty> Property;
-  vtkNew<vtkColorTransferFunction> Color;
-  vtkNew<vtkPiecewiseFunction> Opacity;
 };
-
-void MakeKuhnWavelet(vtkUnstructuredGrid* grid, int half, double cell);
 
 // The Wavelet source on [-half, half]^3, cells scaled to `cell` units, split into tetrahedra
 // (by vtkDataSetTriangleFilter, or into Kuhn tetrahedra).
@@ -62,7 +54,7 @@ void MakeScene(Scene& s, int half, double cell, double unitDistance, bool linear
 {
   if (kuhn)
   {
-    MakeKuhnWavelet(s.Grid, half, cell);
+    psitest::MakeKuhnWavelet(s.Grid, half, cell);
   }
   else
   {
@@ -70,90 +62,72 @@ void MakeScene(Scene& s, int half, double cell, double unitDistance, bool linear
   }
   double r[2];
   s.Grid->GetPointData()->GetScalars()->GetRange(r);
-  // Linear-in-RGB color map and a ramp with a peak: control points are the reference's
-  // breakpoints, so the reference is exact for this transfer function.
-  s.Color->SetColorSpaceToRGB();
+  s.Property->SetScalarOpacityUnitDistance(unitDistance);
   if (linearTF)
   {
     // One linear piece: the GPU's per-cell linear transfer function is then exact, and what is
     // left is the ray integration itself.
-    s.Color->AddRGBPoint(r[0], 0.1, 0.3, 1.0);
-    s.Color->AddRGBPoint(r[1], 1.0, 0.8, 0.1);
-    s.Opacity->AddPoint(r[0], 0.02);
-    s.Opacity->AddPoint(r[1], 1.0);
-    s.Property->SetColor(s.Color);
-    s.Property->SetScalarOpacity(s.Opacity);
-    s.Property->SetScalarOpacityUnitDistance(unitDistance);
+    psitest::BlueToYellow(s.Color, r[0], r[1]);
+    psitest::LinearOpacity(s.Opacity, r[0], r[1], 0.02, 1.0);
     return;
   }
-  s.Color->AddRGBPoint(r[0], 0.1, 0.2, 0.9);
-  s.Color->AddRGBPoint(0.5 * (r[0] + r[1]), 0.95, 0.95, 0.9);
-  s.Color->AddRGBPoint(r[1], 0.9, 0.15, 0.1);
+  // Linear-in-RGB color map and a ramp with a peak: control points are the reference's
+  // breakpoints, so the reference is exact for this transfer function.
+  psitest::BlueWhiteRed(s.Color, r[0], r[1]);
   s.Opacity->AddPoint(r[0], 0.0);
   s.Opacity->AddPoint(r[0] + 0.6 * (r[1] - r[0]), 0.35);
   s.Opacity->AddPoint(r[1], 0.9);
-  s.Property->SetColor(s.Color);
-  s.Property->SetScalarOpacity(s.Opacity);
-  s.Property->SetScalarOpacityUnitDistance(unitDistance);
 }
 
 psi::ReferenceScene MakeReference(Scene& s)
 {
-  return psitest::MakeReferenceScene(
-    s.Grid, s.Color, s.Opacity, s.Property->GetScalarOpacityUnitDistance());
+  return psitest::MakeReferenceScene(s.Grid, s);
 }
 
-using psitest::Compare;
-using psitest::Result;
-
-// The Wavelet on [-half, half]^3 with cells of `cell` units, split into Kuhn tetrahedra
-// (psitest::AddKuhnTets).
-void MakeKuhnWavelet(vtkUnstructuredGrid* grid, int half, double cell)
+// What the checks draw: the Wavelet on [-6, 6]^3 and its reference, the mapper and its view.
+struct Fixture
 {
-  vtkNew<vtkRTAnalyticSource> wavelet;
-  wavelet->SetWholeExtent(-half, half, -half, half, -half, half);
-  wavelet->Update();
-  vtkImageData* image = wavelet->GetOutput();
-  const int n = 2 * half + 1;
-  vtkNew<vtkPoints> points;
-  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
+  std::string OutDir;
+  Scene S;
+  psi::ReferenceScene Ref;
+  vtkNew<vtkPsiVolumeMapper> Mapper;
+  psitest::VolumeView View{ W, H, Mapper, S.Property };
+
+  explicit Fixture(const std::string& outDir)
+    : OutDir(outDir)
   {
-    double p[3];
-    image->GetPoint(i, p);
-    points->InsertNextPoint(cell * p[0], cell * p[1], cell * p[2]);
+    psitest::ApplyRequested(this->Mapper.GetPointer());
+    MakeScene(this->S, 6, 1.0, 1.5);
+    this->Ref = MakeReference(this->S);
+    this->Mapper->SetInputData(this->S.Grid);
   }
-  grid->SetPoints(points);
-  grid->GetPointData()->SetScalars(image->GetPointData()->GetScalars());
-  grid->Allocate(6 * (n - 1) * (n - 1) * (n - 1));
-  psitest::AddKuhnTets(grid, n);
-}
-} // namespace
 
-int main(int argc, char* argv[])
+  // The image against the reference `ref` (psitest::Compare), with `opaque` geometry.
+  psitest::Result Compare(
+    const std::string& name, const psi::ReferenceScene& ref, vtkActor* opaque = nullptr)
+  {
+    return psitest::Compare(
+      name, this->View.Window, this->View.Renderer, this->View.Volume, ref, opaque, this->OutDir);
+  }
+
+  // Draws `s` instead of the Wavelet on [-6, 6]^3 (nullptr: that one again).
+  void Draw(Scene* s)
+  {
+    this->Mapper->SetInputData(s ? s->Grid : this->S.Grid);
+    this->View.Volume->SetProperty(s ? s->Property : this->S.Property);
+  }
+};
+
+void Outside(Fixture& f)
 {
-  const std::string outDir = psitest::ParseArguments(argc, argv);
-  Scene s;
-  MakeScene(s, 6, 1.0, 1.5);
-  const psi::ReferenceScene refScene = MakeReference(s);
+  psitest::LookAtCentre(f.View.Renderer, 21, 14, 29);
+}
 
-  vtkNew<vtkPsiVolumeMapper> mapper;
-  psitest::ApplyRequested(mapper.GetPointer());
-  mapper->SetInputData(s.Grid);
-  psitest::VolumeView view(W, H, mapper, s.Property);
-  vtkRenderWindow* win = view.Window;
-  vtkRenderer* ren = view.Renderer;
-  vtkVolume* vol = view.Volume;
-
-  vtkCamera* cam = ren->GetActiveCamera();
-  auto outside = [&] {
-    cam->SetFocalPoint(0, 0, 0);
-    cam->SetPosition(21, 14, 29);
-    cam->SetViewUp(0, 1, 0);
-    cam->SetViewAngle(30);
-    cam->SetParallelProjection(0);
-    ren->ResetCameraClippingRange();
-  };
-
+// Each method in perspective, from outside, with an empty actor in the scene.
+void CheckPerspectiveMethods(Fixture& f)
+{
+  vtkPsiVolumeMapper* mapper = f.Mapper;
+  vtkRenderer* ren = f.View.Renderer;
   // Per-scenario bounds on the mean absolute error (8-bit channels in [0, 1]); measured values
   // are printed, and the bounds sit well below what a wrong thickness, order or scalar gives.
   struct Case
@@ -162,7 +136,7 @@ int main(int argc, char* argv[])
     int Method;
     double MeanBound, MaxBound;
   };
-  outside();
+  Outside(f);
   // An actor with nothing to draw (ParaView keeps one for each representation not shown) has
   // uninitialized bounds: it is not opaque geometry and must not turn on depth sampling.
   vtkNew<vtkPolyDataMapper> emptyMapper;
@@ -179,283 +153,310 @@ int main(int argc, char* argv[])
         0.015 } })
   {
     mapper->SetIntegrationMethod(k.Method);
-    const Result r = Compare(k.Name, win, ren, vol, refScene, nullptr, outDir);
+    const psitest::Result r = f.Compare(k.Name, f.Ref);
     PSI_CHECK(r.Mean < k.MeanBound && r.Max < k.MaxBound, "%s: mean error %g, max %g", k.Name,
       r.Mean, r.Max);
     PSI_CHECK(r.Covered > W * H / 8, "%s: image nearly empty (%d pixels)", k.Name, r.Covered);
   }
-  PSI_CHECK(mapper->GetNumberOfTetrahedra() == s.Grid->GetNumberOfCells(), "tetrahedra drawn %lld",
+  PSI_CHECK(mapper->GetNumberOfTetrahedra() == f.S.Grid->GetNumberOfCells(), "tetrahedra drawn %lld",
     static_cast<long long>(mapper->GetNumberOfTetrahedra()));
   PSI_CHECK(!mapper->GetLastUsedNearPlaneClipping(), "outside view must not compile the near path");
   PSI_CHECK(!mapper->GetLastUsedOpaqueClipping(), "no opaque geometry: no depth sampling");
   ren->RemoveActor(emptyActor);
   mapper->SetIntegrationMethod(static_cast<int>(psi::Method::PartialPreIntegration));
+}
 
-  // Visibility order on Kuhn cells seen head-on (the view that showed lines in the GUI test):
-  // the centroid order composites some neighbours in the wrong order, MPVONC is exact.
-  {
-    Scene kuhn;
-    MakeScene(kuhn, 2, 4.0, 0.3, true, true);
-    const psi::ReferenceScene kuhnRef = MakeReference(kuhn);
-    mapper->SetInputData(kuhn.Grid);
-    vol->SetProperty(kuhn.Property);
-    cam->SetFocalPoint(0, 0, 0);
-    cam->SetPosition(0.3, 0.2, 45);
-    ren->ResetCameraClippingRange();
-    mapper->SetSortMethod(psi::Sorts::Centroid);
-    const Result centroid = Compare("kuhn_centroid", win, ren, vol, kuhnRef, nullptr, outDir);
-    mapper->SetSortMethod(psi::Sorts::MPVONC);
-    const Result mpvonc = Compare("kuhn_mpvonc", win, ren, vol, kuhnRef, nullptr, outDir);
-    PSI_CHECK(mpvonc.Max < 0.03 && mpvonc.Mean < 0.003, "Kuhn cells, MPVONC: mean %g max %g",
-      mpvonc.Mean, mpvonc.Max);
-    PSI_CHECK(centroid.Max > 2 * mpvonc.Max, "Kuhn cells: centroid order max %g vs MPVONC %g",
-      centroid.Max, mpvonc.Max);
-    mapper->SetInputData(s.Grid);
-    vol->SetProperty(s.Property);
-    outside();
-  }
+// Visibility order on Kuhn cells seen head-on (the view that showed lines in the GUI test): the
+// centroid order composites some neighbours in the wrong order, MPVONC is exact.
+void CheckKuhnCellsOrder(Fixture& f)
+{
+  vtkPsiVolumeMapper* mapper = f.Mapper;
+  vtkCamera* cam = f.View.Renderer->GetActiveCamera();
+  Scene kuhn;
+  MakeScene(kuhn, 2, 4.0, 0.3, true, true);
+  const psi::ReferenceScene kuhnRef = MakeReference(kuhn);
+  f.Draw(&kuhn);
+  cam->SetFocalPoint(0, 0, 0);
+  cam->SetPosition(0.3, 0.2, 45);
+  f.View.Renderer->ResetCameraClippingRange();
+  mapper->SetSortMethod(psi::Sorts::Centroid);
+  const psitest::Result centroid = f.Compare("kuhn_centroid", kuhnRef);
+  mapper->SetSortMethod(psi::Sorts::MPVONC);
+  const psitest::Result mpvonc = f.Compare("kuhn_mpvonc", kuhnRef);
+  PSI_CHECK(mpvonc.Max < 0.03 && mpvonc.Mean < 0.003, "Kuhn cells, MPVONC: mean %g max %g",
+    mpvonc.Mean, mpvonc.Max);
+  PSI_CHECK(centroid.Max > 2 * mpvonc.Max, "Kuhn cells: centroid order max %g vs MPVONC %g",
+    centroid.Max, mpvonc.Max);
+  f.Draw(nullptr);
+  Outside(f);
+}
 
-  // A new time step of the same mesh: a new dataset sharing the points and cells (as ParaView's
-  // representations hand it over), with new scalars. Only the scalars are uploaded again: the
-  // mesh is not gathered again (nor sorted), and the image is the new scalars' reference.
+// A new time step of the same mesh: a new dataset sharing the points and cells (as ParaView's
+// representations hand it over), with new scalars. Only the scalars are uploaded again: the mesh
+// is not gathered again (nor sorted), and the image is the new scalars' reference.
+void CheckTimeStep(Fixture& f)
+{
+  vtkPsiVolumeMapper* mapper = f.Mapper;
+  f.View.Window->Render();
+  const int version = mapper->GetMeshVersion();
+  vtkNew<vtkUnstructuredGrid> step;
+  step->ShallowCopy(f.S.Grid);
+  vtkNew<vtkFloatArray> scaled;
+  vtkDataArray* rt = f.S.Grid->GetPointData()->GetScalars();
+  scaled->SetName(rt->GetName());
+  scaled->SetNumberOfTuples(rt->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < rt->GetNumberOfTuples(); ++i)
   {
-    win->Render();
-    const int version = mapper->GetMeshVersion();
-    vtkNew<vtkUnstructuredGrid> step;
-    step->ShallowCopy(s.Grid);
-    vtkNew<vtkFloatArray> scaled;
-    vtkDataArray* rt = s.Grid->GetPointData()->GetScalars();
-    scaled->SetName(rt->GetName());
-    scaled->SetNumberOfTuples(rt->GetNumberOfTuples());
-    for (vtkIdType i = 0; i < rt->GetNumberOfTuples(); ++i)
-    {
-      scaled->SetValue(i, static_cast<float>(1.1 * rt->GetComponent(i, 0)));
-    }
-    step->GetPointData()->SetScalars(scaled);
-    mapper->SetInputData(step);
-    const Result r = Compare("time_step", win, ren, vol,
-      psitest::MakeReferenceScene(step, s.Color, s.Opacity, 1.5), nullptr, outDir);
-    PSI_CHECK(mapper->GetMeshVersion() == version, "a time step gathered the mesh again");
-    PSI_CHECK(r.Mean < 0.006 && r.Max < 0.05, "time step: mean error %g, max %g", r.Mean, r.Max);
-    mapper->SetInputData(s.Grid);
+    scaled->SetValue(i, static_cast<float>(1.1 * rt->GetComponent(i, 0)));
   }
+  step->GetPointData()->SetScalars(scaled);
+  mapper->SetInputData(step);
+  const psitest::Result r =
+    f.Compare("time_step", psitest::MakeReferenceScene(step, f.S.Color, f.S.Opacity, 1.5));
+  PSI_CHECK(mapper->GetMeshVersion() == version, "a time step gathered the mesh again");
+  PSI_CHECK(r.Mean < 0.006 && r.Max < 0.05, "time step: mean error %g, max %g", r.Mean, r.Max);
+  mapper->SetInputData(f.S.Grid);
+}
 
-  // A mesh of five draw chunks or more (PsiVisibilityOrder::Draw streams chunks of 4,096
-  // tetrahedra where cells are small for the target, else 32,768, at most 2 in flight): every
-  // chunk is drawn, in order, after the waits, with either chunk size.
+// A mesh of five draw chunks or more (PsiVisibilityOrder::Draw streams chunks of 4,096
+// tetrahedra where cells are small for the target, else 32,768, at most 2 in flight): every
+// chunk is drawn, in order, after the waits, with either chunk size.
+void CheckFiveChunks(Fixture& f)
+{
+  Scene fine;
+  MakeScene(fine, 16, 0.375, 1.5);
+  const psi::ReferenceScene fineRef = MakeReference(fine);
+  f.Draw(&fine);
+  const size_t n = static_cast<size_t>(fine.Grid->GetNumberOfCells());
+  for (const int side : { W, 232 })
   {
-    Scene fine;
-    MakeScene(fine, 16, 0.375, 1.5);
-    const psi::ReferenceScene fineRef = MakeReference(fine);
-    mapper->SetInputData(fine.Grid);
-    vol->SetProperty(fine.Property);
-    const size_t n = static_cast<size_t>(fine.Grid->GetNumberOfCells());
-    for (const int side : { W, 232 })
-    {
-      win->SetSize(side, side);
-      const size_t chunk = PsiVisibilityOrder::ChunkTetsFor(n, size_t(side) * side);
-      const Result r = Compare("five_chunks_" + std::to_string(chunk), win, ren, vol, fineRef,
-        nullptr, outDir);
-      PSI_CHECK(n > 4 * chunk && chunk == (side == W ? 4096u : 32768u),
-        "five chunks: %zu tetrahedra in chunks of %zu", n, chunk);
-      // (at 232^2 Shirley-Tuchman's fan, PSI_DECOMPOSITION=fan, leaves one stray pixel at 0.15)
-      PSI_CHECK(r.Mean < 0.006 && (side == W ? r.Max : r.P999) < 0.05 && r.Outliers < 1e-4,
-        "five chunks of %zu: mean error %g, max %g, 99.9%% %g", chunk, r.Mean, r.Max, r.P999);
-    }
-    win->SetSize(W, H);
-    mapper->SetInputData(s.Grid);
-    vol->SetProperty(s.Property);
+    f.View.Window->SetSize(side, side);
+    const size_t chunk = PsiVisibilityOrder::ChunkTetsFor(n, size_t(side) * side);
+    const psitest::Result r = f.Compare("five_chunks_" + std::to_string(chunk), fineRef);
+    PSI_CHECK(n > 4 * chunk && chunk == (side == W ? 4096u : 32768u),
+      "five chunks: %zu tetrahedra in chunks of %zu", n, chunk);
+    // (at 232^2 Shirley-Tuchman's fan, --decomposition fan, leaves one stray pixel at 0.15)
+    PSI_CHECK(r.Mean < 0.006 && (side == W ? r.Max : r.P999) < 0.05 && r.Outliers < 1e-4,
+      "five chunks of %zu: mean error %g, max %g, 99.9%% %g", chunk, r.Mean, r.Max, r.P999);
   }
+  f.View.Window->SetSize(W, H);
+  f.Draw(nullptr);
+}
 
-  // Parallel projection.
-  cam->SetParallelProjection(1);
-  ren->ResetCamera();
-  {
-    const Result r = Compare("parallel_partial", win, ren, vol, refScene, nullptr, outDir);
-    PSI_CHECK(r.Mean < 0.006, "parallel: mean error %g", r.Mean);
-    PSI_CHECK(r.Covered > W * H / 8, "parallel: image nearly empty");
-  }
+// Parallel projection.
+void CheckParallel(Fixture& f)
+{
+  f.View.Renderer->GetActiveCamera()->SetParallelProjection(1);
+  f.View.Renderer->ResetCamera();
+  const psitest::Result r = f.Compare("parallel_partial", f.Ref);
+  PSI_CHECK(r.Mean < 0.006, "parallel: mean error %g", r.Mean);
+  PSI_CHECK(r.Covered > W * H / 8, "parallel: image nearly empty");
+}
 
-  // Camera inside the mesh: tetrahedra cut by the near plane are clipped, not dropped.
-  psitest::SetCameraInside(cam);
-  {
-    const Result r = Compare("camera_inside", win, ren, vol, refScene, nullptr, outDir);
-    PSI_CHECK(mapper->GetLastUsedNearPlaneClipping(), "inside view must use the near-plane path");
-    PSI_CHECK(r.Mean < 0.003 && r.Max < 0.02, "camera inside: mean error %g max %g", r.Mean, r.Max);
-    PSI_CHECK(r.Covered > W * H / 2, "camera inside: image should be covered (%d)", r.Covered);
-    // HAPT's screen-linear thickness is visibly wrong for cells close to the eye; the exact
-    // per-fragment reconstruction is what makes the inside view correct.
-    // (silhouettes are exact in both projections: the screen-linear triple is the fan's)
-    const int decomposition = mapper->GetDecomposition();
-    mapper->SetDecomposition(psi::Decompositions::Fan);
-    mapper->ExactPerspectiveSegmentsOff();
-    const Result linear = Compare("camera_inside_screen_linear", win, ren, vol, refScene, nullptr, outDir);
-    mapper->ExactPerspectiveSegmentsOn();
-    mapper->SetDecomposition(decomposition);
-    PSI_CHECK(r.Max < 0.25 * linear.Max, "exact segments max error %g vs screen-linear %g", r.Max,
-      linear.Max);
-  }
-  // The same inside view in a parallel projection. In perspective the vertices behind the eye
-  // project off screen and hide a wrong screen box of a clipped cell; here they project onto it.
+// Camera inside the mesh: tetrahedra cut by the near plane are clipped, not dropped.
+void CheckCameraInside(Fixture& f)
+{
+  vtkPsiVolumeMapper* mapper = f.Mapper;
+  psitest::SetCameraInside(f.View.Renderer->GetActiveCamera());
+  const psitest::Result r = f.Compare("camera_inside", f.Ref);
+  PSI_CHECK(mapper->GetLastUsedNearPlaneClipping(), "inside view must use the near-plane path");
+  PSI_CHECK(r.Mean < 0.003 && r.Max < 0.02, "camera inside: mean error %g max %g", r.Mean, r.Max);
+  PSI_CHECK(r.Covered > W * H / 2, "camera inside: image should be covered (%d)", r.Covered);
+  // HAPT's screen-linear thickness is visibly wrong for cells close to the eye; the exact
+  // per-fragment reconstruction is what makes the inside view correct.
+  // (silhouettes are exact in both projections: the screen-linear triple is the fan's)
+  const int decomposition = mapper->GetDecomposition();
+  mapper->SetDecomposition(psi::Decompositions::Fan);
+  mapper->ExactPerspectiveSegmentsOff();
+  const psitest::Result linear = f.Compare("camera_inside_screen_linear", f.Ref);
+  mapper->ExactPerspectiveSegmentsOn();
+  mapper->SetDecomposition(decomposition);
+  PSI_CHECK(r.Max < 0.25 * linear.Max, "exact segments max error %g vs screen-linear %g", r.Max,
+    linear.Max);
+}
+
+// The same inside view in a parallel projection. In perspective the vertices behind the eye
+// project off screen and hide a wrong screen box of a clipped cell; here they project onto it.
+void CheckCameraInsideParallel(Fixture& f)
+{
+  vtkCamera* cam = f.View.Renderer->GetActiveCamera();
   cam->SetParallelProjection(1);
   cam->SetParallelScale(2.0);
-  {
-    const Result r = Compare("camera_inside_parallel", win, ren, vol, refScene, nullptr, outDir);
-    PSI_CHECK(mapper->GetLastUsedNearPlaneClipping(), "parallel inside view: near-plane path");
-    PSI_CHECK(r.Mean < 0.003 && r.Max < 0.02 && r.Covered > W * H / 2,
-      "camera inside, parallel: mean error %g max %g, %d pixels covered", r.Mean, r.Max, r.Covered);
-  }
+  const psitest::Result r = f.Compare("camera_inside_parallel", f.Ref);
+  PSI_CHECK(f.Mapper->GetLastUsedNearPlaneClipping(), "parallel inside view: near-plane path");
+  PSI_CHECK(r.Mean < 0.003 && r.Max < 0.02 && r.Covered > W * H / 2,
+    "camera inside, parallel: mean error %g max %g, %d pixels covered", r.Mean, r.Max, r.Covered);
+}
+
+// Camera inside, and an opaque square just beyond the near plane, in front of cells that the near
+// plane cuts: their rays enter those cells behind the square, so the scene-depth test of the
+// clipped segment's front (the screen box itself is drawn on the near plane) must hide them.
+void CheckCameraInsideOpaque(Fixture& f)
+{
+  vtkRenderer* ren = f.View.Renderer;
+  vtkCamera* cam = ren->GetActiveCamera();
   psitest::SetCameraInside(cam);
-
-  // Camera inside, and an opaque square just beyond the near plane, in front of cells that the
-  // near plane cuts: their rays enter those cells behind the square, so the scene-depth test of
-  // the clipped segment's front (the screen box itself is drawn on the near plane) must hide them.
+  vtkNew<vtkPlaneSource> square;
+  double c[3], d[3], p[3];
+  cam->GetPosition(p);
+  cam->GetDirectionOfProjection(d);
+  for (int k = 0; k < 3; ++k)
   {
-    vtkNew<vtkPlaneSource> square;
-    double c[3], d[3], p[3];
-    cam->GetPosition(p);
-    cam->GetDirectionOfProjection(d);
-    for (int k = 0; k < 3; ++k)
-    {
-      c[k] = p[k] + 0.4 * d[k];
-    }
-    square->SetCenter(c);
-    square->SetNormal(d);
-    vtkNew<vtkPolyDataMapper> squareMapper;
-    squareMapper->SetInputConnection(square->GetOutputPort());
-    vtkNew<vtkActor> near;
-    near->SetMapper(squareMapper);
-    near->GetProperty()->LightingOff();
-    near->GetProperty()->SetColor(0.2, 0.7, 0.3);
-    near->SetScale(0.25);
-    near->SetOrigin(c);
-    ren->AddActor(near);
-    const Result r = Compare("camera_inside_opaque", win, ren, vol, refScene, near, outDir);
-    PSI_CHECK(mapper->GetLastUsedNearPlaneClipping() && mapper->GetLastUsedOpaqueClipping(),
-      "inside view with opaque geometry: near-plane and opaque paths");
-    PSI_CHECK(r.Mean < 0.003 && r.Max < 0.03, "camera inside, opaque square: mean error %g max %g",
-      r.Mean, r.Max);
-    ren->RemoveActor(near);
+    c[k] = p[k] + 0.4 * d[k];
   }
+  square->SetCenter(c);
+  square->SetNormal(d);
+  vtkNew<vtkPolyDataMapper> squareMapper;
+  squareMapper->SetInputConnection(square->GetOutputPort());
+  vtkNew<vtkActor> near;
+  near->SetMapper(squareMapper);
+  near->GetProperty()->LightingOff();
+  near->GetProperty()->SetColor(0.2, 0.7, 0.3);
+  near->SetScale(0.25);
+  near->SetOrigin(c);
+  ren->AddActor(near);
+  const psitest::Result r = f.Compare("camera_inside_opaque", f.Ref, near);
+  PSI_CHECK(f.Mapper->GetLastUsedNearPlaneClipping() && f.Mapper->GetLastUsedOpaqueClipping(),
+    "inside view with opaque geometry: near-plane and opaque paths");
+  PSI_CHECK(r.Mean < 0.003 && r.Max < 0.03, "camera inside, opaque square: mean error %g max %g",
+    r.Mean, r.Max);
+  ren->RemoveActor(near);
+}
 
-  // Opaque geometry through the middle of the volume: hides what is behind it, and the cells it
-  // cuts are integrated only up to it.
-  outside();
+// Opaque geometry through the middle of the volume: hides what is behind it, and the cells it
+// cuts are integrated only up to it.
+void CheckOpaquePlane(Fixture& f)
+{
+  vtkRenderer* ren = f.View.Renderer;
+  Outside(f);
   vtkSmartPointer<vtkActor> actor = psitest::MakeOpaquePlane(9);
   ren->AddActor(actor);
   ren->ResetCameraClippingRange();
-  {
-    const Result r = Compare("opaque_plane", win, ren, vol, refScene, actor, outDir);
-    PSI_CHECK(r.Mean < 0.006, "opaque geometry: mean error %g", r.Mean);
-    PSI_CHECK(mapper->GetLastUsedOpaqueClipping(), "opaque plane in the volume needs clipping");
-  }
+  const psitest::Result r = f.Compare("opaque_plane", f.Ref, actor);
+  PSI_CHECK(r.Mean < 0.006, "opaque geometry: mean error %g", r.Mean);
+  PSI_CHECK(f.Mapper->GetLastUsedOpaqueClipping(), "opaque plane in the volume needs clipping");
   ren->RemoveActor(actor);
+}
 
-  // Coarse cells: tau D reaches several units and color changes across a cell, where averaging
-  // is wrong and partial pre-integration is not (transfer function linear, see MakeScene).
+// Coarse cells: tau D reaches several units and color changes across a cell, where averaging is
+// wrong and partial pre-integration is not (transfer function linear, see MakeScene).
+void CheckCoarseCells(Fixture& f)
+{
+  vtkPsiVolumeMapper* mapper = f.Mapper;
+  vtkRenderer* ren = f.View.Renderer;
+  Scene coarse;
+  MakeScene(coarse, 3, 3.0, 1.0, true);
+  const psi::ReferenceScene coarseRef = MakeReference(coarse);
+  f.Draw(&coarse);
+  psitest::LookAtCentre(ren, 25, 17, 35);
+  mapper->SetIntegrationMethod(static_cast<int>(psi::Method::Average));
+  const psitest::Result avg = f.Compare("coarse_average", coarseRef);
+  mapper->SetIntegrationMethod(static_cast<int>(psi::Method::PartialPreIntegration));
+  const psitest::Result ppi = f.Compare("coarse_partial", coarseRef);
+  // Röttger et al. 2000 §4 with its table's sub-segments composited front to back: over coarse
+  // cells the color changes along each segment, and the order of the pieces shows.
+  mapper->SetIntegrationMethod(static_cast<int>(psi::Method::FullPreIntegration));
+  const psitest::Result full = f.Compare("coarse_full", coarseRef);
+  mapper->SetIntegrationMethod(static_cast<int>(psi::Method::PartialPreIntegration));
+  // Means sit near the 8-bit quantization floor (~0.001) for both; the worst pixel tells them apart.
+  PSI_CHECK(ppi.Max < 0.5 * avg.Max, "partial pre-integration max %g vs average %g", ppi.Max,
+    avg.Max);
+  PSI_CHECK(ppi.Max < 0.01 && ppi.Mean < 0.002, "coarse partial pre-integration error %g / %g",
+    ppi.Mean, ppi.Max);
+  PSI_CHECK(full.Max < 0.01 && full.Mean < 0.002, "coarse full pre-integration error %g / %g",
+    full.Mean, full.Max);
+  // The opaque plane through coarse cells: each cut segment ends at the plane with the scalar
+  // there (the scalar is linear along the ray, so it is interpolated to the cut).
+  vtkSmartPointer<vtkActor> cutPlane = psitest::MakeOpaquePlane(9);
+  ren->AddActor(cutPlane);
+  ren->ResetCameraClippingRange();
+  const psitest::Result cut = f.Compare("coarse_opaque", coarseRef, cutPlane);
+  ren->RemoveActor(cutPlane);
+  PSI_CHECK(cut.Max < 0.01 && cut.Mean < 0.002, "coarse cells cut by an opaque plane: %g / %g",
+    cut.Mean, cut.Max);
+}
+
+// The largest difference (of 255) between the image drawn with early discard and without it.
+int EarlyDiscardChange(Fixture& f)
+{
+  vtkRenderWindow* win = f.View.Window;
+  vtkNew<vtkUnsignedCharArray> a, b;
+  win->GetPixelData(0, 0, W - 1, H - 1, 0, a);
+  f.Mapper->EarlyDiscardOff();
+  win->Render();
+  win->GetPixelData(0, 0, W - 1, H - 1, 0, b);
+  f.Mapper->EarlyDiscardOn();
+  int maxDiff = 0;
+  for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
   {
-    Scene coarse;
-    MakeScene(coarse, 3, 3.0, 1.0, true);
-    const psi::ReferenceScene coarseRef = MakeReference(coarse);
-    mapper->SetInputData(coarse.Grid);
-    vol->SetProperty(coarse.Property);
-    cam->SetFocalPoint(0, 0, 0);
-    cam->SetPosition(25, 17, 35);
-    ren->ResetCameraClippingRange();
-    mapper->SetIntegrationMethod(static_cast<int>(psi::Method::Average));
-    const Result avg = Compare("coarse_average", win, ren, vol, coarseRef, nullptr, outDir);
-    mapper->SetIntegrationMethod(static_cast<int>(psi::Method::PartialPreIntegration));
-    const Result ppi = Compare("coarse_partial", win, ren, vol, coarseRef, nullptr, outDir);
-    // Röttger et al. 2000 §4 with its table's sub-segments composited front to back: over
-    // coarse cells the color changes along each segment, and the order of the pieces shows.
-    mapper->SetIntegrationMethod(static_cast<int>(psi::Method::FullPreIntegration));
-    const Result full = Compare("coarse_full", win, ren, vol, coarseRef, nullptr, outDir);
-    mapper->SetIntegrationMethod(static_cast<int>(psi::Method::PartialPreIntegration));
-    // Means sit near the 8-bit quantization floor (~0.001) for both; the worst pixel tells them apart.
-    PSI_CHECK(ppi.Max < 0.5 * avg.Max, "partial pre-integration max %g vs average %g", ppi.Max,
-      avg.Max);
-    PSI_CHECK(ppi.Max < 0.01 && ppi.Mean < 0.002, "coarse partial pre-integration error %g / %g",
-      ppi.Mean, ppi.Max);
-    PSI_CHECK(full.Max < 0.01 && full.Mean < 0.002, "coarse full pre-integration error %g / %g",
-      full.Mean, full.Max);
-    // The opaque plane through coarse cells: each cut segment ends at the plane with the scalar
-    // there (the scalar is linear along the ray, so it is interpolated to the cut).
-    vtkSmartPointer<vtkActor> cutPlane = psitest::MakeOpaquePlane(9);
-    ren->AddActor(cutPlane);
-    ren->ResetCameraClippingRange();
-    const Result cut = Compare("coarse_opaque", win, ren, vol, coarseRef, cutPlane, outDir);
-    ren->RemoveActor(cutPlane);
-    PSI_CHECK(cut.Max < 0.01 && cut.Mean < 0.002, "coarse cells cut by an opaque plane: %g / %g",
-      cut.Mean, cut.Max);
+    maxDiff = std::max(maxDiff, std::abs(int(a->GetValue(i)) - int(b->GetValue(i))));
   }
+  return maxDiff;
+}
 
-  // HAPT §3.5 early discard: with zero opacity over the lower half of the scalar range, the
-  // tetrahedra that only see that half are dropped in the geometry shader; the image must not
-  // change, and the variant is compiled only when the opacity function has a zero region.
-  {
-    mapper->SetInputData(s.Grid);
-    vol->SetProperty(s.Property);
-    outside();
-    mapper->SetIntegrationMethod(static_cast<int>(psi::Method::PartialPreIntegration));
-    win->Render();
-    PSI_CHECK(!mapper->GetLastUsedEarlyDiscard(), "no zero-opacity region: no early discard");
-    double r[2];
-    s.Grid->GetPointData()->GetScalars()->GetRange(r);
-    vtkNew<vtkPiecewiseFunction> saved;
-    saved->DeepCopy(s.Opacity);
-    s.Opacity->RemoveAllPoints(); // in place: the reference reads the same function
-    s.Opacity->AddPoint(r[0], 0.0);
-    s.Opacity->AddPoint(0.5 * (r[0] + r[1]), 0.0);
-    s.Opacity->AddPoint(r[1], 0.8);
-    const Result with = Compare("early_discard", win, ren, vol, MakeReference(s), nullptr, outDir);
-    PSI_CHECK(mapper->GetLastUsedEarlyDiscard(), "zero-opacity region: early discard compiled in");
-    vtkNew<vtkUnsignedCharArray> a, b;
-    win->GetPixelData(0, 0, W - 1, H - 1, 0, a);
-    mapper->EarlyDiscardOff();
-    win->Render();
-    win->GetPixelData(0, 0, W - 1, H - 1, 0, b);
-    mapper->EarlyDiscardOn();
-    int maxDiff = 0;
-    for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
-    {
-      maxDiff = std::max(maxDiff, std::abs(int(a->GetValue(i)) - int(b->GetValue(i))));
-    }
-    PSI_CHECK(maxDiff == 0, "early discard changed the image (max %d/255)", maxDiff);
-    PSI_CHECK(with.Mean < 0.006, "early discard scene vs reference: mean error %g", with.Mean);
+// HAPT §3.5 early discard: with zero opacity over the lower half of the scalar range, the
+// tetrahedra that only see that half are dropped in the geometry shader; the image must not
+// change, and the variant is compiled only when the opacity function has a zero region.
+void CheckEarlyDiscard(Fixture& f)
+{
+  vtkPsiVolumeMapper* mapper = f.Mapper;
+  Scene& s = f.S;
+  f.Draw(nullptr);
+  Outside(f);
+  mapper->SetIntegrationMethod(static_cast<int>(psi::Method::PartialPreIntegration));
+  f.View.Window->Render();
+  PSI_CHECK(!mapper->GetLastUsedEarlyDiscard(), "no zero-opacity region: no early discard");
+  double r[2];
+  s.Grid->GetPointData()->GetScalars()->GetRange(r);
+  vtkNew<vtkPiecewiseFunction> saved;
+  saved->DeepCopy(s.Opacity);
+  s.Opacity->RemoveAllPoints(); // in place: the reference reads the same function
+  s.Opacity->AddPoint(r[0], 0.0);
+  s.Opacity->AddPoint(0.5 * (r[0] + r[1]), 0.0);
+  s.Opacity->AddPoint(r[1], 0.8);
+  const psitest::Result with = f.Compare("early_discard", MakeReference(s));
+  PSI_CHECK(mapper->GetLastUsedEarlyDiscard(), "zero-opacity region: early discard compiled in");
+  int maxDiff = EarlyDiscardChange(f);
+  PSI_CHECK(maxDiff == 0, "early discard changed the image (max %d/255)", maxDiff);
+  PSI_CHECK(with.Mean < 0.006, "early discard scene vs reference: mean error %g", with.Mean);
 
-    // A coarse table (16 samples) with the opacity rising from zero over one sample interval:
-    // a cell whose scalar range ends inside that interval, or meets a single non-zero sample,
-    // sees a visible opacity there, and early discard must keep it (the test of the samples that
-    // bracket the cell's range, Maximo et al. 2010 §3.5).
-    mapper->SetTransferFunctionSamples(16);
-    const double step = (r[1] - r[0]) / 15;
-    s.Opacity->RemoveAllPoints();
-    s.Opacity->AddPoint(r[0], 0.0);
-    s.Opacity->AddPoint(r[0] + 7 * step, 0.0);
-    s.Opacity->AddPoint(r[0] + 8 * step, 0.8);
-    s.Opacity->AddPoint(r[1], 0.8);
-    win->Render();
-    PSI_CHECK(mapper->GetLastUsedEarlyDiscard(), "coarse table: early discard compiled in");
-    win->GetPixelData(0, 0, W - 1, H - 1, 0, a);
-    mapper->EarlyDiscardOff();
-    win->Render();
-    win->GetPixelData(0, 0, W - 1, H - 1, 0, b);
-    mapper->EarlyDiscardOn();
-    mapper->SetTransferFunctionSamples(1024);
-    maxDiff = 0;
-    for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
-    {
-      maxDiff = std::max(maxDiff, std::abs(int(a->GetValue(i)) - int(b->GetValue(i))));
-    }
-    PSI_CHECK(maxDiff == 0, "early discard changed the image, coarse table (max %d/255)", maxDiff);
-    s.Opacity->DeepCopy(saved);
-  }
+  // A coarse table (16 samples) with the opacity rising from zero over one sample interval: a
+  // cell whose scalar range ends inside that interval, or meets a single non-zero sample, sees a
+  // visible opacity there, and early discard must keep it (the test of the samples that bracket
+  // the cell's range, Maximo et al. 2010 §3.5).
+  mapper->SetTransferFunctionSamples(16);
+  const double step = (r[1] - r[0]) / 15;
+  s.Opacity->RemoveAllPoints();
+  s.Opacity->AddPoint(r[0], 0.0);
+  s.Opacity->AddPoint(r[0] + 7 * step, 0.0);
+  s.Opacity->AddPoint(r[0] + 8 * step, 0.8);
+  s.Opacity->AddPoint(r[1], 0.8);
+  f.View.Window->Render();
+  PSI_CHECK(mapper->GetLastUsedEarlyDiscard(), "coarse table: early discard compiled in");
+  maxDiff = EarlyDiscardChange(f);
+  mapper->SetTransferFunctionSamples(1024);
+  PSI_CHECK(maxDiff == 0, "early discard changed the image, coarse table (max %d/255)", maxDiff);
+  s.Opacity->DeepCopy(saved);
+}
+} // namespace
 
-  PSI_CHECK(psitest::RequestedProjector() < 0 ||
-      mapper->GetLastUsedProjector() == psitest::RequestedProjector(),
-    "the last frame used projector %d, not the one asked for (--projector)",
-    mapper->GetLastUsedProjector());
+int main(int argc, char* argv[])
+{
+  Fixture f(psitest::ParseArguments(argc, argv));
+  CheckPerspectiveMethods(f);
+  CheckKuhnCellsOrder(f);
+  CheckTimeStep(f);
+  CheckFiveChunks(f);
+  CheckParallel(f);
+  CheckCameraInside(f);
+  CheckCameraInsideParallel(f);
+  CheckCameraInsideOpaque(f);
+  CheckOpaquePlane(f);
+  CheckCoarseCells(f);
+  CheckEarlyDiscard(f);
+
+  vtkPsiVolumeMapper* mapper = f.Mapper;
+  psitest::CheckRequestedProjector(mapper->GetLastUsedProjector());
   std::printf("projector: %s\n", mapper->GetLastUsedProjector() ? "compute shader" : "geometry shader");
-  std::printf("%s\n", psitest::Failures() ? "TestPsiVolumeRender FAILED" : "TestPsiVolumeRender passed");
-  return psitest::Failures() ? 1 : 0;
+  return psitest::Report("TestPsiVolumeRender");
 }

@@ -257,13 +257,11 @@ void CheckFunctionForm(const psi::ShaderFeatures& f)
       v.Name.c_str(), what.c_str());
   }
 }
-} // namespace
-
-int main(int argc, char* argv[])
+// Every combination of features the composer takes: each method, segments, near clip, opaque
+// clip, early discard, adaptive sampling and isosurface mode; silhouettes also with a separate
+// opacity array and within depth peeling.
+std::vector<psi::ShaderFeatures> AllCombinations()
 {
-  const std::string outDir = argc > 1 ? argv[1] : "";
-  const auto t0 = std::chrono::steady_clock::now();
-  // 1. Composition of every combination (strings only).
   std::vector<psi::ShaderFeatures> all;
   for (int method = 0; method < 7; ++method)
   {
@@ -286,6 +284,14 @@ int main(int argc, char* argv[])
   }
   all.push_back(Make(1, false, false, false, false, 3, false, 1));
   all.push_back(Make(1, true, true, false, true, 4, true, 32));
+  return all;
+}
+
+// 1. Composition of every combination (strings only): each feature's code exactly when it is
+// on, one program per key and one key per program.
+void CheckAllCompositions()
+{
+  const std::vector<psi::ShaderFeatures> all = AllCombinations();
   std::map<std::string, psi::ShaderSources> byKey;
   std::map<std::string, std::string> keyBySources;
   for (const psi::ShaderFeatures& f : all)
@@ -317,8 +323,8 @@ int main(int argc, char* argv[])
     PSI_CHECK(p == keyBySources.end() || p->second == key, "one program, two keys:\n%s\n%s",
       key.c_str(), p == keyBySources.end() ? "" : p->second.c_str());
     keyBySources[sources] = key;
-    // A caller's integrator source is used as given.
   }
+  // A caller's integrator source is used as given.
   {
     psi::ShaderFeatures f = Make(2, false, false, false, false, 0, false);
     const psi::ShaderSources a = psi::ComposeShaders(f, psi::IntegratorSource(0));
@@ -327,11 +333,13 @@ int main(int argc, char* argv[])
   }
   std::printf("%zu feature combinations composed, %zu distinct programs\n", all.size(),
     byKey.size());
+}
 
-  // 2. A representative subset compiled and linked by the driver: every method plain and with
-  // every feature on, every method with each isosurface mode with and without exact segments,
-  // near and opaque clipping, and each feature alone.
-  std::vector<psi::ShaderFeatures> compile;
+// The fan's programs the driver compiles: every method plain and with every feature on, every
+// method with each isosurface mode with and without exact segments, near and opaque clipping,
+// and each feature alone.
+void AddFanSubset(std::vector<psi::ShaderFeatures>& compile)
+{
   for (int method = 0; method < 7; ++method)
   {
     compile.push_back(Make(method, false, false, false, false, 0, false));
@@ -358,8 +366,13 @@ int main(int argc, char* argv[])
   compile.push_back(Make(1, false, false, false, true, 0, false));
   compile.push_back(Make(1, false, false, false, false, 0, true));
   compile.push_back(Make(1, true, true, true, true, 3, true, 1));
-  // Silhouettes (the default): every method plain and with every feature on, each isosurface
-  // mode with and without the other features.
+}
+
+// Silhouettes' programs the driver compiles (the default): every method plain and with every
+// feature on, each isosurface mode with and without the other features; with a separate
+// opacity array; and within depth peeling, with and without a separate opacity array.
+void AddSilhouetteSubset(std::vector<psi::ShaderFeatures>& compile)
+{
   for (int method = 0; method < 7; ++method)
   {
     compile.push_back(Make(method, 2, false, false, false, 0, false));
@@ -391,7 +404,27 @@ int main(int argc, char* argv[])
     compile.push_back(Make(1, 2, true, true, true, iso, false, 3, iso % 2));
     compile.back().DepthPeel = true;
   }
+}
 
+// Writes the composed sources of program `index` (and its compute projector) to `outDir`.
+void WriteSources(const std::string& outDir, int index, const psi::ShaderFeatures& f,
+  const psi::ShaderSources& s, const psi::ComputeProjectorSources& c)
+{
+  std::ofstream(outDir + "/program" + std::to_string(index) + ".glsl")
+    << "// " << Describe(f) << "\n// ---- vertex\n" << s.Vertex << "// ---- geometry\n"
+    << s.Geometry << "// ---- fragment\n" << s.Fragment;
+  std::ofstream(outDir + "/projector" + std::to_string(index) + ".glsl")
+    << "// " << Describe(f) << "\n// ---- compute\n" << c.Compute << "// ---- vertex\n"
+    << c.Vertex;
+}
+
+// 2. A representative subset compiled and linked by the driver, each stage without a word from
+// the compiler, and the compute projector of the same features built.
+void CheckDriverCompiles(const std::string& outDir)
+{
+  std::vector<psi::ShaderFeatures> compile;
+  AddFanSubset(compile);
+  AddSilhouetteSubset(compile);
   vtkNew<vtkRenderWindow> rw;
   rw->SetSize(8, 8);
   rw->SetOffScreenRendering(1);
@@ -407,28 +440,20 @@ int main(int argc, char* argv[])
       break;
     }
     const psi::ShaderSources s = psi::ComposeShaders(f);
+    // The compute-shader projector of the same features: its projection pass and draw program.
+    const psi::ComputeProjectorSources c = psi::ComposeComputeProjector(f);
     if (!outDir.empty())
     {
-      std::ofstream(outDir + "/program" + std::to_string(compiled) + ".glsl")
-        << "// " << Describe(f) << "\n// ---- vertex\n" << s.Vertex << "// ---- geometry\n"
-        << s.Geometry << "// ---- fragment\n" << s.Fragment;
+      WriteSources(outDir, compiled, f, s, c);
     }
     vtkShaderProgram* prog = win->GetShaderCache()->ReadyShaderProgram(
       s.Vertex.c_str(), s.Fragment.c_str(), s.Geometry.c_str());
     PSI_CHECK(prog != nullptr && prog->GetCompiled(), "does not compile or link:\n%s",
       Describe(f).c_str());
     compiled += prog != nullptr ? 1 : 0;
-    // The compute-shader projector of the same features: its projection pass and draw program.
-    const psi::ComputeProjectorSources c = psi::ComposeComputeProjector(f);
     if (prog)
     {
       CheckQuietCompile(prog, c.Compute, Describe(f));
-    }
-    if (!outDir.empty())
-    {
-      std::ofstream(outDir + "/projector" + std::to_string(compiled - 1) + ".glsl")
-        << "// " << Describe(f) << "\n// ---- compute\n" << c.Compute << "// ---- vertex\n"
-        << c.Vertex;
     }
     std::string error;
     bool built = false;
@@ -439,11 +464,19 @@ int main(int argc, char* argv[])
     computeBuilt += project ? 1 : 0;
   }
   projector.ReleaseGraphicsResources(win);
+  std::printf("%d of %zu programs compiled and linked, %d compute projectors", compiled,
+    compile.size(), computeBuilt);
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const std::string outDir = argc > 1 ? argv[1] : "";
+  const auto t0 = std::chrono::steady_clock::now();
+  CheckAllCompositions();
+  CheckDriverCompiles(outDir);
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("%d of %zu programs compiled and linked, %d compute projectors (%.1f s)\n",
-    compiled, compile.size(), computeBuilt, seconds);
-  std::printf("%s\n",
-    psitest::Failures() ? "TestShaderComposition FAILED" : "TestShaderComposition passed");
-  return psitest::Failures() ? 1 : 0;
+  std::printf(" (%.1f s)\n", seconds);
+  return psitest::Report("TestShaderComposition");
 }

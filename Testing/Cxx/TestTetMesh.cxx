@@ -356,6 +356,5 @@ int main()
   TestStaleArray();
   TestTimeStep();
   TestVectorComponents();
-  std::printf("%s\n", psitest::Failures() ? "TestTetMesh FAILED" : "TestTetMesh passed");
-  return psitest::Failures() ? 1 : 0;
+  return psitest::Report("TestTetMesh");
 }
