@@ -6,8 +6,10 @@ import os
 
 from paraview import servermanager, simple
 
+# The checkout's root: this file is <root>/Python/psivolume/data.py.
+SOURCE_ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 SHARED_DATA = os.environ.get("PSI_DATA") or os.path.normpath(
-    os.path.join(os.path.dirname(__file__), "..", "..", "shared", "data"))
+    os.path.join(SOURCE_ROOT, "..", "shared", "data"))
 
 # PLOT3D datasets of ../shared/data: grid file, solution file, IBLANK, array to render.
 PLOT3D = {
@@ -24,8 +26,7 @@ def find_plugin():
     """Path of the built plugin (PSI_PLUGIN overrides)."""
     if os.environ.get("PSI_PLUGIN"):
         return os.environ["PSI_PLUGIN"]
-    here = os.path.dirname(os.path.abspath(__file__))
-    build = os.environ.get("PSI_BUILD_DIR") or os.path.join(here, "..", "build")
+    build = os.environ.get("PSI_BUILD_DIR") or os.path.join(SOURCE_ROOT, "build")
     # The plugin directory is named for the ParaView it was built against (CMakeLists.txt):
     # only a build for the running ParaView can load.
     sm = servermanager.vtkSMProxyManager
@@ -119,8 +120,3 @@ def show_volume(src, array, view, representation="Psi Volume", unit_distance=Non
     if unit_distance is not None:
         d.ScalarOpacityUnitDistance = unit_distance
     return d
-
-
-def wait(view):
-    """Blocks until the GL work of the last render is done (for wall-clock frame times)."""
-    view.GetRenderWindow().WaitForCompletion()
