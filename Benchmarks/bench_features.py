@@ -8,8 +8,8 @@ tetrahedra in the geometry shader (default) and per fragment; adaptive transfer-
 sampling; both; and plain contours (volume opacity zero, where marching tetrahedra let early
 discard drop the volume and draw only the surfaces). Rounds are interleaved (psivolume.timing:
 every configuration once per round, in a rotating order) so that drifts of the machine hit all
-alike, at least --rounds of them, until every ratio to the plain volume is within 5% or --budget
-seconds are spent; each configuration's frame time is the median over its rounds of the median
+alike, until every ratio to the plain volume is within 5% after at least --rounds rounds, or
+--budget seconds are spent; each configuration's frame time is the median over its rounds of the median
 over an orbit of --frames frames, 'vs plain' the median of its ratios to the plain volume taken
 round by round."""
 import argparse
@@ -21,7 +21,8 @@ from psivolume import bench, data, testing, timing
 parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
 parser.add_argument("--size", type=int, default=512)
 parser.add_argument("--frames", type=int, default=4)
-parser.add_argument("--rounds", type=int, default=3, help="interleaved rounds at least")
+parser.add_argument("--rounds", type=int, default=3,
+                    help="interleaved rounds at least, unless the budget is spent first")
 parser.add_argument("--budget", type=float, default=300, help="seconds of interleaved rounds")
 args = parser.parse_args()
 

@@ -24,23 +24,9 @@ parser.add_argument("--unit-distance", type=float)
 args = parser.parse_args()
 
 data.load_plugin(globals())
-if args.file:
-    src, array = data.open_any(args.file, args.array)
-else:
-    src, array = data.wavelet()
-if array is None:
-    raise SystemExit("%s has no point or cell array to render" % args.file)
-
-view = simple.CreateRenderView()
-view.ViewSize = [args.size, args.size]
-view.OrientationAxesVisibility = 0
-d = data.show_volume(src, array, view, unit_distance=args.unit_distance)
+src, array = data.open_or_wavelet(args.file, args.array)
+view, d = data.volume_view(src, array, args.size, args.unit_distance)
 d.IntegrationMethod = args.method
-view.ResetCamera()
-cam = view.GetActiveCamera()
-cam.Azimuth(30)
-cam.Elevation(20)
-view.ResetCamera()
 # the first frame (upload, Psi table, shader compile) untimed, then an orbit
 frames = max(args.frames, 1)
 spf = timing.time_frames(view, frames, warmup=1, orbit=True)[0]

@@ -312,22 +312,10 @@ def command_scene(args):
         if shared and not os.path.exists(os.path.join(data.SHARED_DATA, shared[0])):
             print("SKIP: %s not found in %s" % (name, data.SHARED_DATA))
             testing.exit_now(testing.SKIP)
-        src, array = data.open_any(name, args.array)
-    else:
-        src, array = data.wavelet(args.wavelet_half)
-    if array is None:
-        raise SystemExit("%s has no point or cell array to render" % args.file)
-    view = simple.CreateRenderView()
-    view.ViewSize = [args.size, args.size]
-    view.OrientationAxesVisibility = 0
-    d = data.show_volume(src, array, view, unit_distance=args.unit_distance)
+    src, array = data.open_or_wavelet(args.file, args.array, args.wavelet_half)
+    view, d = data.volume_view(src, array, args.size, args.unit_distance)
     simple.SetActiveView(view)
     simple.SetActiveSource(src)
-    view.ResetCamera()
-    cam = view.GetActiveCamera()
-    cam.Azimuth(30)
-    cam.Elevation(20)
-    view.ResetCamera()
     title = args.file or "Wavelet %d^3, tetrahedralized" % (2 * args.wavelet_half + 1)
     return view, d, src, "%s (%s)" % (title, array)
 

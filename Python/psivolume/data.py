@@ -104,6 +104,15 @@ def open_any(path, array=None):
     return src, array
 
 
+def open_or_wavelet(path=None, array=None, half=20):
+    """open_any(`path`, `array`), or with no path the embedded default (wavelet(`half`)); ends
+    the program with a message when there is no array to render."""
+    src, array = open_any(path, array) if path else wavelet(half)
+    if array is None:
+        raise SystemExit("%s has no point or cell array to render" % path)
+    return src, array
+
+
 def association(src, array):
     """'POINTS' or 'CELLS' for the array name."""
     if src.PointData.GetArray(array) is not None:
@@ -120,3 +129,19 @@ def show_volume(src, array, view, representation="Psi Volume", unit_distance=Non
     if unit_distance is not None:
         d.ScalarOpacityUnitDistance = unit_distance
     return d
+
+
+def volume_view(src, array, size, unit_distance=None):
+    """The commands' scene (the render command, the accuracy report): `src` shown as a volume
+    colored by `array` in a size x size view without orientation axes, the camera reset, turned
+    30 degrees and raised 20. Returns (view, representation)."""
+    view = simple.CreateRenderView()
+    view.ViewSize = [size, size]
+    view.OrientationAxesVisibility = 0
+    d = show_volume(src, array, view, unit_distance=unit_distance)
+    view.ResetCamera()
+    cam = view.GetActiveCamera()
+    cam.Azimuth(30)
+    cam.Elevation(20)
+    view.ResetCamera()
+    return view, d
