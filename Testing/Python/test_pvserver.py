@@ -103,7 +103,7 @@ def start_server(port, logfile):
     pvserver = os.environ.get("PSI_PVSERVER") or shutil.which("pvserver") or "pvserver"
     cmd = [mpiexec, "--allow-run-as-root", "-n", str(NRANKS), pvserver,
            "--server-port=%d" % port, "--force-offscreen-rendering"]
-    # pvpython initialized MPI as a singleton: mpiexec must not inherit it (psi_process).
+    # pvpython initialized MPI as a singleton: mpiexec must not inherit it (psivolume.process).
     env = process.environment_without_mpi()
     env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")  # 2 ranks on a machine with 1 core
     log("server: %s" % " ".join(cmd))

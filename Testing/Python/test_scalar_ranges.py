@@ -97,7 +97,7 @@ def aim():
 
 
 def reference(source, d):
-    """The exact reference's image of the display's scene (psi_accuracy's capture)."""
+    """The exact reference's image of the display's scene (psivolume.accuracy's capture)."""
     with tempfile.TemporaryDirectory() as work:
         cap = accuracy.Capture(view, d, source, work)
         images, _ = accuracy.reference_image(cap, runs=1)
