@@ -10,7 +10,7 @@ foreach (name IN ITEMS plugin_basics properties render_command vector_coloring m
 endforeach ()
 # The separate opacity array and translucent geometry with the compute projector too.
 foreach (name IN ITEMS separate_opacity translucent_geometry)
-  psi_add_python_test(${name}.compute SCRIPT ${name} ENVIRONMENT "PSI_PROJECTOR=compute")
+  psi_add_python_test(${name}.compute SCRIPT ${name} ARGS --projector compute)
 endforeach ()
 
 psi_add_python_test(isosurfaces

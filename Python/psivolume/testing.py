@@ -99,3 +99,12 @@ def write_png(rgb, path):
     writer.SetFileName(path)
     writer.SetInputData(img)
     writer.Write()
+
+
+def apply_requested(display):
+    """Gives a 'Psi Volume' display the projector the test's command line asks for
+    (`--projector compute` or `--projector geometry`; CTest's `.compute` variants), and returns it."""
+    if "--projector" in sys.argv:
+        asked = sys.argv[sys.argv.index("--projector") + 1]
+        display.Projector = {"compute": "Compute Shader", "geometry": "Geometry Shader"}[asked]
+    return display

@@ -5,25 +5,22 @@ frame (no further from it than 'Projected tetra' is), covering the same footprin
 new data or a new time step gives a new level of detail; an empty mesh, one tetrahedron and NaN
 scalars neither crash nor draw garbage."""
 import os
-import sys
 import tempfile
 
 import numpy as np
+from paraview import simple
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
-import psi_data  # noqa: E402
-import psi_testing  # noqa: E402
-from paraview import simple  # noqa: E402
+from psivolume import data, testing
 
-t = psi_testing.Checks("test_interaction")
-psi_data.load_plugin(globals())
+t = testing.Checks("test_interaction")
+data.load_plugin(globals())
 BG = [0.0, 0.0, 0.0]
 FULL, LOD, SURFACE = 0, 1, 2
 SIZE = 200
 
-view = psi_testing.black_view(SIZE)
-src, array = psi_data.wavelet(12)
-d = psi_data.show_volume(src, array, view, unit_distance=2.0)
+view = testing.black_view(SIZE)
+src, array = data.wavelet(12)
+d = data.show_volume(src, array, view, unit_distance=2.0)
 simple.Render(view)
 view.ResetCamera()
 view.GetActiveCamera().Azimuth(30)
@@ -32,13 +29,13 @@ view.GetActiveCamera().Elevation(20)
 
 def still():
     simple.Render(view)
-    return psi_testing.grab(view)
+    return testing.grab(view)
 
 
 def interactive():
     view.InteractiveRender()
     d.UpdatePropertyInformation()
-    return psi_testing.grab(view), d.GetProperty("LastInteractiveImage").GetElement(0)
+    return testing.grab(view), d.GetProperty("LastInteractiveImage").GetElement(0)
 
 
 def footprint(img):
@@ -49,7 +46,7 @@ def footprint(img):
 full = still()
 d.InteractionMode = "Full frame"
 img, used = interactive()
-t.check(used == FULL and psi_testing.mean_error(img, full) < 1e-6,
+t.check(used == FULL and testing.mean_error(img, full) < 1e-6,
         "'Full frame': the interactive frame is the full frame (drew %d)" % used)
 d.InteractionMode = "Auto"
 d.InteractiveBudget = 60.0
@@ -66,21 +63,21 @@ lod, used = interactive()
 t.check(used == LOD, "'Volume LOD': the level of detail (drew %d)" % used)
 
 # --- The level of detail is a volume close to the full frame.
-t.check(psi_testing.mean_error(lod, full) > 0, "the level of detail is not the full frame")
-pt_view = psi_testing.black_view(SIZE)
-pt = psi_data.show_volume(src, array, pt_view, representation="Volume", unit_distance=2.0)
+t.check(testing.mean_error(lod, full) > 0, "the level of detail is not the full frame")
+pt_view = testing.black_view(SIZE)
+pt = data.show_volume(src, array, pt_view, representation="Volume", unit_distance=2.0)
 pt.SelectMapper = "Projected tetra"
 pt_view.CameraPosition = view.CameraPosition
 pt_view.CameraFocalPoint = view.CameraFocalPoint
 pt_view.CameraViewUp = view.CameraViewUp
 pt_view.CameraViewAngle = view.CameraViewAngle
 simple.Render(pt_view)
-pt_img = psi_testing.grab(pt_view)
+pt_img = testing.grab(pt_view)
 pt.SelectMapper = "Resample To Image"  # ParaView's own image volume, at its default 128^3
 simple.Render(pt_view)
-rti_img = psi_testing.grab(pt_view)
-lod_err, pt_err = psi_testing.mean_error(lod, full), psi_testing.mean_error(pt_img, full)
-rti_err = psi_testing.mean_error(rti_img, full)
+rti_img = testing.grab(pt_view)
+lod_err, pt_err = testing.mean_error(lod, full), testing.mean_error(pt_img, full)
+rti_err = testing.mean_error(rti_img, full)
 # ParaView's cheaper images: the level of detail must be as close to the exact frame as they are
 bound = 1.25 * max(pt_err, rti_err)
 if os.environ.get("PSI_TEST_OUTPUT"):
@@ -95,32 +92,32 @@ iou = (a & b).sum() / max((a | b).sum(), 1)
 t.check(iou > 0.9, "the level of detail covers the volume's footprint (IoU %.3f)" % iou)
 
 # --- Still renders and screenshots never show it.
-t.check(psi_testing.mean_error(still(), full) < 1e-6, "a still render after moving is the full frame")
+t.check(testing.mean_error(still(), full) < 1e-6, "a still render after moving is the full frame")
 interactive()
 with tempfile.TemporaryDirectory() as tmp:
     shot = os.path.join(tmp, "shot.png")
     simple.SaveScreenshot(shot, view, ImageResolution=[SIZE, SIZE])
-    t.check(psi_testing.mean_error(psi_testing.grab(view), full) < 1e-6,
+    t.check(testing.mean_error(testing.grab(view), full) < 1e-6,
             "a screenshot after moving is the full frame")
 
 # --- A new array, new data: a new level of detail (never a stale image).
 calc = simple.Calculator(Input=src, ResultArrayName="twice", Function="2*%s" % array)
-d2 = psi_data.show_volume(calc, "twice", view, unit_distance=2.0)
+d2 = data.show_volume(calc, "twice", view, unit_distance=2.0)
 simple.Hide(src, view)
 d2.InteractionMode = "Volume LOD"
 simple.GetColorTransferFunction("twice").RescaleTransferFunction(
     *calc.PointData["twice"].GetRange())
 full2 = still()
 lod2, used = interactive()
-t.check(used == LOD and psi_testing.mean_error(lod2, full2) <= bound,
-        "a new array: its own level of detail (%.4f)" % psi_testing.mean_error(lod2, full2))
+t.check(used == LOD and testing.mean_error(lod2, full2) <= bound,
+        "a new array: its own level of detail (%.4f)" % testing.mean_error(lod2, full2))
 calc.Function = "-2*%s" % array
 simple.GetColorTransferFunction("twice").RescaleTransferFunction(
     *calc.PointData["twice"].GetRange())
 full3 = still()
 lod3, used = interactive()
-t.check(psi_testing.mean_error(full3, full2) > 0.001 and
-        psi_testing.mean_error(lod3, full3) < psi_testing.mean_error(lod3, lod2),
+t.check(testing.mean_error(full3, full2) > 0.001 and
+        testing.mean_error(lod3, full3) < testing.mean_error(lod3, lod2),
         "new data: a new level of detail, not the old one")
 simple.Delete(d2)
 simple.Delete(calc)
@@ -161,7 +158,7 @@ for name, function in (("empty", None), ("one", None), ("nan", "nan")):
                                   Function="%s/(coordsX>0)" % array)
         arr = "holes"
     simple.Hide(src, view)
-    r = psi_data.show_volume(shown, arr, view, unit_distance=2.0)
+    r = data.show_volume(shown, arr, view, unit_distance=2.0)
     r.InteractionMode = "Volume LOD"
     full_one = still()
     img, used = interactive()

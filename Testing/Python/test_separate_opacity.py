@@ -53,6 +53,7 @@ def render(source, rep="Psi Volume", opacity=None, assoc="POINTS", setup=None):
     simple.ColorBy(d, (assoc, array))
     d.ScalarOpacityUnitDistance = 3.0
     if rep == "Psi Volume":  # the display keeps its settings between renders: reset them
+        testing.apply_requested(d)
         d.IntegrationMethod = "Partial Pre-Integration"
         d.IsosurfaceValues = []
         d.EarlyDiscard = 1
@@ -159,6 +160,7 @@ t.check(diff(cpsi, cpsi0) > 5.0 and diff(cpsi, cvol) < bound,
         % (diff(cpsi, cpsi0), diff(cpsi, cvol)))
 d = simple.Show(calc, view)
 d.SetRepresentationType("Psi Volume")
+testing.apply_requested(d)
 simple.ColorBy(d, ("POINTS", array))
 d.ScalarOpacityUnitDistance = 3.0
 d.UseSeparateOpacityArray = 1

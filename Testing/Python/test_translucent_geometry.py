@@ -26,6 +26,7 @@ src, array = data.wavelet(8)
 view = testing.black_view(160)
 d = simple.Show(src, view)
 d.SetRepresentationType("Psi Volume")
+testing.apply_requested(d)
 simple.ColorBy(d, ("POINTS", array))
 d.ScalarOpacityUnitDistance = 3.0
 view.CameraPosition = [0.0, 0.0, 60.0]
