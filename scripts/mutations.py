@@ -197,6 +197,13 @@ MUTATIONS = [
              "true ||", ["PsiPython.interaction"]),
     Mutation("lod_outside_not_hidden", "Representations/PsiVolumeLOD.cxx",
              "    if (mask->GetTuple1(i) == 0)", "    if (false)", ["PsiPython.interaction"]),
+    # --- The driver's buffer limits (Representations/PsiMeshBuffers.cxx, PsiComputeProjector.cxx).
+    Mutation("texture_buffer_limit_unchecked", "Representations/PsiMeshBuffers.cxx",
+             "if (static_cast<long long>(this->Mesh.NumberOfPoints()) > maxTexels ||",
+             "if (static_cast<long long>(this->Mesh.NumberOfPoints()) > 2 * maxTexels ||",
+             ["PsiRepresentations.DriverLimits"]),
+    Mutation("storage_block_limit_unchecked", "Representations/PsiComputeProjector.cxx",
+             "  if (blockTets < 64)\n", "  if (blockTets < 1)\n", ["PsiRepresentations.DriverLimits"]),
     # --- Translucent geometry with depth peeling for volumes (Representations/PsiDepthPeelingCalls,
     # PsiRenderTarget).
     Mutation("peeling_stages_ignored", "Representations/PsiDepthPeelingCalls.cxx",
