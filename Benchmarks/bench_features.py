@@ -1,40 +1,39 @@
 """Frame time of each 'Psi Volume' feature alone and combined, on the Blunt Fin.
 
-pvpython Benchmarks/bench_features.py [--size 512] [--frames 4] [--rounds 3]
+pvpython Benchmarks/bench_features.py [--size 512] [--frames 4] [--rounds 3] [--budget 300]
 
 Configurations: the plain volume; the features switched on and then off again ("off after use",
 which must cost nothing: the program is the plain one); 1 and 4 isosurfaces, drawn by marching
 tetrahedra in the geometry shader (default) and per fragment; adaptive transfer-function
 sampling; both; and plain contours (volume opacity zero, where marching tetrahedra let early
-discard drop the volume and draw only the surfaces). Rounds are interleaved (every configuration once per
-round, in a rotating order) so that drifts of the machine hit all alike; each configuration's
-frame time is the median over its rounds of the mean over an orbit of frames."""
+discard drop the volume and draw only the surfaces). Rounds are interleaved (psivolume.timing:
+every configuration once per round, in a rotating order) so that drifts of the machine hit all
+alike, until every ratio to the plain volume is within 5% after at least --rounds rounds, or
+--budget seconds are spent; each configuration's frame time is the median over its rounds of the median
+over an orbit of --frames frames, 'vs plain' the median of its ratios to the plain volume taken
+round by round."""
 import argparse
-import os
-import statistics
-import sys
-import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
-import psi_bench  # noqa: E402
-import psi_data  # noqa: E402
-import psi_testing  # noqa: E402
-from paraview import simple  # noqa: E402
+from paraview import simple
+
+from psivolume import bench, data, testing, timing
 
 parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
 parser.add_argument("--size", type=int, default=512)
 parser.add_argument("--frames", type=int, default=4)
-parser.add_argument("--rounds", type=int, default=3)
+parser.add_argument("--rounds", type=int, default=3,
+                    help="interleaved rounds at least, unless the budget is spent first")
+parser.add_argument("--budget", type=float, default=300, help="seconds of interleaved rounds")
 args = parser.parse_args()
 
-psi_data.load_plugin(globals())
-src, array = psi_bench.load("bluntfin")  # SKIP when the data is absent
+data.load_plugin(globals())
+src, array = bench.load("bluntfin")  # SKIP when the data is absent
 src.UpdatePipeline()
 lo, hi = src.PointData[array].GetRange()
 view = simple.CreateRenderView()
 view.ViewSize = [args.size, args.size]
 view.OrientationAxesVisibility = 0
-d = psi_data.show_volume(src, array, view)
+d = data.show_volume(src, array, view)
 view.ResetCamera()
 cam = view.GetActiveCamera()
 cam.Azimuth(30)
@@ -78,39 +77,27 @@ def apply(values, adaptive, method, contours_only):
     d.IsosurfaceValues = values
     d.AdaptiveSampling = adaptive
     d.IsosurfaceMethod = method
-    simple.Render(view)  # compile / fetch the program outside the timing
-    psi_data.wait(view)
+    timing.frame(view)  # compile / fetch the program outside the timing
 
 
-def time_orbit():
-    times = []
-    for _ in range(args.frames):
-        cam.Azimuth(360.0 / args.frames)
-        t0 = time.perf_counter()
-        simple.Render(view)
-        psi_data.wait(view)
-        times.append(time.perf_counter() - t0)
-    return sum(times) / len(times)
+def contender(name, *config):
+    return timing.InProcess(name, view, lambda: apply(*config), orbit=True)
 
 
-results = {c[0]: [] for c in CONFIGS}
-for r in range(args.rounds):
-    k = r % len(CONFIGS)
-    for name, *config in CONFIGS[k:] + CONFIGS[:k]:
-        apply(*config)
-        results[name].append(time_orbit())
+res = timing.interleaved([contender(*c) for c in CONFIGS], "plain volume", frames=args.frames,
+                         warmup=0, min_rounds=args.rounds, budget=args.budget, min_turn=0,
+                         log=lambda m: print("  " + m, flush=True))
 d.UpdatePropertyInformation()
 ntets = d.GetProperty("NumberOfTetrahedra").GetElement(0)
-plain = statistics.median(results["plain volume"])
-spread = max(results["plain volume"]) - min(results["plain volume"])
-print("Blunt Fin (%s), %d tetrahedra, %dx%d, %d frames x %d interleaved rounds" %
-      (array, ntets, args.size, args.size, args.frames, args.rounds))
+print("Blunt Fin (%s), %d tetrahedra, %dx%d, %d frames an orbit; %s" %
+      (array, ntets, args.size, args.size, args.frames, res.summary()))
 print("%-30s %10s %10s %10s %8s" % ("configuration", "median s", "min s", "max s", "vs plain"))
 for name, *_ in CONFIGS:
-    v = results[name]
+    r = res.row(name)
     print("%-30s %10.4f %10.4f %10.4f %7.2fx" %
-          (name, statistics.median(v), min(v), max(v), statistics.median(v) / plain))
-off = statistics.median(results["features off after use"])
+          (name, r["spf"], r["spf_min"], r["spf_max"], r["ratio"]))
+off, plain = res.row("features off after use"), res.row("plain volume")
 print("off = free: features off after use %.4f s vs plain %.4f s (difference %+.1f%%, plain's own "
-      "spread over rounds %.1f%%)" % (off, plain, 100 * (off / plain - 1), 100 * spread / plain))
-psi_testing.exit_now(0)
+      "spread over rounds %.1f%%)" % (off["spf"], plain["spf"], 100 * (off["ratio"] - 1),
+                                      100 * (plain["spf_max"] - plain["spf_min"]) / plain["spf"]))
+testing.exit_now(0)

@@ -5,7 +5,7 @@ pvpython Benchmarks/bench_integration.py [--data bluntfin] [--size 512] [--frame
 For each method: CPU ns per segment and max/mean error over Moreland's sweeps (from
 bench_integration_cpu, against each method's own optical-model reference), frame time of
 'Psi Volume' on the dataset (median over interleaved rounds with 'Projected tetra',
-Python/psi_timing.py), and mean image error against the exact reference image (Bunyk +
+psivolume.timing), and mean image error against the exact reference image (Bunyk +
 linear integrator; methods 4-6 assume a different optical model, linear opacity, so part of their
 image error is the model difference). Writes the table and a plot (error vs time, one point per
 method) as PNG."""
@@ -15,13 +15,10 @@ import glob
 import io
 import os
 import subprocess
-import sys
+
+from psivolume import bench, data, testing
 
 here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(here, "..", "Python"))
-import psi_bench  # noqa: E402
-import psi_data  # noqa: E402
-import psi_testing  # noqa: E402
 
 p = argparse.ArgumentParser()
 p.add_argument("--data", default="bluntfin")
@@ -40,9 +37,9 @@ if not exe:
 cpu = {row["method"]: row for row in csv.DictReader(io.StringIO(
     subprocess.run([exe, "--csv"], check=True, capture_output=True, text=True).stdout))}
 
-psi_data.load_plugin(globals())
-src, array = psi_bench.load(args.data)
-scene = psi_bench.Scene(src, array, args.size, args.frames)
+data.load_plugin(globals())
+src, array = bench.load(args.data)
+scene = bench.Scene(src, array, args.size, args.frames)
 refs, ref_seconds = scene.references([int(i * args.frames / args.error_views)
                                       for i in range(args.error_views)])
 # The methods as the plugin offers them: the IntegrationMethod enumeration (one entry per row of
@@ -99,4 +96,4 @@ axes[1].set_title("Rendering: error vs frame time")
 fig.tight_layout()
 fig.savefig(args.plot, dpi=110)
 print("plot: %s" % os.path.abspath(args.plot))
-psi_testing.exit_now(0)
+testing.exit_now(0)

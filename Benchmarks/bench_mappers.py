@@ -3,19 +3,14 @@ run, on the same data, views and transfer function.
 
 pvpython Benchmarks/bench_mappers.py [--data bluntfin|post|comb|wavelet|FILE] [--size 512]
                                      [--frames 12] [--error-views 3] [--budget 300] [--mappers ...]
-Prints seconds/frame (median over interleaved rounds, Python/psi_timing.py), tets/s, the speed
+Prints seconds/frame (median over interleaved rounds, psivolume.timing), tets/s, the speed
 relative to 'Projected tetra' (taken round by round), and the mean and max pixel error
 (0..255 per channel) against an exact reference: VTK's Bunyk ray caster with
 vtkUnstructuredGridLinearRayIntegrator (linear color and attenuation, split at transfer-function
 control points). The color map is put in RGB space so that the reference is exact for it."""
 import argparse
-import os
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
-import psi_bench  # noqa: E402
-import psi_data  # noqa: E402
-import psi_testing  # noqa: E402
+from psivolume import bench, data, testing
 
 p = argparse.ArgumentParser()
 p.add_argument("--data", default="bluntfin")
@@ -32,10 +27,10 @@ p.add_argument("--mappers", nargs="*", default=[
     "Bunyk ray cast", "Resample To Image"])
 args = p.parse_args()
 
-psi_data.load_plugin(globals())
-src, array = psi_bench.load(args.data)
-scene = psi_bench.Scene(src, array, args.size, args.frames, args.unit_distance,
-                        args.transparent_below)
+data.load_plugin(globals())
+src, array = bench.load(args.data)
+scene = bench.Scene(src, array, args.size, args.frames, args.unit_distance,
+                    args.transparent_below)
 steps = [int(i * args.frames / args.error_views) for i in range(args.error_views)]
 refs, ref_seconds = scene.references(steps)
 errors = {name: scene.errors(name, refs, args.png_dir) for name in args.mappers}
@@ -59,4 +54,4 @@ print("%-36s %10s %12s %11s %11s %11s %9s" % ("mapper", "s/frame", "tets/s",
 for name, spf, ratio, err, mx in rows:
     print("%-36s %10.4f %12.0f %10.2fx %11.3f %10.2fx %9.0f" % (
         name, spf, scene.cells / spf, 1.0 / ratio, err, err / pt_err if pt_err else float("nan"), mx))
-psi_testing.exit_now(0)
+testing.exit_now(0)

@@ -1,24 +1,18 @@
 """Benchmark (not a test): Moreland's Table 6.4 side by side with 'Psi Volume'. The six methods
 of his table, each as a frame rate relative to Average, on the Blunt Fin and the Oxygen Post,
 with Mesa's llvmpipe on 1 thread and on all threads (LP_NUM_THREADS, fixed per process: each
-thread count runs in its own child pvpython, its methods in interleaved rounds, psi_timing).
+thread count runs in its own child pvpython, its methods in interleaved rounds, psivolume.timing).
 
 pvpython Benchmarks/bench_moreland_table.py [--size 512] [--frames 3] [--budget 240]
                                             [--models bluntfin post] [--out FILE.md]
 Prints the Markdown table (and writes it to --out)."""
 import argparse
 import os
-import sys
 import tempfile
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "Python"))
-import psi_accuracy  # noqa: E402
-import psi_data  # noqa: E402
-import psi_moreland  # noqa: E402
-import psi_testing  # noqa: E402
-import psi_timing  # noqa: E402
-from paraview import simple  # noqa: E402
+from paraview import simple
+
+from psivolume import accuracy, data, moreland, testing, timing
 
 MODELS = {"bluntfin": "Blunt Fin", "post": "Oxygen Post"}
 
@@ -27,7 +21,7 @@ def scene(model, size):
     """The model in a size x size view, the accuracy report's camera and transfer function."""
     args = argparse.Namespace(file=model, array=None, size=size, wavelet_half=20,
                               unit_distance=None)
-    view, rep, src, _ = psi_accuracy.command_scene(args)
+    view, rep, src, _ = accuracy.command_scene(args)
     simple.Render(view)
     return view, rep, src
 
@@ -36,16 +30,15 @@ def ratios(cap, work, threads, frames, budget):
     """{method: (time ratio to Average, spread)} for one llvmpipe thread count, and the summary."""
     scene_file = os.path.join(work, "scene.json")
     cap.write_child_scene(scene_file)
-    cmd = [psi_timing.pvpython(), "--force-offscreen-rendering", psi_accuracy.__file__,
-           "--child-mapper", "Psi Volume|Average", "--child-scene", scene_file,
-           "--child-out", os.path.join(work, "image_%s.npy" % threads)]
-    proc = psi_timing.ChildProcess(cmd, env=psi_timing.child_environment(threads), timeout=600)
-    contenders = [psi_timing.Child(m, proc, {"IntegrationMethod": m, "AdaptiveSampling": "Off"})
-                  for m in psi_moreland.METHODS]
-    res = psi_timing.interleaved(contenders, "Average", frames=frames, budget=budget,
-                                 log=lambda m: print("    %s" % m, flush=True))
+    cmd = accuracy.child_command("Psi Volume|Average", scene_file,
+                                 os.path.join(work, "image_%s.npy" % threads))
+    proc = timing.ChildProcess(cmd, env=timing.child_environment(threads), timeout=600)
+    contenders = [timing.Child(m, proc, {"IntegrationMethod": m, "AdaptiveSampling": "Off"})
+                  for m in moreland.METHODS]
+    res = timing.interleaved(contenders, "Average", frames=frames, budget=budget,
+                             log=lambda m: print("    %s" % m, flush=True))
     out = {}
-    for m in psi_moreland.METHODS:
+    for m in moreland.METHODS:
         row = res.row(m)
         out[m] = (row["ratio"], row["ratio_spread"] or 0.0)
     return out, res.summary()
@@ -59,13 +52,13 @@ def main():
     p.add_argument("--models", nargs="*", default=list(MODELS))
     p.add_argument("--out")
     args = p.parse_args()
-    psi_data.load_plugin(globals())
+    data.load_plugin(globals())
     threads = sorted({1, os.cpu_count() or 1})
     columns, notes = [], []
     for model in args.models:
         view, rep, src = scene(model, args.size)
         with tempfile.TemporaryDirectory(prefix="psi_table64_") as work:
-            cap = psi_accuracy.Capture(view, rep, src, work)
+            cap = accuracy.Capture(view, rep, src, work)
             for t in threads:
                 print("%s, %d llvmpipe thread%s:" % (MODELS[model], t, "s" * (t > 1)), flush=True)
                 ours, summary = ratios(cap, work, t, args.frames, args.budget)
@@ -76,12 +69,12 @@ def main():
     text = ("Frame rate relative to Average (Moreland's 'Average Luminance and Attenuation'): "
             "Moreland's Table 6.4 (Quadro FX 3000, 800x800) and 'Psi Volume' (%dx%d, llvmpipe), "
             "ours with half the interquartile range of the ratio over the rounds.\n\n%s\n\n%s\n"
-            % (args.size, args.size, psi_moreland.side_by_side(columns), "\n".join(notes)))
+            % (args.size, args.size, moreland.side_by_side(columns), "\n".join(notes)))
     print(text)
     if args.out:
         with open(args.out, "w") as f:
             f.write(text)
-    psi_testing.exit_now(0)
+    testing.exit_now(0)
 
 
 if __name__ == "__main__":

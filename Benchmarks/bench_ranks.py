@@ -17,23 +17,19 @@ import resource
 import subprocess
 import sys
 import tempfile
-import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+from psivolume import data, process, testing, timing
 
 
 def worker(args):
-    sys.path.insert(0, os.path.join(HERE, "..", "Python"))
     import numpy as np
     from mpi4py import MPI
     from paraview import simple
     from vtkmodules.util.numpy_support import vtk_to_numpy
-    import psi_data
-    import psi_testing
 
     comm = MPI.COMM_WORLD
-    psi_data.load_plugin(globals())
-    src, array = psi_data.wavelet(args.half)
+    data.load_plugin(globals())
+    src, array = data.wavelet(args.half)
     src.UpdatePipeline()
     view = simple.CreateRenderView()
     view.ViewSize = [args.size, args.size]
@@ -57,28 +53,20 @@ def worker(args):
     c.SetViewUp(0, 0, 1)
     h = float(args.half)
     view.ResetCamera(-h, h, -h, h, -h, h)
-    simple.Render(view)
-    times = []
-    for _ in range(args.frames):
-        t = time.perf_counter()
-        simple.Render(view)
-        times.append(time.perf_counter() - t)
+    spf = timing.time_frames(view, args.frames, warmup=1, jitter=0.0)[0]
     im = view.SMProxy.CaptureWindow(1)
     rss = comm.gather(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0, root=0)
     if comm.Get_rank() == 0:
         dims = im.GetDimensions()
         a = vtk_to_numpy(im.GetPointData().GetScalars()).reshape(dims[1], dims[0], -1)
         np.save(args.out, a[:, :, :3].astype(np.float64))
-        times.sort()
-        print("RESULT " + json.dumps({"spf": times[len(times) // 2], "rss": rss}), flush=True)
+        print("RESULT " + json.dumps({"spf": spf, "rss": rss}), flush=True)
     comm.Barrier()
-    psi_testing.exit_now(0)
+    testing.exit_now(0)
 
 
 def run(n, args, out):
-    sys.path.insert(0, os.path.join(HERE, "..", "Python"))
-    import psi_process
-    env = psi_process.environment_without_mpi()
+    env = process.environment_without_mpi()
     cmd = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-n", str(n), "pvbatch",
            "--symmetric", "--force-offscreen-rendering", os.path.abspath(__file__), "--worker",
            "--half", str(args.half), "--size", str(args.size), "--frames", str(args.frames),

@@ -12,7 +12,7 @@ pvpython Benchmarks/bench_scale.py [--sizes 20 40 60] [--bluntfin] [--size 512] 
 320,000 tets, 40 gives 2,560,000 and 60 gives 8,640,000. For each mesh and mapper it prints:
   - first frame: seconds from the first Render to its completion (upload, sort, draw), the
     pipeline already updated;
-  - s/frame: the median over interleaved rounds of all the mappers' workers (Python/psi_timing.py:
+  - s/frame: the median over interleaved rounds of all the mappers' workers (psivolume.timing:
     each worker stays up, draws its turn of --frames frames after a warm-up one, the order
     rotating), and the speed relative to 'Projected tetra' taken round by round;
   - peak RSS of the process (MB), and relative to 'Projected tetra';
@@ -32,9 +32,10 @@ import json
 import os
 import resource
 import sys
-import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+from paraview import simple
+
+from psivolume import bench, data, testing, timing
 
 # Time steps on a fixed mesh: the output shares the input's points and cells (ShallowCopy), only
 # the array "step" (the input's `array` scaled by 1 + 0.05 k) changes with time step k.
@@ -53,88 +54,65 @@ out.GetPointData().AddArray(a)
 
 def worker(args):
     """One mapper on one mesh: prints one JSON line."""
-    sys.path.insert(0, os.path.join(HERE, "..", "Python"))
-    from paraview import simple
-    import psi_bench
-    import psi_data
-    import psi_testing
-    import psi_timing
-
-    psi_data.load_plugin(globals())
+    data.load_plugin(globals())
     if args.data == "bluntfin":
-        src, array = psi_bench.load("bluntfin")
+        src, array = bench.load("bluntfin")
     else:
-        src, array = psi_data.wavelet(int(args.data))
+        src, array = data.wavelet(int(args.data))
     prog = simple.ProgrammableFilter(Input=src)
     prog.Script = STEP_SCRIPT.format(array=array, k=0)
     prog.CopyArrays = 0
     prog.UpdatePipeline()
-    view, _ = psi_bench.scale_view(prog, "step", args.mapper, args.size)
+    view, _ = bench.scale_view(prog, "step", args.mapper, args.size)
     cells = prog.GetDataInformation().GetNumberOfCells()
-    t = time.perf_counter()
-    simple.Render(view)
-    psi_data.wait(view)
-    first = time.perf_counter() - t
-    for _ in range(args.frames):  # an orbit: every view's sort and buffers have been made
-        view.GetActiveCamera().Azimuth(360.0 / args.frames)
-        simple.Render(view)
-        psi_data.wait(view)
+    first = timing.frame(view)[0]
+    # an orbit, its times unused: every view's sort and buffers have been made
+    timing.time_frames(view, args.frames, warmup=0, orbit=True)
     # fixed view: plain frames, then time steps (pipeline updated before the clock starts)
     plain, steps = [], []
     simple.Render(view)
     for k in range(1, args.frames + 1):
-        t = time.perf_counter()
-        simple.Render(view)
-        psi_data.wait(view)
-        plain.append(time.perf_counter() - t)
+        plain.append(timing.frame(view)[0])
         prog.Script = STEP_SCRIPT.format(array=array, k=k)
         prog.UpdatePipeline()
-        t = time.perf_counter()
-        simple.Render(view)
-        psi_data.wait(view)
-        steps.append(time.perf_counter() - t)
+        steps.append(timing.frame(view)[0])
     rss_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
     print("RESULT " + json.dumps({
-        "cells": cells, "first": first, "plain": min(plain), "step": min(steps), "rss": rss_mb}),
-        flush=True)
-    psi_timing.serve_rounds(view)  # s/frame: interleaved rounds with the other mappers
-    psi_testing.exit_now(0)
+        "cells": cells, "first": first, "plain": timing.frame_time(plain),
+        "step": timing.frame_time(steps), "rss": rss_mb}), flush=True)
+    timing.serve_rounds(view)  # s/frame: interleaved rounds with the other mappers
+    testing.exit_now(0)
 
 
-def start_worker(data, mapper, threads, args):
+def start_worker(dataset, mapper, threads, args):
     """A worker for one mapper on one mesh, with llvmpipe on `threads` threads, that stays up
-    for the timing rounds (psi_timing.ChildProcess)."""
-    sys.path.insert(0, os.path.join(HERE, "..", "Python"))
-    import psi_timing
-    cmd = [psi_timing.pvpython(), "--force-offscreen-rendering", os.path.abspath(__file__),
-           "--worker", "--data", str(data), "--mapper", mapper, "--size", str(args.size),
+    for the timing rounds (timing.ChildProcess)."""
+    cmd = [timing.pvpython(), "--force-offscreen-rendering", os.path.abspath(__file__),
+           "--worker", "--data", str(dataset), "--mapper", mapper, "--size", str(args.size),
            "--frames", str(args.frames)]
-    proc = psi_timing.ChildProcess(cmd, env=psi_timing.child_environment(threads),
-                                   timeout=args.timeout)
+    proc = timing.ChildProcess(cmd, env=timing.child_environment(threads), timeout=args.timeout)
     result = proc.line("RESULT ")
     if not proc.ready or result is None:
         sys.stderr.write("worker failed (%s, %s): %s\n%s\n" % (
-            data, mapper, proc.note, "\n".join(proc.output[-20:])))
+            dataset, mapper, proc.note, "\n".join(proc.output[-20:])))
     return proc, (json.loads(result) if result else None)
 
 
-def measure(data, mappers, threads, args):
+def measure(dataset, mappers, threads, args):
     """For each mapper that ran: its worker's figures (first frame, time step, RSS) and, from
     interleaved rounds with the others, s/frame and the ratio to 'Projected tetra'."""
-    sys.path.insert(0, os.path.join(HERE, "..", "Python"))
-    import psi_timing
-    workers = {m: start_worker(data, m, threads, args) for m in mappers}
-    live = [psi_timing.Child(m, proc) for m, (proc, r) in workers.items() if r is not None]
+    workers = {m: start_worker(dataset, m, threads, args) for m in mappers}
+    live = [timing.Child(m, proc) for m, (proc, r) in workers.items() if r is not None]
     baseline = "Projected tetra" if "Projected tetra" in [c.name for c in live] else \
         (live[0].name if live else None)
     rows = {}
     if live:
-        timing = psi_timing.interleaved(live, baseline, frames=args.frames, budget=args.budget,
-                                        min_rounds=5)
-        print("# %s, %d llvmpipe thread%s: %s" % (data, threads, "s" * (threads > 1),
-                                                 timing.summary()), flush=True)
+        timed = timing.interleaved(live, baseline, frames=args.frames, budget=args.budget,
+                                   min_rounds=5)
+        print("# %s, %d llvmpipe thread%s: %s" % (dataset, threads, "s" * (threads > 1),
+                                                 timed.summary()), flush=True)
         for c in live:
-            rows[c.name] = dict(workers[c.name][1], **timing.row(c.name))
+            rows[c.name] = dict(workers[c.name][1], **timed.row(c.name))
     for proc, _ in workers.values():
         proc.close()
     return rows
@@ -167,13 +145,13 @@ def main():
         "tets", "mapper", "first (s)", "s/frame", "speed/PT", "RSS (MB)", "RSS/PT",
         "%d->%d thr" % tuple(args.threads), "step/frame"))
     measured = []
-    for data in datasets:
+    for dataset in datasets:
         mappers = [m for m in args.mappers if not (
-            m == "Bunyk ray cast" and data != "bluntfin" and
-            5 * (2 * int(data)) ** 3 > args.bunyk_max_tets)]
+            m == "Bunyk ray cast" and dataset != "bluntfin" and
+            5 * (2 * int(dataset)) ** 3 > args.bunyk_max_tets)]
         # all threads first, then one: each pass its own interleaved rounds (halves the memory)
-        fast = measure(data, mappers, args.threads[1], args)
-        slow = measure(data, list(fast), args.threads[0], args)
+        fast = measure(dataset, mappers, args.threads[1], args)
+        slow = measure(dataset, list(fast), args.threads[0], args)
         pt = fast.get("Projected tetra")
         for mapper, r in fast.items():
             s1 = slow.get(mapper)
@@ -183,7 +161,7 @@ def main():
                 r["rss"] / pt["rss"] if pt else float("nan"),
                 s1["spf"] / r["spf"] if s1 and s1["spf"] else float("nan"),
                 r["step"] / r["plain"]), flush=True)
-            measured.append(dict(r, data=data, mapper=mapper))
+            measured.append(dict(r, data=dataset, mapper=mapper))
     if args.plot and measured:
         plot(measured, args)
 

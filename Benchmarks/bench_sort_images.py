@@ -3,16 +3,12 @@ viewpoints, as in Maximo et al. 2010, Table 1: max error, mean error, % of diffe
 
 pvpython Benchmarks/bench_sort_images.py [--data bluntfin] [--size 512] [--views 12]"""
 import argparse
-import os
-import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
-import psi_bench  # noqa: E402
-import psi_data  # noqa: E402
-import psi_testing  # noqa: E402
-from paraview import simple  # noqa: E402
+from paraview import simple
+
+from psivolume import bench, data, testing
 
 p = argparse.ArgumentParser()
 p.add_argument("--data", default="bluntfin")
@@ -20,9 +16,9 @@ p.add_argument("--size", type=int, default=512)
 p.add_argument("--views", type=int, default=12)
 args = p.parse_args()
 
-psi_data.load_plugin(globals())
-src, array = psi_bench.load(args.data)
-scene = psi_bench.Scene(src, array, args.size, args.views)
+data.load_plugin(globals())
+src, array = bench.load(args.data)
+scene = bench.Scene(src, array, args.size, args.views)
 scene.set_mapper("Psi Volume|Partial Pre-Integration")
 rep = scene.rep
 maxes, means, differing, cycles = [], [], [], []
@@ -31,12 +27,12 @@ for k in range(args.views):
     for sort in ("Centroid", "MPVONC"):
         rep.SortMethod = sort
         simple.Render(scene.view)
-        imgs[sort] = psi_testing.grab(scene.view)
+        imgs[sort] = testing.grab(scene.view)
         if sort == "MPVONC":
             rep.UpdatePropertyInformation()
             cycles.append(rep.GetProperty("LastSortCycles").GetElement(0))
     d = np.abs(imgs["Centroid"] - imgs["MPVONC"]).max(axis=2)
-    covered = psi_testing.covered(imgs["MPVONC"], [0, 0, 0])
+    covered = testing.covered(imgs["MPVONC"], [0, 0, 0])
     maxes.append(d.max())
     means.append(d.mean())
     differing.append(100.0 * (d > 0).sum() / max(covered, 1))
@@ -46,4 +42,4 @@ print("\n%s, %d tetrahedra, %dx%d, %d views: centroid vs MPVONC order (0..255)" 
 print("max error %.0f, mean error %.4f, differing pixels %.2f%% of covered (mean over views; "
       "max error is the max over views); MPVONC cycles broken per view: %.1f" % (
           max(maxes), float(np.mean(means)), float(np.mean(differing)), float(np.mean(cycles))))
-psi_testing.exit_now(0)
+testing.exit_now(0)

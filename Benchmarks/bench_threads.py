@@ -19,33 +19,29 @@ import subprocess
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+from psivolume import bench, data, process, testing, timing
 
 
 def worker(args):
     """Renders the scene, printing READY before the orbit and DONE after it."""
-    sys.path.insert(0, os.path.join(HERE, "..", "Python"))
     from paraview import simple
-    import psi_bench
-    import psi_data
-    import psi_testing
 
-    psi_data.load_plugin(globals())
-    src, array = (psi_bench.load("bluntfin") if args.data == "bluntfin"
-                  else psi_data.wavelet(int(args.data)))
+    data.load_plugin(globals())
+    src, array = (bench.load("bluntfin") if args.data == "bluntfin"
+                  else data.wavelet(int(args.data)))
     src.UpdatePipeline()
-    view, _ = psi_bench.scale_view(src, array, args.mapper, args.size)
+    view, _ = bench.scale_view(src, array, args.mapper, args.size)
     for _ in range(2):
         simple.Render(view)
-        psi_data.wait(view)
+        timing.wait(view)
     print("READY", flush=True)
     for _ in range(args.frames):
         view.GetActiveCamera().Azimuth(360.0 / args.frames)
         print("FRAME %.6f" % time.monotonic(), flush=True)
         simple.Render(view)
-        psi_data.wait(view)
+        timing.wait(view)
     print("DONE %.6f" % time.monotonic(), flush=True)
-    psi_testing.exit_now(0)
+    testing.exit_now(0)
 
 
 def group_of(pid, tid, name):
@@ -88,10 +84,8 @@ def main():
     cmd = [pvpython, "--force-offscreen-rendering", os.path.abspath(__file__), "--worker",
            "--data", args.data, "--mapper", args.mapper, "--frames", str(args.frames),
            "--size", str(args.size)]
-    sys.path.insert(0, os.path.join(HERE, "..", "Python"))
-    import psi_process
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, text=True,
-                            env=psi_process.environment_without_mpi())
+                            env=process.environment_without_mpi())
     for line in proc.stdout:
         if line.startswith("READY"):
             break

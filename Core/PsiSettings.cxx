@@ -57,9 +57,9 @@ const std::vector<SettingInfo>& SettingTable()
     Int(S::IsosurfaceShading, "IsosurfaceShading", &Settings::IsosurfaceShading,
       IsosurfaceShadings::Smooth, IsosurfaceShadings::Unlit),
     Int(S::InteractionMode, "InteractionMode", &Settings::InteractionMode,
-      InteractionModes::Auto, InteractionModes::FullFrame, false),
+      InteractionModes::Auto, InteractionModes::FullFrame),
     Real(S::IsosurfaceOpacity, "IsosurfaceOpacity", &Settings::IsosurfaceOpacity, 0, 1),
-    Real(S::InteractiveBudget, "InteractiveBudget", &Settings::InteractiveBudget, 0, 60, false),
+    Real(S::InteractiveBudget, "InteractiveBudget", &Settings::InteractiveBudget, 0, 60),
   };
   return table;
 }

@@ -101,6 +101,17 @@ enum : int
 };
 }
 
+/// What drew an interactive frame (the representation's LastInteractiveImage read-out).
+namespace InteractiveImages
+{
+enum : int
+{
+  FullFrame = 0,      ///< the full 'Psi Volume' frame
+  VolumeLOD = 1,      ///< the volume level of detail
+  ParaViewSurface = 2 ///< ParaView's surface level of detail
+};
+}
+
 /// Largest number of transfer-function nodes used for adaptive sampling (more are thinned).
 constexpr int MaxAdaptiveNodes = 64;
 /// Adaptive sampling adds nodes where a color map bends farther than this from linear

@@ -8,7 +8,6 @@
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkType.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>

@@ -83,6 +83,30 @@ bool HasPointAt(const TetMesh& m, TetCells cells, uint32_t other, uint32_t p)
   }
   return false;
 }
+
+// Whether the four neighbour entries of tetrahedron `t` name tetrahedra that have its faces.
+bool NeighborsMatchAt(const TetMesh& m, TetCells cells, const std::vector<int32_t>& nb, uint32_t t)
+{
+  const size_t n = m.NumberOfTets();
+  for (int f = 0; f < 4; ++f)
+  {
+    const int32_t j = nb[4 * static_cast<size_t>(t) + f];
+    if (j < 0)
+    {
+      continue;
+    }
+    bool match = static_cast<size_t>(j) < n && static_cast<uint32_t>(j) != t;
+    for (int v = 0; v < 4 && match; ++v) // face f is opposite vertex f
+    {
+      match = v == f || HasPointAt(m, cells, static_cast<uint32_t>(j), cells(t, v));
+    }
+    if (!match)
+    {
+      return false;
+    }
+  }
+  return true;
+}
 } // namespace
 
 bool FaceNeighborsMatch(const TetMesh& m, const std::vector<int32_t>& nb)
@@ -94,27 +118,17 @@ bool FaceNeighborsMatch(const TetMesh& m, const std::vector<int32_t>& nb)
   }
   const TetCells cells = m.Cells();
   std::atomic<bool> ok(true);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType t = begin; t < end && ok.load(std::memory_order_relaxed); ++t)
-    {
-      for (int f = 0; f < 4; ++f)
+  // on threads even under ParaView's Sequential default (psi::Parallel)
+  Parallel([&] {
+    vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType t = begin; t < end && ok.load(std::memory_order_relaxed); ++t)
       {
-        const int32_t j = nb[4 * t + f];
-        if (j < 0)
-        {
-          continue;
-        }
-        bool match = static_cast<size_t>(j) < n && j != t;
-        for (int v = 0; v < 4 && match; ++v) // face f is opposite vertex f
-        {
-          match = v == f || HasPointAt(m, cells, static_cast<uint32_t>(j), cells(t, v));
-        }
-        if (!match)
+        if (!NeighborsMatchAt(m, cells, nb, static_cast<uint32_t>(t)))
         {
           ok = false;
         }
       }
-    }
+    });
   });
   return ok;
 }

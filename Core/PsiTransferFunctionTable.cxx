@@ -5,7 +5,6 @@
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace psi
 {

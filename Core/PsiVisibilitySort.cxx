@@ -5,7 +5,6 @@
 #include "vtkSMPTools.h"
 
 #include <cstring>
-#include <string>
 
 namespace psi
 {

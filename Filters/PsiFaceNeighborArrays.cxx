@@ -1,5 +1,6 @@
 #include "PsiFaceNeighborArrays.h"
 
+#include "PsiParallel.h"
 #include "PsiTetConnectivity.h"
 
 #include "vtkCellData.h"
@@ -18,8 +19,14 @@ size_t AddFaceNeighborArrays(
   const vtkIdType numTets = static_cast<vtkIdType>(connectivity.size() / 4);
   std::vector<uint32_t> tets32(connectivity.begin(), connectivity.end());
   std::vector<int32_t> neighbors;
-  const psi::TetConnectivityResult conn = psi::ComputeTetNeighbors(
-    tets32.data(), static_cast<size_t>(numTets), static_cast<size_t>(numPoints), neighbors);
+  psi::TetConnectivityResult conn;
+  std::vector<uint8_t> flags;
+  // on threads even under ParaView's Sequential default (psi::Parallel)
+  psi::Parallel([&] {
+    conn = psi::ComputeTetNeighbors(
+      tets32.data(), static_cast<size_t>(numTets), static_cast<size_t>(numPoints), neighbors);
+    flags = psi::BoundaryFaceFlags(neighbors);
+  });
 
   vtkNew<vtkIntArray> faceNeighbors;
   faceNeighbors->SetName("FaceNeighbors");
@@ -28,7 +35,6 @@ size_t AddFaceNeighborArrays(
   std::copy(neighbors.begin(), neighbors.end(), faceNeighbors->GetPointer(0));
   cellData->AddArray(faceNeighbors);
 
-  const std::vector<uint8_t> flags = psi::BoundaryFaceFlags(neighbors);
   vtkNew<vtkUnsignedCharArray> boundary;
   boundary->SetName("BoundaryFaces");
   boundary->SetNumberOfTuples(numTets);

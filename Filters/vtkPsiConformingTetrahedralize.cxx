@@ -4,6 +4,7 @@
 #include "PsiConformingDiagonals.h"
 #include "PsiFaceNeighborArrays.h"
 #include "PsiOrientedTetrahedra.h"
+#include "PsiParallel.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -78,15 +79,18 @@ vtkSmartPointer<vtkPoints> InputPoints(vtkDataSet* input)
   return points;
 }
 
-// The coordinates of `points` as doubles, 3 per point, for the exact orientation predicate.
+// The coordinates of `points` as doubles, 3 per point, for the exact orientation predicate; on
+// threads even under ParaView's Sequential default (psi::Parallel).
 std::vector<double> DoubleCoordinates(vtkPoints* points, vtkIdType numPoints)
 {
   std::vector<double> xyz(3 * static_cast<size_t>(numPoints));
-  vtkSMPTools::For(0, numPoints, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      points->GetPoint(i, xyz.data() + 3 * i);
-    }
+  psi::Parallel([&] {
+    vtkSMPTools::For(0, numPoints, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        points->GetPoint(i, xyz.data() + 3 * i);
+      }
+    });
   });
   return xyz;
 }

@@ -1,14 +1,13 @@
 #include "PsiAdaptiveNodes.h"
 
+#include "PsiLookupTextures.h"
 #include "PsiTetMesh.h"
 #include "PsiTransferFunctionTable.h"
-#include "PsiTransferTextures.h"
 
 #include "vtkObject.h"
 #include "vtkShaderProgram.h"
 #include "vtkVolumeProperty.h"
 
-#include <algorithm>
 #include <vector>
 
 bool PsiAdaptiveNodes::NeedsUpdate(const PsiTableSources& in) const

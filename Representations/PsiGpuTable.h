@@ -1,9 +1,11 @@
-// PsiGpuTable: the interface of every table the shaders read (a texture, or an array of
-// uniforms), in the manner of VTK's vtkOpenGLVolumeLookupTable: NeedsUpdate and Update from one
-// frame's sources, Activate (bind, and set the uniforms the table's GLSL declares), Deactivate and
-// ReleaseGraphicsResources, with one signature for all. The frame plan names the tables a frame
-// reads (PsiFramePlan::Tables), and the mapper updates, activates and deactivates exactly those
-// (psi::UpdateTables, psi::ActivateTables, psi::DeactivateTables).
+// PsiGpuTable: the interface of every GPU table, what the shaders read besides the mesh: a
+// lookup texture (PsiLookupTexture, which owns its texture, and the four of PsiLookupTextures.h)
+// or an array of uniforms (PsiAdaptiveNodes). As in VTK's vtkOpenGLVolumeLookupTable:
+// NeedsUpdate and Update from one frame's sources, Activate (bind, and set the uniforms the
+// table's GLSL declares), Deactivate and ReleaseGraphicsResources, with one signature for all.
+// The frame plan names the tables a frame reads (PsiFramePlan::Tables), and the mapper updates,
+// activates and deactivates exactly those (psi::UpdateTables, psi::ActivateTables,
+// psi::DeactivateTables).
 #ifndef PsiGpuTable_h
 #define PsiGpuTable_h
 

@@ -9,7 +9,6 @@
 #include "vtkTextureObject.h"
 #include "vtkCellArray.h"
 #include "vtkPoints.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 #include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 

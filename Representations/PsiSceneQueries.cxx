@@ -1,5 +1,7 @@
 #include "PsiSceneQueries.h"
 
+#include "vtkRenderWindow.h"
+
 #include "vtkMath.h"
 #include "vtkProp.h"
 #include "vtkPropCollection.h"
@@ -57,3 +59,7 @@ bool psi::SceneHasTranslucentGeometry(vtkRenderer* ren)
   return AnyProp(ren, nullptr, false);
 }
 
+bool psi::IsInteractiveRender(vtkRenderWindow* win)
+{
+  return win && win->GetDesiredUpdateRate() > 1.0;
+}

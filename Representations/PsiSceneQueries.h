@@ -5,6 +5,7 @@
 #ifndef PsiSceneQueries_h
 #define PsiSceneQueries_h
 
+class vtkRenderWindow;
 class vtkRenderer;
 class vtkVolume;
 
@@ -18,6 +19,10 @@ bool OpaqueGeometryOverlaps(vtkRenderer* ren, vtkVolume* vol);
 bool SceneHasOpaqueGeometry(vtkRenderer* ren);
 /// Whether any visible prop other than volumes has translucent geometry.
 bool SceneHasTranslucentGeometry(vtkRenderer* ren);
+/// Whether `win` draws an interactive frame (the camera moving): ParaView's render view asks for
+/// 5 frames per second during interactive renders (vtkPVRenderView::InteractiveRender) and for
+/// 0.002 during still ones (StillRender, which screenshots use), in 5.11, 5.13 and 6.1 alike.
+bool IsInteractiveRender(vtkRenderWindow* win);
 }
 
 #endif

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 PsiFrameCamera PsiFrameCamera::FromRenderer(
   vtkRenderer* ren, vtkVolume* vol, const double shift[3])

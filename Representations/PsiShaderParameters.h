@@ -1,13 +1,11 @@
 // PsiShaderParameters: the camera of one frame and the uniforms that do not belong to a GPU
-// table (those are set by each table's Activate, PsiTransferTextures): camera matrices,
-// isosurfaces with the scene's lights, adaptive-sampling nodes. One named step per concern, as
+// table (those are set by each table's Activate, PsiGpuTable.h): camera matrices, pixel rays,
+// isosurfaces with the scene's lights. One named step per concern, as
 // vtkOpenGLGPUVolumeRayCastMapper's SetCameraShaderParameters and its siblings.
 #ifndef PsiShaderParameters_h
 #define PsiShaderParameters_h
 
 #include "PsiIsosurfaceList.h"
-
-#include <vector>
 
 class vtkRenderer;
 class vtkShaderProgram;
@@ -64,7 +62,5 @@ struct PsiIsosurfaceStyle
 void SetIsosurfaceShaderParameters(vtkShaderProgram* program, const psi::IsosurfaceList& list,
   const double scalarRange[2], const PsiIsosurfaceStyle& style, vtkVolumeProperty* property,
   vtkRenderer* ren, const PsiFrameCamera& camera);
-
-/// tfNodes, tfNodeCount: where adaptive sampling splits segments.
 
 #endif

@@ -4,8 +4,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkPsiVolumeRepresentation.h"
 
-#include <algorithm>
-
 vtkStandardNewMacro(vtkPsiFrameStatsInformation);
 
 vtkPsiFrameStatsInformation::vtkPsiFrameStatsInformation()

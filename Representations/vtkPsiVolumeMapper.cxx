@@ -10,11 +10,12 @@
 #include "PsiMeshBuffers.h"
 #include "PsiProjectionClasses.h"
 #include "PsiRenderTarget.h"
+#include "PsiSceneQueries.h"
 #include "PsiShaderComposer.h"
 #include "PsiShaderParameters.h"
 #include "PsiTransferFunctionAnalysis.h"
 #include "PsiTransferFunctionTable.h"
-#include "PsiTransferTextures.h"
+#include "PsiLookupTextures.h"
 #include "PsiVisibilityOrder.h"
 
 #include "vtkCellData.h"
@@ -173,6 +174,10 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     this->Stats.LastSortCycles = static_cast<vtkIdType>(I.Order.GetLastCycles());
   }
   this->Stats.LastRenderSeconds = SecondsSince(t0);
+  if (!psi::IsInteractiveRender(renWin))
+  {
+    this->LastStillSeconds = this->Stats.LastRenderSeconds;
+  }
 }
 
 // Starts sorting on a worker thread when the view or the mesh changed (the draw streams the

@@ -13,7 +13,7 @@
  *  - PlanFrame (PsiFramePlan.h): what the scene calls for, from the settings (psi::Settings,
  *    Core/PsiSettings.h) and the scene's facts, with no GL call: the features and the tables
  *    they read;
- *  - PsiTransferTextures, PsiAdaptiveNodes: transfer function, opacity prefix, Psi and
+ *  - PsiLookupTextures, PsiAdaptiveNodes: transfer function, opacity prefix, Psi and
  *    pre-integration tables, adaptive nodes, each a PsiGpuTable;
  *  - psi::ComposeShaders: the program for the plan's features;
  *  - PsiRenderTarget: scene depth copies, the float target, the composite over the scene.
@@ -167,6 +167,9 @@ public:
   /// Cycles MPVONC had to break in the last sort.
   vtkIdType GetLastSortCycles() const { return this->Stats.LastSortCycles; }
   double GetLastRenderSeconds() const { return this->Stats.LastRenderSeconds; }
+  /// Seconds of the last still (not interactive, psi::IsInteractiveRender) frame: what 'Auto'
+  /// interaction weighs against the budget (psi::UsesVolumeLOD).
+  vtkGetMacro(LastStillSeconds, double);
   /// Testing aid, off by default: record the tetrahedra in the order each frame streams them to
   /// the GPU (GetLastDrawOrder; 4 bytes per tetrahedron).
   void SetRecordDrawOrder(bool on);
@@ -204,6 +207,7 @@ protected:
   bool LastUsedAdaptiveSampling = false;
   int LastNumberOfAdaptiveNodes = 0;
   std::string LastFeatureDefines;
+  double LastStillSeconds = 0;
 
 private:
   vtkPsiVolumeMapper(const vtkPsiVolumeMapper&) = delete;

@@ -11,7 +11,7 @@
 #include "PsiGeometryProjector.h"
 #include "PsiMeshBuffers.h"
 #include "PsiRenderTarget.h"
-#include "PsiTransferTextures.h"
+#include "PsiLookupTextures.h"
 #include "PsiVisibilityOrder.h"
 
 #include <string>
@@ -20,7 +20,7 @@ struct vtkPsiVolumeMapper::Internals
 {
   PsiMeshBuffers Mesh;
   PsiVisibilityOrder Order;
-  PsiTransferTables Tables;
+  PsiLookupTextureSet Tables;
   PsiRenderTarget Target;
   PsiGeometryProjector Geometry;
   PsiComputeProjector Compute;

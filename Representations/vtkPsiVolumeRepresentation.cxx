@@ -1,9 +1,13 @@
 #include "vtkPsiVolumeRepresentation.h"
 
+#include "PsiLODVolume.h"
+#include "PsiVolumeLOD.h"
+
 #include "vtkDataSet.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkPsiConformingTetrahedralize.h"
 #include "vtkPsiVolumeMapper.h"
 #include "vtkUnsignedCharArray.h"
@@ -39,7 +43,14 @@ bool HasNonTetrahedra(vtkDataSet* data)
 vtkStandardNewMacro(vtkPsiVolumeRepresentation);
 
 vtkPsiVolumeRepresentation::vtkPsiVolumeRepresentation()
+  : LOD(new PsiVolumeLOD)
 {
+  // the actor whose low level of detail may be a volume (PsiLODVolume)
+  vtkNew<PsiLODVolume> actor;
+  actor->SetProperty(this->Property);
+  actor->SetLODMapper(this->LODMapper.GetPointer());
+  actor->SetVisibility(this->Actor->GetVisibility());
+  this->Actor = actor;
   this->AddVolumeMapper(MapperName, this->PsiMapper);
   this->Superclass::SetActiveVolumeMapper(MapperName);
 }
@@ -205,6 +216,26 @@ void vtkPsiVolumeRepresentation::SetAdaptiveSampling(int mode)
 int vtkPsiVolumeRepresentation::GetAdaptiveSampling()
 {
   return this->PsiMapper->GetAdaptiveSampling();
+}
+
+void vtkPsiVolumeRepresentation::SetInteractionMode(int mode)
+{
+  this->Forward(&vtkPsiVolumeMapper::SetInteractionMode, mode);
+}
+
+int vtkPsiVolumeRepresentation::GetInteractionMode()
+{
+  return this->PsiMapper->GetInteractionMode();
+}
+
+void vtkPsiVolumeRepresentation::SetInteractiveBudget(double seconds)
+{
+  this->Forward(&vtkPsiVolumeMapper::SetInteractiveBudget, seconds);
+}
+
+double vtkPsiVolumeRepresentation::GetInteractiveBudget()
+{
+  return this->PsiMapper->GetInteractiveBudget();
 }
 
 double vtkPsiVolumeRepresentation::GetLastPreIntegrationSeconds()

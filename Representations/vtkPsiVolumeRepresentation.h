@@ -19,8 +19,11 @@
 #include "vtkNew.h"
 #include "vtkUnstructuredGridVolumeRepresentation.h"
 
+#include <memory>
+
 class vtkPsiConformingTetrahedralize;
 class vtkPsiVolumeMapper;
+class PsiVolumeLOD;
 
 class PSIVOLUMEREPRESENTATIONS_EXPORT vtkPsiVolumeRepresentation
   : public vtkUnstructuredGridVolumeRepresentation
@@ -85,6 +88,29 @@ public:
   ///@}
 
   ///@{
+  /// What an interactive render (the camera moving) draws: psi::InteractionModes (0 'Auto': the
+  /// volume level of detail when the last still frame took longer than InteractiveBudget
+  /// seconds; 1 'Volume LOD': always; 2 'ParaView surface': ParaView's own surface level of detail
+  /// past its LODThreshold; 3 'Full frame': never a level of detail). The level of detail is a
+  /// volume (PsiVolumeLOD): this process's piece resampled on a coarse lattice, drawn by VTK's GPU
+  /// ray caster with the same color map, opacity function and unit distance. Still renders and
+  /// screenshots are always the full frame.
+  void SetInteractionMode(int mode);
+  int GetInteractionMode();
+  void SetInteractiveBudget(double seconds);
+  double GetInteractiveBudget();
+  /// What drew the last interactive frame: psi::InteractiveImages (-1 no interactive frame yet).
+  vtkGetMacro(LastInteractiveImage, int);
+  /// Seconds the last interactive frame's volume took to draw on this process.
+  double GetLastInteractiveSeconds();
+  /// Seconds the last build of the volume level of detail took (0: never built).
+  double GetLODBuildSeconds();
+  ///@}
+
+  int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
+    vtkInformation* outInfo) override;
+
+  ///@{
   /// Read-outs of the last frame (information properties of the proxy).
   vtkIdType GetNumberOfTetrahedra();
   vtkIdType GetNumberOfSkippedCells();
@@ -106,9 +132,20 @@ protected:
   /// mapper for empty input; its read-outs are reset here instead.
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  /// Chooses what this render draws while the camera moves, and builds the level of detail when
+  /// it is stale (vtkPsiVolumeRepresentationInteraction.cxx).
+  void ChooseInteractiveImage(vtkInformation* inInfo);
+  bool UpdateVolumeLOD(vtkInformation* inInfo);
+  void InstallLODMapper(bool volume);
+
   vtkNew<vtkPsiVolumeMapper> PsiMapper;
   vtkNew<vtkPsiConformingTetrahedralize> Conforming;
   bool TetrahedralizeInput = false;
+#ifndef __VTK_WRAP__
+  std::unique_ptr<PsiVolumeLOD> LOD;
+#endif
+  bool VolumeLODInstalled = false;
+  int LastInteractiveImage = -1;
 
 private:
   vtkPsiVolumeRepresentation(const vtkPsiVolumeRepresentation&) = delete;

@@ -44,7 +44,6 @@ vec3 viewPointAt(float depth)
 //PSI::IsoShade::Dec
 //PSI::IsoTriangles::Dec
 //PSI::IsoPerFragment::Dec
-//PSI::Adaptive::Dec
 //PSI::SegmentSplit::Dec
 //PSI::DepthPeel::Dec
 

@@ -29,6 +29,10 @@ paraview_add_client_server_tests(PREFIX PsiGUI.ClientServer ${psi_panel_args}
   ENVIRONMENT OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
               OMPI_MCA_rmaps_base_oversubscribe=1)
 
+# The project's Python package on PYTHONPATH, as for every test that runs ParaView (appended:
+# ParaView's functions set these tests' ENVIRONMENT, the MPI variables above).
+set_property(TEST PsiGUI.PsiVolumePanel PsiGUI.ClientServer.PsiVolumePanel APPEND PROPERTY
+  ENVIRONMENT "${PSI_PYTHONPATH}")
 set_tests_properties(PsiGUI.PsiVolumePanel PsiGUI.ClientServer.PsiVolumePanel PROPERTIES
   LABELS "GUI"
   TIMEOUT 240

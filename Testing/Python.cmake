@@ -10,13 +10,13 @@ foreach (name IN ITEMS plugin_basics properties render_command vector_coloring m
 endforeach ()
 # The separate opacity array and translucent geometry with the compute projector too.
 foreach (name IN ITEMS separate_opacity translucent_geometry)
-  psi_add_python_test(${name}.compute SCRIPT ${name} ENVIRONMENT "PSI_PROJECTOR=compute")
+  psi_add_python_test(${name}.compute SCRIPT ${name} ARGS --projector compute)
 endforeach ()
 
 psi_add_python_test(isosurfaces
   ENVIRONMENT "PSI_TEST_OUTPUT=${CMAKE_BINARY_DIR}/Testing/Images")
 
-# The accuracy report (Python/psi_accuracy.py) on a small scene: outputs, one row per method,
+# The accuracy report (psivolume.accuracy) on a small scene: outputs, one row per method,
 # finite errors, the reference against itself. About 30 s on an idle machine; the timeout allows
 # for a loaded one (it starts a child pvpython).
 psi_add_python_test(accuracy_report TIMEOUT 240
@@ -43,7 +43,7 @@ if (PVBATCH_EXECUTABLE AND MPIEXEC_EXECUTABLE)
     COMMAND "${MPIEXEC_EXECUTABLE}" --allow-run-as-root -n 2 "${PVBATCH_EXECUTABLE}"
             --force-offscreen-rendering "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_mpi.py")
   set_tests_properties(PsiPython.mpi PROPERTIES
-    ENVIRONMENT "PSI_PLUGIN=$<TARGET_FILE:PsiVolume>;PSI_PVBATCH=${PVBATCH_EXECUTABLE};OMPI_MCA_rmaps_base_oversubscribe=1"
+    ENVIRONMENT "PSI_PLUGIN=$<TARGET_FILE:PsiVolume>;${PSI_PYTHONPATH};PSI_PVBATCH=${PVBATCH_EXECUTABLE};OMPI_MCA_rmaps_base_oversubscribe=1"
     SKIP_RETURN_CODE 77
     TIMEOUT 240
     RUN_SERIAL ON)
@@ -60,3 +60,7 @@ if (PVSERVER_EXECUTABLE AND MPIEXEC_EXECUTABLE)
 else ()
   message(STATUS "pvserver or mpiexec not found: PsiPython.pvserver is not registered")
 endif ()
+
+# While the camera moves: the volume level of detail chosen by mode and budget, never in still
+# renders or screenshots, close to the full frame; rebuilt for new arrays and data; hard inputs.
+psi_add_python_test(interaction TIMEOUT 300)

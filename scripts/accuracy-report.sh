@@ -8,7 +8,8 @@
 #                                   [--size 384] [--frames 3] [--no-paraview]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+. "$root/scripts/lib/python-path.sh"
 bash "$root/scripts/setup-deps.sh"
 bash "$root/scripts/build.sh" >/dev/null
 xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" pvpython --force-offscreen-rendering \
-  "$root/Python/psi_accuracy.py" "$@"
+  -m psivolume.accuracy "$@"

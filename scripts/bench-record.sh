@@ -7,6 +7,7 @@
 # Notes on a record (what the figures say) go below its output by hand; the page is never edited.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+. "$root/scripts/lib/python-path.sh"
 name=${1:?usage: bench-record.sh NAME [--title TITLE] -- COMMAND...}
 shift
 title=""
@@ -40,8 +41,11 @@ seconds=$((SECONDS - start))
 cpu=$(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -n1)
 os=$(. /etc/os-release && echo "$PRETTY_NAME")
 pv=$(pvpython --version 2>/dev/null | head -n1 || true)
+# the benchmark's file: a module of the package run with -m, else the first file the command names
+benchmark=$(echo "$cmd" | sed -nE 's#.*-m (psivolume[A-Za-z0-9_.]*).*#Python/\1.py#p' | sed 's#\.#/#g; s#/py$#.py#')
+[ -n "$benchmark" ] || benchmark=$(echo "$cmd" | grep -oE '(Benchmarks|Python|scripts|build/bin)/[A-Za-z0-9_./-]+' | head -n1)
 {
-  echo "benchmark: $(echo "$cmd" | grep -oE '(Benchmarks|Python|scripts|build/bin)/[A-Za-z0-9_./-]+' | head -n1)"
+  echo "benchmark: $benchmark"
   echo "title: ${title:-$cmd}"
   echo "date: $(date -u +%Y-%m-%d)"
   echo "machine: $os; $cpu; $(nproc) cores; $(free -g | awk '/^Mem:/ {print $2}') GB"

@@ -21,7 +21,7 @@ SECTIONS = [
     ("Benchmarks/bench_moreland_table.py", "Moreland's Table 6.4 side by side"),
     ("scripts/accuracy-report.sh", "accuracy against time, every method and ParaView's mappers"),
     ("Benchmarks/bench_integration.py", "what accuracy costs in time, per method"),
-    ("Python/psi_accuracy.py", "adaptive sampling on coarse meshes"),
+    ("Python/psivolume/accuracy.py", "adaptive sampling on coarse meshes"),
     ("Benchmarks/bench_mappers.py", "against ParaView's mappers, with image errors"),
     ("Benchmarks/bench_features.py", "isosurfaces and adaptive sampling"),
     ("Benchmarks/bench_threads.py", "where a frame's time goes, thread by thread"),

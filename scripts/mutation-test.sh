@@ -3,4 +3,6 @@
 # copy of the tree, rebuilds incrementally, runs the tests named for it, prints the table and the
 # score, exits non-zero below 95%. Options: --list, --check, --only NAME..., --jobs N,
 # --timeout S, --workdir DIR (see scripts/mutation_test.py).
-exec python3 "$(dirname "$0")/mutation_test.py" "$@"
+root=$(cd "$(dirname "$0")/.." && pwd)
+. "$root/scripts/lib/python-path.sh"
+exec python3 "$root/scripts/mutation_test.py" "$@"

@@ -30,9 +30,9 @@ import subprocess
 import sys
 import time
 
+from mutations import MUTATIONS  # this folder's list of mutations
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT / "scripts"))
-from mutations import MUTATIONS  # noqa: E402
 
 THRESHOLD = 0.95
 SKIP_DIRS = {".git", "__pycache__"}

@@ -188,6 +188,15 @@ MUTATIONS = [
     Mutation("settings_auto_isosurfaces_ignore_discard", "Core/PsiSettings.cxx",
              "(s.IsosurfaceMethod == IsosurfaceMethods::Auto && s.EarlyDiscard && zeroOpacity)",
              "(s.IsosurfaceMethod == IsosurfaceMethods::Auto && zeroOpacity)", ["PsiCore.Settings"]),
+    # --- Interaction (Representations/vtkPsiVolumeRepresentationInteraction.cxx, PsiVolumeLOD).
+    Mutation("lod_in_still_renders", "Representations/vtkPsiVolumeRepresentationInteraction.cxx",
+             "const bool interactive = view && psi::IsInteractiveRender(view->GetRenderWindow()) &&",
+             "const bool interactive = view &&", ["PsiPython.interaction"]),
+    Mutation("lod_never_rebuilt", "Representations/PsiVolumeLOD.cxx",
+             "piece == this->Piece && piece->GetMTime() == this->PieceTime &&",
+             "true ||", ["PsiPython.interaction"]),
+    Mutation("lod_outside_not_hidden", "Representations/PsiVolumeLOD.cxx",
+             "    if (mask->GetTuple1(i) == 0)", "    if (false)", ["PsiPython.interaction"]),
     # --- Translucent geometry with depth peeling for volumes (Representations/PsiDepthPeelingCalls,
     # PsiRenderTarget).
     Mutation("peeling_stages_ignored", "Representations/PsiDepthPeelingCalls.cxx",

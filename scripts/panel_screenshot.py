@@ -1,17 +1,15 @@
 """Run inside the paraview client (paraview --script=...): sets up the scene the README's panel
 screenshot shows, then writes the file named by PSI_SCREENSHOT_READY so that
-scripts/readme-images.sh knows the window is ready to be grabbed. The client runs the script
-without __file__: PSI_SOURCE_DIR names the checkout."""
+scripts/readme-images.sh knows the window is ready to be grabbed. The project's package comes
+from PYTHONPATH (scripts/readme-images.sh sets it)."""
 import os
-import sys
 
 from paraview import simple
 
-sys.path.insert(0, os.path.join(os.environ["PSI_SOURCE_DIR"], "Python"))
-import psi_data  # noqa: E402
+from psivolume import data
 
-psi_data.load_plugin(globals())
-mesh, array = psi_data.wavelet(10)
+data.load_plugin(globals())
+mesh, array = data.wavelet(10)
 simple.RenameSource("Wavelet, tetrahedralized", mesh)
 view = simple.GetActiveViewOrCreate("RenderView")
 d = simple.Show(mesh, view)

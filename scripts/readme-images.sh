@@ -10,6 +10,7 @@
 #   bash scripts/readme-images.sh [--panel-only]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+. "$root/scripts/lib/python-path.sh"
 . "$root/scripts/lib/paraview-versions.sh"
 bash "$root/scripts/build.sh" >/dev/null
 if [ "${1:-}" != "--panel-only" ]; then
@@ -26,7 +27,7 @@ xvfb=$!
 sleep 2
 series=$(installed_paraview_series)
 plugin_dir="$root/build/lib/paraview-$series/plugins/PsiVolume"
-DISPLAY=$display PSI_SOURCE_DIR="$root" PSI_SCREENSHOT_READY="$work/ready" paraview -geometry 1400x1900+0+0 --dr \
+DISPLAY=$display PSI_SCREENSHOT_READY="$work/ready" paraview -geometry 1400x1900+0+0 --dr \
   --plugin-search-paths="$plugin_dir" --script="$root/scripts/panel_screenshot.py" \
   >"$work/client.log" 2>&1 &
 client=$!

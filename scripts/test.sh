@@ -20,6 +20,7 @@
 # sockets with the host, so in-system.sh starts each system's numbers elsewhere.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+. "$root/scripts/lib/python-path.sh"
 paraview=""
 only=""
 ctest_args=()
@@ -38,7 +39,7 @@ fi
 bash "$root/scripts/setup-deps.sh"
 bash "$root/scripts/build.sh"
 # pvpython 5.13+ loses buffered output when a script leaves through os._exit into a pipe
-# (Python/psi_process.py): unbuffered, a failing test's check lines reach the log.
+# (psivolume.process): unbuffered, a failing test's check lines reach the log.
 export PYTHONUNBUFFERED=1
 cd "${PSI_BUILD_DIR:-$root/build}"
 mapfile -t tests < <(ctest -N | sed -n 's/^ *Test *#[0-9]*: //p' | grep -E -- "${only:-.}" || true)

@@ -1,15 +1,13 @@
 """Converts an X window dump (XWD, as Xvfb -fbdir keeps its screen) of 32 bits per pixel to PNG,
-with the project's PNG writer (psi_accuracy_plots.write_png, VTK's): pvpython
+with the project's PNG writer (psivolume.testing.write_png, VTK's): pvpython
 scripts/xwd_to_png.py SCREEN.xwd OUT.png [WIDTH HEIGHT] (crops to the top-left WIDTH x HEIGHT when
 given)."""
-import os
 import struct
 import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
-from psi_accuracy_plots import write_png  # noqa: E402
+from psivolume.testing import write_png
 
 
 def read_xwd(path):

@@ -1,4 +1,4 @@
-"""The accuracy report (Python/psi_accuracy.py, scripts/accuracy-report.sh) on a small scene:
+"""The accuracy report (psivolume.accuracy, scripts/accuracy-report.sh) on a small scene:
 its outputs exist, its table has a row per integration method (adaptive sampling off and on)
 with finite errors, ParaView's 'Projected tetra' has a row (measured, or the reason it is not),
 the reference agrees with itself (error 0 between two runs), partial pre-integration is
@@ -10,19 +10,15 @@ import math
 import os
 import shutil
 import subprocess
-import sys
 import tempfile
 
-here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(here, "..", "..", "Python"))
-import psi_accuracy  # noqa: E402
-import psi_testing  # noqa: E402
-from paraview import simple  # noqa: E402
+from paraview import simple
 
-checks = psi_testing.Checks("accuracy_report")
+from psivolume import accuracy, data, testing, timing
+
+checks = testing.Checks("accuracy_report")
 out = tempfile.mkdtemp(prefix="psi_accuracy_test_")
-cmd = [psi_accuracy.find_pvpython(), "--force-offscreen-rendering",
-       os.path.join(here, "..", "..", "Python", "psi_accuracy.py"),
+cmd = [timing.pvpython(), "--force-offscreen-rendering", "-m", "psivolume.accuracy",
        "--wavelet-half", "3", "--size", "96", "--frames", "1", "--out", out,
        "--paraview-mappers", "Projected tetra", "--budget", "10"]
 p = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
@@ -38,7 +34,7 @@ if not os.path.exists(os.path.join(out, "report.json")):
 with open(os.path.join(out, "report.json")) as f:
     rows = {r["name"]: r for r in json.load(f)["rows"]}
 md = open(os.path.join(out, "report.md")).read()
-psi_accuracy.psi_data.load_plugin(globals())
+data.load_plugin(globals())
 # The methods as the plugin offers them (the IntegrationMethod enumeration).
 view = simple.CreateRenderView()
 rep = simple.Show(simple.Tetrahedralize(Input=simple.Wavelet(WholeExtent=[0, 1, 0, 1, 0, 1])),
@@ -67,7 +63,7 @@ checks.check("interleaved rounds" in md, "report.md says how the rounds ended")
 r = rows.get("ParaView Projected tetra")
 checks.check(r is not None and (r["mean"] is not None or r["note"]),
              "row for ParaView Projected tetra (measured, or why not): %s" % r)
-ref = rows.get(psi_accuracy.REFERENCE)
+ref = rows.get(accuracy.REFERENCE)
 checks.check(ref is not None and ref["mean"] == 0 and ref["max"] == 0,
              "the reference agrees with itself: %s" % ref)
 ppi = rows.get("Partial Pre-Integration")

@@ -15,25 +15,24 @@ import sys
 import tempfile
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
-import numpy as np  # noqa: E402
-import psi_data  # noqa: E402
-import psi_testing  # noqa: E402
-from paraview import simple  # noqa: E402
-from vtkmodules.util.misc import calldata_type  # noqa: E402
-from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray  # noqa: E402
-from vtkmodules.util.vtkConstants import VTK_STRING  # noqa: E402
-from vtkmodules.vtkCommonCore import vtkCommand, vtkOutputWindow  # noqa: E402
-from vtkmodules.vtkCommonDataModel import (  # noqa: E402
+import numpy as np
+from paraview import simple
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray
+from vtkmodules.util.vtkConstants import VTK_STRING
+from vtkmodules.vtkCommonCore import vtkCommand, vtkOutputWindow
+from vtkmodules.vtkCommonDataModel import (
     VTK_HEXAHEDRON, VTK_TETRA, VTK_WEDGE, vtkCellArray, vtkUnstructuredGrid)
-from vtkmodules.vtkCommonCore import vtkPoints  # noqa: E402
+from vtkmodules.vtkCommonCore import vtkPoints
 
-DATA = os.environ.get("PSI_DATA_DIR") or psi_data.SHARED_DATA
+from psivolume import data, testing
+
+DATA = os.environ.get("PSI_DATA_DIR") or data.SHARED_DATA
 BG = [0.0, 0.0, 0.0]
 SIZE = 200
 CASE_TIMEOUT = 240  # seconds; a hang prints every thread's stack and fails
 
-t = psi_testing.Checks("test_bad_input")
+t = testing.Checks("test_bad_input")
 
 
 # ---------------------------------------------------------------- messages of VTK's output window
@@ -179,7 +178,7 @@ def render_only(view, display, all_displays):
     for d in all_displays:
         d.Visibility = 1 if d is display else 0
     simple.Render(view)
-    return psi_testing.grab(view)
+    return testing.grab(view)
 
 
 def info(display):
@@ -196,7 +195,7 @@ def diff(a, b):
 def check_image(img, what, min_cover=0.05):
     finite = bool(np.isfinite(img).all())
     t.check(finite, "%s: image values are finite" % what)
-    cov = psi_testing.covered(img, BG)
+    cov = testing.covered(img, BG)
     t.check(cov >= min_cover * SIZE * SIZE, "%s: image not empty (%d of %d pixels covered, need "
             ">= %.0f%%)" % (what, cov, SIZE * SIZE, 100 * min_cover))
     return cov
@@ -205,7 +204,7 @@ def check_image(img, what, min_cover=0.05):
 def need(path):
     if not os.path.exists(path):
         print("SKIP: %s is absent (the shared data of ../shared/data, see its MANIFEST.md)" % path)
-        psi_testing.exit_now(psi_testing.SKIP)
+        testing.exit_now(testing.SKIP)
 
 
 # ---------------------------------------------------------------- cases
@@ -256,7 +255,7 @@ def case_surface():
     simple.Render(view)
     view.ResetCamera()
     simple.Render(view)
-    img = psi_testing.grab(view)
+    img = testing.grab(view)
     ntets, skipped = info(d)
     msgs = MSG.since(m)
     for s in msgs:
@@ -264,7 +263,7 @@ def case_surface():
     t.check(ntets == 0, "surface: no tetrahedra drawn (%d)" % ntets)
     t.check(skipped > 0, "surface: NumberOfSkippedCells reports the %d surface cells (%d)"
             % (ncells, skipped))
-    cov = psi_testing.covered(img, BG)
+    cov = testing.covered(img, BG)
     explained = [s for s in msgs if "skipped" in s.lower() or "no 3d" in s.lower()
                  or "no volume cells" in s.lower()
                  or "tetrahedr" in s.lower()]
@@ -401,7 +400,7 @@ def case_empty():
     p = box_points(3)
     pointsonly = make_grid(p, np.zeros((0, 4), dtype=np.int64), point_scalars=field(p))
     # A real pipeline producing nothing: a threshold that selects no cell.
-    src, arr = psi_data.wavelet(5)
+    src, arr = data.wavelet(5)
     thr = simple.Threshold(Input=src, Scalars=["POINTS", arr])
     thr.LowerThreshold = 1e6
     thr.UpperThreshold = 2e6
@@ -414,11 +413,11 @@ def case_empty():
         simple.ColorBy(d, ("POINTS", arrname))
         d.SetRepresentationType("Psi Volume")
         simple.Render(view)
-        img = psi_testing.grab(view)
+        img = testing.grab(view)
         ntets, skipped = info(d)
         errs = MSG.since(m, "ErrorEvent")
         t.check(not errs, "%s: no error%s" % (name, (": " + short(errs[0])) if errs else ""))
-        t.check(psi_testing.covered(img, BG) == 0 and np.isfinite(img).all(),
+        t.check(testing.covered(img, BG) == 0 and np.isfinite(img).all(),
                 "%s: the frame is the background" % name)
         t.check(ntets == 0 and skipped == 0, "%s: 0 tetrahedra, 0 skipped (%d, %d)"
                 % (name, ntets, skipped))
@@ -436,7 +435,7 @@ def case_empty():
     view.ResetCamera()
     simple.Render(view)
     _, skipped = info(d)
-    before = psi_testing.covered(psi_testing.grab(view), BG)
+    before = testing.covered(testing.grab(view), BG)
     t.check(skipped == len(tets[::7]) and before > 0, "NaN cells before emptying: %d skipped, %d "
             "pixels covered" % (skipped, before))
     empty2 = make_grid(np.zeros((0, 3)), np.zeros((0, 4), dtype=np.int64),
@@ -445,9 +444,9 @@ def case_empty():
     tp.MarkModified(tp)
     tp.UpdatePipeline()
     simple.Render(view)
-    img = psi_testing.grab(view)
+    img = testing.grab(view)
     ntets, skipped = info(d)
-    t.check(psi_testing.covered(img, BG) == 0, "input emptied: the frame is the background")
+    t.check(testing.covered(img, BG) == 0, "input emptied: the frame is the background")
     t.check(ntets == 0, "input emptied: NumberOfTetrahedra is 0 (%d)" % ntets)
     t.check(skipped == 0, "input emptied: NumberOfSkippedCells is 0, not the previous input's "
             "count (%d)" % skipped)
@@ -711,7 +710,7 @@ def case_unitdistance():
         warns = MSG.since(m, "WarningEvent", "unit distance")
         for s in warns:
             print("    message: " + short(s))
-        cov = psi_testing.covered(img, BG)
+        cov = testing.covered(img, BG)
         t.check(cov == 0, "unit distance %g: nothing drawn (%d pixels covered)" % (unit, cov))
         t.check(len(warns) == 1, "unit distance %g: one warning names it (%d)" % (unit, len(warns)))
         m = MSG.mark()
@@ -773,12 +772,12 @@ if __name__ == "__main__":
     unknown = [n for n in names if n not in CASES]
     if unknown:
         print("unknown case(s) %s; cases: %s" % (unknown, " ".join(CASES)))
-        psi_testing.exit_now(2)
+        testing.exit_now(2)
     # pvpython replaces sys.stderr with an object without a file descriptor.
     err = open(os.devnull if sys.__stderr__ is None else "/dev/stderr", "w")
     faulthandler.enable(file=err)
     faulthandler.dump_traceback_later(CASE_TIMEOUT * len(names), exit=True, file=err)
-    psi_data.load_plugin(globals())
+    data.load_plugin(globals())
     for name in names:
         print("== case %s" % name)
         t0 = time.time()

@@ -1,18 +1,15 @@
-"""The benchmarks' reference (Bunyk + vtkUnstructuredGridLinearRayIntegrator, psi_bench.Scene) is
+"""The benchmarks' reference (Bunyk + vtkUnstructuredGridLinearRayIntegrator, bench.Scene) is
 exact only when the color map interpolates in RGB and has a point at every opacity point (VTK
 9.2's integrator keeps the opacity function's points only where the color map has one).
-psi_bench.align_color_points adds those points: afterwards every opacity point is a color point,
+bench.align_color_points adds those points: afterwards every opacity point is a color point,
 and the color map is the same function as before (checked at 2,001 scalars)."""
-import os
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
-import psi_bench  # noqa: E402
-import psi_testing  # noqa: E402
-from paraview import simple  # noqa: E402
-from vtkmodules.vtkRenderingCore import vtkColorTransferFunction  # noqa: E402
+from paraview import simple
+from vtkmodules.vtkRenderingCore import vtkColorTransferFunction
 
-t = psi_testing.Checks("test_benchmark_reference")
+from psivolume import bench, testing
+
+t = testing.Checks("test_benchmark_reference")
 lut = simple.GetColorTransferFunction("aligned")
 lut.ColorSpace = "RGB"
 lut.RGBPoints = [0.0, 0.0, 0.0, 1.0, 0.5, 1.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0]
@@ -29,7 +26,7 @@ def samples():
 
 
 before = samples()
-psi_bench.align_color_points(lut, pwf)
+bench.align_color_points(lut, pwf)
 xs = list(lut.RGBPoints)[0::4]
 missing = [x for x in list(pwf.Points)[0::4] if not any(abs(x - c) < 1e-12 for c in xs)]
 t.check(not missing, "every opacity point is a color point (missing %s)" % missing)

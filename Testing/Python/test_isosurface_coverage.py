@@ -6,26 +6,23 @@ Contour surface's silhouettes into a rim of dim pixels one pixel wide, which loo
 that 'Psi Volume' lacks; FXAA does not touch volumes ('Volume' is unchanged by it too), so that
 rim is not missing from the isosurfaces. Skips (77) without ../shared/data."""
 import os
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
-import numpy as np  # noqa: E402
-import psi_data  # noqa: E402
-import psi_testing  # noqa: E402
-from paraview import simple  # noqa: E402
+from paraview import simple
 
-if not os.path.exists(os.path.join(psi_data.SHARED_DATA, psi_data.PLOT3D["bluntfin"][0])):
-    print("SKIP: the Blunt Fin is not in %s" % psi_data.SHARED_DATA)
-    psi_testing.exit_now(psi_testing.SKIP)
+from psivolume import data, testing
 
-t = psi_testing.Checks("test_isosurface_coverage")
-psi_data.load_plugin(globals())
-src, array = psi_data.plot3d("bluntfin")
+if not os.path.exists(os.path.join(data.SHARED_DATA, data.PLOT3D["bluntfin"][0])):
+    print("SKIP: the Blunt Fin is not in %s" % data.SHARED_DATA)
+    testing.exit_now(testing.SKIP)
+
+t = testing.Checks("test_isosurface_coverage")
+data.load_plugin(globals())
+src, array = data.plot3d("bluntfin")
 tets = simple.Tetrahedralize(Input=src)
 tets.UpdatePipeline()
 lo, hi = tets.PointData[array].GetRange()
 values = [lo + 0.35 * (hi - lo), lo + 0.60 * (hi - lo)]
-view = psi_testing.black_view(400)
+view = testing.black_view(400)
 contour = simple.Contour(Input=tets, ContourBy=["POINTS", array], Isosurfaces=values,
                          ComputeScalars=1)
 cd = simple.Show(contour, view)
@@ -49,11 +46,11 @@ def masks(fxaa):
     view.UseFXAA = fxaa
     simple.Show(tets, view)
     simple.Render(view)
-    psi = psi_testing.grab(view)
+    psi = testing.grab(view)
     simple.Hide(tets, view)
     simple.Show(contour, view)
     simple.Render(view)
-    ref = psi_testing.grab(view)
+    ref = testing.grab(view)
     simple.Hide(contour, view)
     return psi.sum(axis=2) > 2, ref.sum(axis=2) > 2, ref.sum(axis=2)
 

@@ -6,30 +6,28 @@ images are compared as numbers: the covered masks (pixels that differ from the b
 the colors where both cover. Cases: one isovalue, several isovalues (several in one cell), an
 isovalue exactly at a vertex value, a solid color, translucency, and properties/state."""
 import os
-import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
-import psi_data  # noqa: E402
-import psi_testing  # noqa: E402
-from paraview import simple  # noqa: E402
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+from paraview import simple
+from vtkmodules.util.numpy_support import vtk_to_numpy
 
-t = psi_testing.Checks("test_isosurfaces")
-psi_data.load_plugin(globals())
+from psivolume import data, testing
+
+t = testing.Checks("test_isosurfaces")
+data.load_plugin(globals())
 BG = [0.0, 0.0, 0.0]
 SIZE = 160
 OUT = os.environ.get("PSI_TEST_OUTPUT", "")
 
-src, array = psi_data.wavelet(8)
+src, array = data.wavelet(8)
 src.UpdatePipeline()
 view = simple.CreateRenderView()
 view.ViewSize = [SIZE, SIZE]
 view.OrientationAxesVisibility = 0
 view.UseColorPaletteForBackground = 0
 view.Background = BG
-d = psi_data.show_volume(src, array, view, unit_distance=2.0)
+d = data.show_volume(src, array, view, unit_distance=2.0)
 lo, hi = src.PointData[array].GetRange()
 otf = simple.GetOpacityTransferFunction(array)
 otf.Points = [lo, 0.0, 0.5, 0.0, hi, 0.0, 0.5, 0.0]  # volume invisible: plain contours
@@ -52,26 +50,16 @@ t.check(dom is not None and abs(dom.GetMinimum(0) - lo) < 1e-6 and abs(dom.GetMa
         "IsosurfaceValues has the colored array's range as its domain (value-list range helpers)")
 
 simple.Render(view)
-empty = psi_testing.grab(view)
-t.check(psi_testing.covered(empty, BG) == 0,
-        "zero opacity and no isosurface: empty image (%d)" % psi_testing.covered(empty, BG))
+empty = testing.grab(view)
+t.check(testing.covered(empty, BG) == 0,
+        "zero opacity and no isosurface: empty image (%d)" % testing.covered(empty, BG))
 
 contour = simple.Contour(Input=src, ContourBy=["POINTS", array], ComputeScalars=1)
 
 
 def save(name, img):
-    if not OUT:
-        return
-    from vtkmodules.vtkCommonDataModel import vtkImageData
-    from vtkmodules.vtkIOImage import vtkPNGWriter
-    from vtkmodules.util.numpy_support import numpy_to_vtk
-    im = vtkImageData()
-    im.SetDimensions(img.shape[1], img.shape[0], 1)
-    im.GetPointData().SetScalars(numpy_to_vtk(np.clip(img, 0, 255).astype(np.uint8).reshape(-1, 3)))
-    w = vtkPNGWriter()
-    w.SetFileName(os.path.join(OUT, "iso_" + name + ".png"))
-    w.SetInputData(im)
-    w.Write()
+    if OUT:
+        testing.write_png(img, os.path.join(OUT, "iso_" + name + ".png"))
 
 
 # Color tolerance: the Contour filter's normals are averaged from its triangles, the isosurfaces'
@@ -83,7 +71,7 @@ def compare(name, values, mask_tol=0.04, color_tol=0.08):
     simple.Show(src, view)
     d.SetRepresentationType("Psi Volume")
     simple.Render(view)
-    psi = psi_testing.grab(view)
+    psi = testing.grab(view)
     simple.Hide(src, view)
     contour.Isosurfaces = values
     cd = simple.Show(contour, view)
@@ -91,7 +79,7 @@ def compare(name, values, mask_tol=0.04, color_tol=0.08):
     cd.LookupTable = lut
     lut.RescaleTransferFunction(lo, hi)  # ColorBy rescales to the contour's range: undo
     simple.Render(view)
-    ref = psi_testing.grab(view)
+    ref = testing.grab(view)
     simple.Hide(contour, view)
     simple.Show(src, view)
     bg = np.array(BG) * 255.0
@@ -142,7 +130,7 @@ d.IsosurfaceUseColorMap = 0
 d.IsosurfaceColor = [1.0, 0.5, 0.0]
 d.IsosurfaceValues = [mid]
 simple.Render(view)
-solid = psi_testing.grab(view)
+solid = testing.grab(view)
 m = np.abs(solid).sum(axis=2) > 2.0
 ratio = solid[m][:, 1].sum() / max(solid[m][:, 0].sum(), 1e-9)
 t.check(m.sum() > 0 and abs(ratio - 0.5) < 0.02 and solid[m][:, 2].max() < 3.0,
@@ -151,11 +139,11 @@ d.IsosurfaceUseColorMap = 1
 # Translucent isosurface: half as bright over black.
 d.IsosurfaceOpacity = 0.5
 simple.Render(view)
-half = psi_testing.grab(view)
+half = testing.grab(view)
 simple.Render(view)
 d.IsosurfaceOpacity = 1.0
 simple.Render(view)
-full = psi_testing.grab(view)
+full = testing.grab(view)
 mm = np.abs(full).sum(axis=2) > 30.0
 ratio = half[mm].sum() / max(full[mm].sum(), 1e-9)
 # (0.5 of the front layer plus 0.25 of the one behind it, ...: between 0.5 and 0.75 of opaque)
@@ -166,34 +154,34 @@ t.check(0.5 < ratio < 0.8, "IsosurfaceOpacity 0.5 lets the background through (r
 outer, inner_v = mid - 12.0, mid + 30.0
 d.IsosurfaceValues = [outer]
 simple.Render(view)
-outer_only = psi_testing.grab(view)
+outer_only = testing.grab(view)
 d.IsosurfaceValues = [inner_v, outer]  # given out of order: entries follow the values
 d.IsosurfaceOpacities = [0.0, 1.0]
 simple.Render(view)
-inner_hidden = psi_testing.grab(view)
-t.check(psi_testing.covered(outer_only, BG) > 1000 and
-        psi_testing.mean_error(inner_hidden, outer_only) < 0.2 / 255,
+inner_hidden = testing.grab(view)
+t.check(testing.covered(outer_only, BG) > 1000 and
+        testing.mean_error(inner_hidden, outer_only) < 0.2 / 255,
         "IsosurfaceOpacities: a surface of opacity 0 vanishes (%.4f)"
-        % psi_testing.mean_error(inner_hidden, outer_only))
+        % testing.mean_error(inner_hidden, outer_only))
 d.IsosurfaceOpacities = [1.0, 0.5]
 simple.Render(view)
-per_surface = psi_testing.grab(view)
+per_surface = testing.grab(view)
 d.IsosurfaceOpacities = [1.0]  # the outer one without an entry: IsosurfaceOpacity
 d.IsosurfaceOpacity = 0.5
 simple.Render(view)
-common = psi_testing.grab(view)
-t.check(psi_testing.mean_error(per_surface, common) < 0.2 / 255 and
-        psi_testing.mean_error(per_surface, inner_hidden) > 1.0 / 255,
+common = testing.grab(view)
+t.check(testing.mean_error(per_surface, common) < 0.2 / 255 and
+        testing.mean_error(per_surface, inner_hidden) > 1.0 / 255,
         "IsosurfaceOpacities: an entry of 0.5 equals IsosurfaceOpacity 0.5 for that surface "
         "(%.4f), and lets the inner surface show (%.4f)"
-        % (psi_testing.mean_error(per_surface, common),
-           psi_testing.mean_error(per_surface, inner_hidden)))
+        % (testing.mean_error(per_surface, common),
+           testing.mean_error(per_surface, inner_hidden)))
 d.IsosurfaceOpacities = []
 d.IsosurfaceOpacity = 1.0
 # Removing the isosurfaces restores the plain (here empty) image.
 d.IsosurfaceValues = []
 simple.Render(view)
-t.check(psi_testing.covered(psi_testing.grab(view), BG) == 0, "isosurfaces removed: empty image again")
+t.check(testing.covered(testing.grab(view), BG) == 0, "isosurfaces removed: empty image again")
 d.AdaptiveSampling = "Auto"
 t.check(d.AdaptiveSampling == "Auto", "AdaptiveSampling accepts Auto")
 t.finish()

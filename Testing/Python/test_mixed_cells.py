@@ -3,16 +3,13 @@ tetrahedralization, not VTK's generic triangulator: hexahedra (ParaView's Wavele
 unstructured grid), wedges and pyramids render exactly as ConformingTetrahedralize -> 'Psi Volume'
 does (the same tetrahedra, the same image within visibility-sort ties), and a mixed grid of all
 three too. VTK's generic triangulator, used before, gives other tetrahedra."""
-import os
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
-import psi_data  # noqa: E402
-import psi_testing  # noqa: E402
-from paraview import simple  # noqa: E402
+from paraview import simple
 
-t = psi_testing.Checks("test_mixed_cells")
-psi_data.load_plugin(globals())
+from psivolume import data, testing
+
+t = testing.Checks("test_mixed_cells")
+data.load_plugin(globals())
 view = simple.CreateRenderView()
 view.ViewSize = [160, 160]
 view.OrientationAxesVisibility = 0
@@ -31,7 +28,7 @@ def show(source, array):
     view.CameraViewUp = [0.0, 1.0, 0.0]
     view.ResetCamera()
     simple.Render(view)
-    img = psi_testing.grab(view)
+    img = testing.grab(view)
     d.UpdatePropertyInformation()
     tets = d.GetProperty("NumberOfTetrahedra").GetElement(0)
     simple.Hide(source, view)
@@ -64,13 +61,13 @@ for name, source in (("hexahedra", hexes), ("collapsed hexahedra", collapsed),
     conforming.UpdatePipeline()
     expected, n_expected = show(conforming, "s")
     n_cells = conforming.GetDataInformation().GetNumberOfCells()
-    err = psi_testing.mean_error(direct, expected)
+    err = testing.mean_error(direct, expected)
     print("%-20s direct %d tets, conforming filter %d tets, mean |diff| %.2e"
           % (name, n_direct, n_expected, err))
     t.check(n_direct == n_expected == n_cells and n_cells > 0,
             "%s: shown directly, the conforming tetrahedra are drawn (%d, %d, %d)"
             % (name, n_direct, n_expected, n_cells))
-    t.check(psi_testing.covered(expected, [0, 0, 0]) > 500, "%s: image not empty" % name)
+    t.check(testing.covered(expected, [0, 0, 0]) > 500, "%s: image not empty" % name)
     # The same tetrahedra; the representation's pipeline may hand them over in another order,
     # which changes visibility-sort ties only (measured: mean 0.06-0.7/255).
     t.check(err < 1.0 / 255, "%s: same image as ConformingTetrahedralize -> 'Psi Volume' (%.2e)"

@@ -18,13 +18,11 @@ import sys
 import tempfile
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
-import numpy as np  # noqa: E402
-import psi_data  # noqa: E402
-import psi_process  # noqa: E402
-import psi_testing  # noqa: E402
-from paraview import servermanager, simple  # noqa: E402
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+import numpy as np
+from paraview import servermanager, simple
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+from psivolume import data, process, testing
 
 SIZE = 240
 HALF = 16  # Wavelet extent [-16, 16]^3: 32^3 voxels, 163,840 tetrahedra
@@ -85,18 +83,18 @@ def render(src, view_size=SIZE):
 
 
 def serial_main(out):
-    psi_data.load_plugin(globals())
+    data.load_plugin(globals())
     src, _ = build(False)
     view, d = render(src)
     np.save(out, capture(view))
     d.UpdatePropertyInformation()
     print("serial: %d tetrahedra drawn" % d.GetProperty("NumberOfTetrahedra").GetElement(0))
-    psi_testing.exit_now(0)
+    testing.exit_now(0)
 
 
 def serial_reference(out):
     """Runs this script serially in a clean environment (no MPI launcher variables)."""
-    env = psi_process.environment_without_mpi()
+    env = process.environment_without_mpi()
     exe = os.environ.get("PSI_PVBATCH") or "pvbatch"
     cmd = [exe, "--force-offscreen-rendering", os.path.abspath(__file__), "--serial", out]
     t0 = time.time()
@@ -127,7 +125,7 @@ def watch_environment():
                    "'%s'); the parallel render would deadlock. Not a Psi Volume result: rerun.\n"
                    % " ".join(text.split())[-120:])
             (sys.__stdout__ or sys.stdout).write(msg)
-            psi_testing.exit_now(1)
+            testing.exit_now(1)
 
     vtkOutputWindow.GetInstance().AddObserver(vtkCommand.ErrorEvent, on_error)
     err = open("/dev/stderr", "w")
@@ -135,23 +133,23 @@ def watch_environment():
 
 
 def parallel_main():
-    t = psi_testing.Checks("test_mpi")
+    t = testing.Checks("test_mpi")
     watch_environment()
     nranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
     print("ranks: %d" % nranks)
     if nranks < 2:
         print("SKIP: run with mpiexec -n 2 pvbatch (this run has %d rank)" % nranks)
-        psi_testing.exit_now(psi_testing.SKIP)
+        testing.exit_now(testing.SKIP)
     out = os.path.join(tempfile.mkdtemp(), "serial.npy")
     ok = serial_reference(out)
     t.check(ok, "the serial reference rendered")
     if not ok:
         t.finish()
     ref = np.load(out)
-    cov_ref = psi_testing.covered(ref, BG)
+    cov_ref = testing.covered(ref, BG)
     t.check(cov_ref > 0.2 * SIZE * SIZE, "serial image not empty (%d pixels)" % cov_ref)
 
-    psi_data.load_plugin(globals())
+    data.load_plugin(globals())
     for redistribute in (False, True):
         label = "RedistributeDataSet" if redistribute else "Wavelet pieces"
         src, ids = build(redistribute)
@@ -166,7 +164,7 @@ def parallel_main():
         n0 = d.GetProperty("NumberOfTetrahedra").GetElement(0)
         print("%s: rank 0 drew %d of %d tetrahedra" % (label, n0, ntotal))
         t.check(0 < n0 < ntotal, "%s: rank 0 drew only its part (%d of %d)" % (label, n0, ntotal))
-        cov = psi_testing.covered(img, BG)
+        cov = testing.covered(img, BG)
         t.check(cov > 0.2 * SIZE * SIZE, "%s: parallel image not black (%d pixels covered, "
                 "serial %d)" % (label, cov, cov_ref))
         d_abs = np.abs(img - ref)

@@ -7,20 +7,17 @@ u = 20 w, so that the exact opacity is 1 - 1/e for every width; widths from 10% 
 the range, far below the 1024-sample table's spacing (0.1%). Adaptive sampling On and Auto must
 be within 2% of the exact opacity; Off (the sampled table) is printed for comparison."""
 import math
-import os
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
-import psi_data  # noqa: E402
-import psi_testing  # noqa: E402
-from paraview import simple  # noqa: E402
+from paraview import simple
 
-t = psi_testing.Checks("test_narrow_spikes")
-psi_data.load_plugin(globals())
+from psivolume import data, testing
+
+t = testing.Checks("test_narrow_spikes")
+data.load_plugin(globals())
 grid = simple.Wavelet(WholeExtent=[0, 6, 0, 6, 0, 40])
 calc = simple.Calculator(Input=grid, ResultArrayName="s", Function="coordsZ/40")
 slab = simple.Tetrahedralize(Input=calc)
-view = psi_testing.black_view(120)
+view = testing.black_view(120)
 d = simple.Show(slab, view)
 simple.ColorBy(d, ("POINTS", "s"))
 d.SetRepresentationType("Psi Volume")
@@ -47,7 +44,7 @@ def opacity(width, mode):
     d.AdaptiveSampling = mode
     simple.Render(view)
     d.UpdatePropertyInformation()
-    img = psi_testing.grab(view)
+    img = testing.grab(view)
     return img[40:80, 40:80, :].mean() / 255.0, d.GetProperty("LastNumberOfAdaptiveNodes").GetElement(0)
 
 

@@ -7,22 +7,20 @@ same view. Each must react as 'Volume' does: its image changes exactly when 'Vol
 and after the change the two images agree as well as they did before (Projected tetra is not
 exact, so 'agree' is within a bound measured on the baseline)."""
 import os
-import sys
 import tempfile
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
-import numpy as np  # noqa: E402
-import psi_data  # noqa: E402
-import psi_testing  # noqa: E402
-from paraview import simple  # noqa: E402
+import numpy as np
+from paraview import simple
 
-t = psi_testing.Checks("test_parity")
-psi_data.load_plugin(globals())
-src, array = psi_data.wavelet(6)
-calc = psi_data.with_vector(src)
+from psivolume import data, testing
+
+t = testing.Checks("test_parity")
+data.load_plugin(globals())
+src, array = data.wavelet(6)
+calc = data.with_vector(src)
 calc2 = simple.Calculator(Input=calc, ResultArrayName="Other", Function="RTData*0.5 + 40*sin(coordsX)")
 cells = simple.PointDatatoCellData(Input=calc2)
-view = psi_testing.black_view(120)
+view = testing.black_view(120)
 CHANGED = 0.5  # mean |difference| on 0..255 that counts as a change
 
 
@@ -41,7 +39,7 @@ def pair(source, setup):
         d = show(source, rep)
         setup(d)
         simple.Render(view)
-        out.append(psi_testing.grab(view))
+        out.append(testing.grab(view))
         simple.Hide(source, view)
     return out
 
@@ -62,7 +60,7 @@ view.ResetCamera()
 view.GetActiveCamera().Elevation(20)
 vol0, psi0 = pair(calc2, base_setup)
 agree0 = diff(vol0, psi0)
-t.check(psi_testing.covered(psi0, [0, 0, 0]) > 2000, "baseline is not empty")
+t.check(testing.covered(psi0, [0, 0, 0]) > 2000, "baseline is not empty")
 print("baseline: 'Volume' vs 'Psi Volume' mean difference %.2f/255" % agree0)
 bound = max(4.0 * agree0, 3.0)
 
@@ -87,7 +85,7 @@ step("another array", calc2, lambda d: color(d, name="Other"))
 step("vector magnitude", calc2, lambda d: color(d, name="V", comp="Magnitude"))
 step("vector component Z", calc2, lambda d: color(d, name="V", comp="Z"))
 step("cell data", cells, lambda d: color(d, assoc="CELLS"))
-step("color map preset", calc2, lambda d: (color(d), psi_testing.apply_preset(lut, "Viridis (matplotlib)", "Viridis")),
+step("color map preset", calc2, lambda d: (color(d), testing.apply_preset(lut, "Viridis (matplotlib)", "Viridis")),
      undo=lambda: lut.ApplyPreset("Cool to Warm", True))
 saved = list(pwf.Points)
 step("opacity function", calc2,
@@ -139,7 +137,7 @@ step("time step (new Other, same mesh)", calc2,
 
 # A second view of the same representation type: each view draws the mesh at its own camera.
 vol0, psi0 = pair(calc2, base_setup)
-view2 = psi_testing.black_view(120)
+view2 = testing.black_view(120)
 imgs = {}
 for rep in ("Volume", "Psi Volume"):
     for v in (view, view2):
@@ -151,13 +149,13 @@ for rep in ("Volume", "Psi Volume"):
     view2.GetActiveCamera().Azimuth(90)
     simple.Render(view2)
     simple.Render(view)
-    imgs[rep] = (psi_testing.grab(view), psi_testing.grab(view2))
+    imgs[rep] = (testing.grab(view), testing.grab(view2))
     simple.Hide(calc2, view)
     simple.Hide(calc2, view2)
 for rep, (a, b) in imgs.items():
     t.check(diff(a, vol0 if rep == "Volume" else psi0) < CHANGED,
             "%s: the first view is unchanged by a second one" % rep)
-    t.check(diff(a, b) > CHANGED and psi_testing.covered(b, [0, 0, 0]) > 2000,
+    t.check(diff(a, b) > CHANGED and testing.covered(b, [0, 0, 0]) > 2000,
             "%s: the second view draws its own camera" % rep)
 t.check(diff(imgs["Volume"][1], imgs["Psi Volume"][1]) < bound, "second view: the two agree")
 simple.Delete(view2)
@@ -169,16 +167,16 @@ for rep in ("Volume", "Psi Volume"):
     d = show(calc2, rep)
     separate(d, "V", 0)
     simple.Render(view)
-    saved_images[rep] = psi_testing.grab(view)
+    saved_images[rep] = testing.grab(view)
     state = os.path.join(tempfile.mkdtemp(), "parity.pvsm")
     simple.SaveState(state)
     simple.ResetSession()
-    psi_data.load_plugin(globals())
+    data.load_plugin(globals())
     simple.LoadState(state)
     view = simple.GetActiveViewOrCreate("RenderView")
     view.ViewSize = [120, 120]
     simple.Render(view)
-    loaded = psi_testing.grab(view)
+    loaded = testing.grab(view)
     shown = [r for r in simple.GetRepresentations().values() if r.Visibility]
     t.check(len(shown) == 1 and shown[0].Representation == rep and
             shown[0].UseSeparateOpacityArray == 1, "state: '%s' with its opacity array" % rep)

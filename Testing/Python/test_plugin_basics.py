@@ -2,17 +2,15 @@
 renders, its properties work, non-tetrahedral input is tetrahedralized on the way in, its image
 agrees with the exact ray caster (Bunyk + linear integrator), and state files round-trip."""
 import os
-import sys
 import tempfile
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
-import psi_data  # noqa: E402
-import psi_testing  # noqa: E402
-from paraview import simple  # noqa: E402
-from vtkmodules.vtkRenderingVolume import vtkUnstructuredGridLinearRayIntegrator  # noqa: E402
+from paraview import simple
+from vtkmodules.vtkRenderingVolume import vtkUnstructuredGridLinearRayIntegrator
 
-t = psi_testing.Checks("test_plugin_basics")
-psi_data.load_plugin(globals())
+from psivolume import data, testing
+
+t = testing.Checks("test_plugin_basics")
+data.load_plugin(globals())
 BG = [0.0, 0.0, 0.0]
 
 
@@ -35,29 +33,29 @@ def oblique(v):
     v.ResetCamera()
 
 
-src, array = psi_data.wavelet(10)
+src, array = data.wavelet(10)
 src.UpdatePipeline()
 ncells = src.GetDataInformation().GetNumberOfCells()
 view = make_view()
-d = psi_data.show_volume(src, array, view, unit_distance=2.0)
+d = data.show_volume(src, array, view, unit_distance=2.0)
 simple.GetColorTransferFunction(array).ColorSpace = "RGB"  # exact for the linear integrator
 t.check("Psi Volume" in d.Representation.Available, "'Psi Volume' is a representation type")
 t.check(d.Representation == "Psi Volume", "representation set to 'Psi Volume'")
 t.check(d.IntegrationMethod == "Partial Pre-Integration", "default integration method")
 oblique(view)
 simple.Render(view)
-psi = psi_testing.grab(view)
+psi = testing.grab(view)
 d.UpdatePropertyInformation()
 t.check(d.GetProperty("NumberOfTetrahedra").GetElement(0) == ncells,
         "all %d tetrahedra drawn" % ncells)
 t.check(d.GetProperty("NumberOfSkippedCells").GetElement(0) == 0, "no cell skipped")
-cov = psi_testing.covered(psi, BG)
+cov = testing.covered(psi, BG)
 t.check(cov > 0.25 * 200 * 200, "image is not empty (%d pixels covered)" % cov)
 
 d.IntegrationMethod = "Average"
 simple.Render(view)
-avg = psi_testing.grab(view)
-t.check(psi_testing.mean_error(avg, psi) > 0, "integration method changes the image")
+avg = testing.grab(view)
+t.check(testing.mean_error(avg, psi) > 0, "integration method changes the image")
 try:
     d.IntegrationMethod = "No Such Method"
     t.check(False, "an unknown integration method is refused")
@@ -72,13 +70,13 @@ simple.Render(view)
 bunyk = d.GetClientSideObject().GetActiveRepresentation().GetActiveVolumeMapper()
 bunyk.SetRayIntegrator(vtkUnstructuredGridLinearRayIntegrator())
 simple.Render(view)
-ref = psi_testing.grab(view)
+ref = testing.grab(view)
 bunyk.SetRayIntegrator(None)
 del bunyk  # a Python reference must not keep ParaView's mapper alive past its render window
 d.SelectMapper = "Projected tetra"
 simple.Render(view)
-pt = psi_testing.grab(view)
-e_psi, e_pt = psi_testing.mean_error(psi, ref), psi_testing.mean_error(pt, ref)
+pt = testing.grab(view)
+e_psi, e_pt = testing.mean_error(psi, ref), testing.mean_error(pt, ref)
 print("mean error vs Bunyk+linear: Psi Volume %.5f, Projected tetra %.5f" % (e_psi, e_pt))
 t.check(e_psi < 0.006, "Psi Volume agrees with the exact ray caster (mean error %.5f)" % e_psi)
 d.SetRepresentationType("Psi Volume")
@@ -86,15 +84,15 @@ d.SetRepresentationType("Psi Volume")
 # Non-tetrahedral input (voxels) is tetrahedralized on the way in, as for 'Volume'.
 hexes = simple.CleantoGrid(Input=src.Input)
 view2 = make_view()
-d2 = psi_data.show_volume(hexes, array, view2, unit_distance=2.0)
+d2 = data.show_volume(hexes, array, view2, unit_distance=2.0)
 simple.GetColorTransferFunction(array).ColorSpace = "RGB"
 oblique(view2)
 simple.Render(view2)
-from_hexes = psi_testing.grab(view2)
+from_hexes = testing.grab(view2)
 d2.UpdatePropertyInformation()
 t.check(d2.GetProperty("NumberOfTetrahedra").GetElement(0) >= 5 * 20 ** 3,
         "hexahedral input drawn as tetrahedra (%d)" % d2.GetProperty("NumberOfTetrahedra").GetElement(0))
-e_hex = psi_testing.mean_error(from_hexes, psi)
+e_hex = testing.mean_error(from_hexes, psi)
 t.check(e_hex < 0.01, "voxel input renders like the tetrahedralized mesh (%.5f)" % e_hex)
 simple.Delete(d2)
 simple.Delete(view2)
@@ -123,7 +121,7 @@ def check_opacity(rep, what):
 check_opacity(d, "before save")
 d.IntegrationMethod = "Average"
 simple.Render(view)
-before = psi_testing.grab(view)
+before = testing.grab(view)
 state = os.path.join(tempfile.mkdtemp(), "psi.pvsm")
 simple.SaveState(state)
 simple.ResetSession()
@@ -131,12 +129,12 @@ simple.LoadState(state)
 view = simple.GetActiveViewOrCreate("RenderView")
 view.ViewSize = [200, 200]
 simple.Render(view)
-after = psi_testing.grab(view)
+after = testing.grab(view)
 reps = [r for r in simple.GetRepresentations().values() if r.GetProperty("IntegrationMethod")]
 t.check(any(r.Representation == "Psi Volume" and r.IntegrationMethod == "Average" for r in reps),
         "state file restores 'Psi Volume' and its integration method")
 for r in reps:
     check_opacity(r, "after load")
-e_state = psi_testing.mean_error(after, before)
+e_state = testing.mean_error(after, before)
 t.check(e_state < 0.5 / 255, "reloaded state renders the same image (%.5f)" % e_state)
 t.finish()

@@ -1,23 +1,20 @@
 """Every property of 'Psi Volume' from pvpython: each value is accepted, reads back, renders a
 finite, non-empty image, and the ones that should change the picture do (as numbers)."""
-import os
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
-import numpy as np  # noqa: E402
-import psi_data  # noqa: E402
-import psi_testing  # noqa: E402
-from paraview import simple  # noqa: E402
+import numpy as np
+from paraview import simple
 
-t = psi_testing.Checks("test_properties")
-psi_data.load_plugin(globals())
-src, array = psi_data.wavelet(8)
+from psivolume import data, testing
+
+t = testing.Checks("test_properties")
+data.load_plugin(globals())
+src, array = data.wavelet(8)
 view = simple.CreateRenderView()
 view.ViewSize = [160, 160]
 view.OrientationAxesVisibility = 0
 view.UseColorPaletteForBackground = 0
 view.Background = [0.0, 0.0, 0.0]
-d = psi_data.show_volume(src, array, view, unit_distance=3.0)
+d = data.show_volume(src, array, view, unit_distance=3.0)
 simple.Render(view)
 view.ResetCamera()
 view.GetActiveCamera().Azimuth(30)
@@ -27,14 +24,14 @@ view.ResetCamera()
 
 def render():
     simple.Render(view)
-    img = psi_testing.grab(view)
+    img = testing.grab(view)
     return img
 
 
 plain = render()
 lo, hi = src.PointData[array].GetRange()
 mid = 0.5 * (lo + hi)
-t.check(psi_testing.covered(plain, [0, 0, 0]) > 2000, "default rendering is not empty")
+t.check(testing.covered(plain, [0, 0, 0]) > 2000, "default rendering is not empty")
 
 cases = [
     ("IntegrationMethod", list(d.GetProperty("IntegrationMethod").Available), None),
@@ -53,7 +50,7 @@ for name, values, _ in cases:
         got = getattr(d, name)
         same = list(got) == list(v) if isinstance(v, list) else got == v
         t.check(same, "%s = %r reads back (%r)" % (name, v, got))
-        t.check(np.isfinite(img).all() and psi_testing.covered(img, [0, 0, 0]) > 2000,
+        t.check(np.isfinite(img).all() and testing.covered(img, [0, 0, 0]) > 2000,
                 "%s = %r renders a non-empty image" % (name, v))
 
 # Effects that must show in the picture.
@@ -61,7 +58,7 @@ d.IsosurfaceValues = [mid]
 d.IsosurfaceOpacity = 1.0
 d.IsosurfaceUseColorMap = 1
 with_iso = render()
-t.check(psi_testing.mean_error(with_iso, plain) > 0.005, "an isosurface changes the image")
+t.check(testing.mean_error(with_iso, plain) > 0.005, "an isosurface changes the image")
 d.IsosurfaceUseColorMap = 0
 d.IsosurfaceColor = [0.0, 1.0, 0.0]
 green = render()
@@ -70,10 +67,10 @@ t.check(green[:, :, 1].mean() > with_iso[:, :, 1].mean() + 1.0,
         % (green[:, :, 1].mean(), with_iso[:, :, 1].mean()))
 d.IsosurfaceShading = "Unlit"
 unlit = render()
-t.check(psi_testing.mean_error(unlit, green) > 0.002, "IsosurfaceShading Unlit changes the image")
+t.check(testing.mean_error(unlit, green) > 0.002, "IsosurfaceShading Unlit changes the image")
 d.IsosurfaceShading = "Flat"
 flat = render()
-t.check(psi_testing.mean_error(flat, green) > 0.0005, "IsosurfaceShading Flat changes the image")
+t.check(testing.mean_error(flat, green) > 0.0005, "IsosurfaceShading Flat changes the image")
 d.IsosurfaceShading = "Smooth"
 d.IsosurfaceMethod = "Per Fragment"
 per_fragment = render()
@@ -88,17 +85,17 @@ render()
 d.UpdatePropertyInformation()
 t.check(d.GetProperty("LastUsedIsosurfaceMethod").GetElement(0) == 1,
         "Auto: per fragment for a volume without zero-opacity regions")
-t.check(psi_testing.mean_error(per_fragment, green) < 0.5 / 255,
+t.check(testing.mean_error(per_fragment, green) < 0.5 / 255,
         "IsosurfaceMethod: both methods draw the same image (%.4f)"
-        % psi_testing.mean_error(per_fragment, green))
+        % testing.mean_error(per_fragment, green))
 d.IsosurfaceOpacity = 0.3
 faint = render()
-t.check(psi_testing.mean_error(faint, green) > 0.002, "isosurface opacity changes the image")
+t.check(testing.mean_error(faint, green) > 0.002, "isosurface opacity changes the image")
 d.IsosurfaceValues = []
 d.IsosurfaceUseColorMap = 1
 d.IsosurfaceOpacity = 1.0
 back = render()
-t.check(psi_testing.mean_error(back, plain) < 0.5 / 255, "removing the isovalues restores the image")
+t.check(testing.mean_error(back, plain) < 0.5 / 255, "removing the isovalues restores the image")
 d.ScalarOpacityUnitDistance = 1.0
 denser = render()
 t.check(denser.mean() > plain.mean() + 1.0, "a shorter unit distance makes the volume denser")

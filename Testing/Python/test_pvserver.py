@@ -45,15 +45,11 @@ import tempfile
 import time
 import traceback
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(HERE, "..", "..", "Python"))
-import numpy as np  # noqa: E402
-import psi_data  # noqa: E402
-import psi_process  # noqa: E402
-import psi_testing  # noqa: E402
-import test_mpi  # noqa: E402  (the scene, camera, capture and tolerance of the MPI test)
-from paraview import servermanager, simple  # noqa: E402
+import numpy as np
+from paraview import servermanager, simple
+
+import test_mpi  # the scene, camera, capture and tolerance of the MPI test (this folder)
+from psivolume import data, process, testing
 
 NRANKS = 2
 START_TIMEOUT = 60  # seconds for the server's 'Accepting connection(s)'
@@ -107,8 +103,8 @@ def start_server(port, logfile):
     pvserver = os.environ.get("PSI_PVSERVER") or shutil.which("pvserver") or "pvserver"
     cmd = [mpiexec, "--allow-run-as-root", "-n", str(NRANKS), pvserver,
            "--server-port=%d" % port, "--force-offscreen-rendering"]
-    # pvpython initialized MPI as a singleton: mpiexec must not inherit it (psi_process).
-    env = psi_process.environment_without_mpi()
+    # pvpython initialized MPI as a singleton: mpiexec must not inherit it (psivolume.process).
+    env = process.environment_without_mpi()
     env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")  # 2 ranks on a machine with 1 core
     log("server: %s" % " ".join(cmd))
     return subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=logfile,
@@ -278,7 +274,7 @@ def remote_checks(t, port, plugin, ref, n_serial):
                 "%s: 'Psi Volume' on server rank 0 drew a part: %d of %d tetrahedra (the source "
                 "gave rank 0 %d)" % (label, n0, ntotal, per_rank[0]))
 
-        cov_ref, cov = psi_testing.covered(ref, BG), psi_testing.covered(img, BG)
+        cov_ref, cov = testing.covered(ref, BG), testing.covered(img, BG)
         t.check(cov_ref > 0.2 * SIZE * SIZE and cov > 0.2 * SIZE * SIZE,
                 "%s: images not empty (%d pixels covered from the server, %d serial)"
                 % (label, cov, cov_ref))
@@ -313,11 +309,11 @@ def disconnect():
 
 
 def main():
-    t = psi_testing.Checks("test_pvserver")
+    t = testing.Checks("test_pvserver")
     t0 = time.time()
     display = hold_display()  # noqa: F841 -- held until the process exits
     faulthandler.dump_traceback_later(WATCHDOG, exit=True, file=open("/dev/stderr", "w"))
-    plugin = psi_data.find_plugin()
+    plugin = data.find_plugin()
     port = free_port()
     tmp = tempfile.mkdtemp(prefix="psi_pvserver_")
     logpath = os.path.join(tmp, "pvserver.log")

@@ -7,17 +7,17 @@ import subprocess
 import sys
 import tempfile
 
-here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(here, "..", "..", "Python"))
-import psi_data  # noqa: E402
-import psi_testing  # noqa: E402
-from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+from vtkmodules.vtkIOImage import vtkPNGReader
 
-t = psi_testing.Checks("test_render_command")
+from psivolume import data, testing
+
+here = os.path.dirname(os.path.abspath(__file__))
+
+t = testing.Checks("test_render_command")
 script = os.path.join(here, "..", "..", "scripts", "psi_render.py")
 pvpython = sys.executable if "pvpython" in os.path.basename(sys.executable) else "pvpython"
 cases = [("default", [], 320000)]
-exodus = os.path.join(psi_data.SHARED_DATA, "disk_out_ref.ex2")
+exodus = os.path.join(data.SHARED_DATA, "disk_out_ref.ex2")
 if os.path.exists(exodus):
     cases.append(("exodus multiblock hexahedra", [exodus], None))
 else:

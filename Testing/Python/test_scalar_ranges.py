@@ -13,23 +13,19 @@ ParaView's own mappers and the exact reference do.
    negative ones. Checked for each path above and for isosurfaces at the same fraction of the
    range (marching tetrahedra and per fragment).
 """
-import os
-import sys
 import tempfile
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
-import numpy as np  # noqa: E402
-import psi_accuracy  # noqa: E402
-import psi_data  # noqa: E402
-import psi_testing  # noqa: E402
-from paraview import simple  # noqa: E402
+import numpy as np
+from paraview import simple
 
-t = psi_testing.Checks("test_scalar_ranges")
-psi_data.load_plugin(globals())
-src, rt = psi_data.wavelet(4)
+from psivolume import accuracy, data, testing
+
+t = testing.Checks("test_scalar_ranges")
+data.load_plugin(globals())
+src, rt = data.wavelet(4)
 src.UpdatePipeline()
 lo, hi = src.PointData[rt].GetRange()
-view = psi_testing.black_view(120)
+view = testing.black_view(120)
 BG = [0.0, 0.0, 0.0]
 SAME = 0.1       # mean |difference| on 0..255: the same image up to float rounding ...
 SAME_MAX = 2.0   # ... and no pixel off by more than two 8-bit steps
@@ -61,7 +57,7 @@ def show(source, array, rng, flat_opacity, representation="Psi Volume"):
     if rng is None:
         d.RescaleTransferFunctionToDataRange(True, False)  # as ParaView does for a new array
     lut = simple.GetColorTransferFunction(array)
-    psi_testing.apply_preset(lut, "Cool to Warm")
+    testing.apply_preset(lut, "Cool to Warm")
     lut.ColorSpace = "RGB"
     pwf = simple.GetOpacityTransferFunction(array)
     if rng is not None:
@@ -78,7 +74,7 @@ def render(d, **settings):
     for k, v in settings.items():
         setattr(d, k, v)
     simple.Render(view)
-    return psi_testing.grab(view)
+    return testing.grab(view)
 
 
 def settled_render(d):
@@ -101,10 +97,10 @@ def aim():
 
 
 def reference(source, d):
-    """The exact reference's image of the display's scene (psi_accuracy's capture)."""
+    """The exact reference's image of the display's scene (psivolume.accuracy's capture)."""
     with tempfile.TemporaryDirectory() as work:
-        cap = psi_accuracy.Capture(view, d, source, work)
-        images, _ = psi_accuracy.reference_image(cap, runs=1)
+        cap = accuracy.Capture(view, d, source, work)
+        images, _ = accuracy.reference_image(cap, runs=1)
     return images[0]
 
 
@@ -121,7 +117,7 @@ def constant_fields():
         pt = settled_render(d)
         d.SetRepresentationType("Psi Volume")
         ref = reference(source, d)
-        t.check(psi_testing.covered(ref, BG) > 2000, "constant %g: the reference is not empty" % c)
+        t.check(testing.covered(ref, BG) > 2000, "constant %g: the reference is not empty" % c)
         mr, _ = diff(pt, ref)
         print("constant %g: 'Projected tetra' vs the reference: mean %.3f/255" % (c, mr))
         # With a separate opacity array ParaView's 'Projected tetra' may draw another opacity
@@ -171,7 +167,7 @@ def scaled_fields():
         for projector in PROJECTORS:
             images[(fname, projector)] = render_feature(base, "f", fname, 0.0, 1.0, projector,
                                                         settings)
-            n = psi_testing.covered(images[(fname, projector)], BG)
+            n = testing.covered(images[(fname, projector)], BG)
             t.check(n > 2000, "f: %s, %s: the image is not empty (%d pixels)"
                     % (fname, projector, n))
     pt_base = projected_tetra_separate(base, "f")

@@ -12,27 +12,24 @@ function of the opacity array's values).
 3. Early discard is judged on the opacity array: with an opacity function that is zero on part
    of the opacity array's range, early discard on and off draw the same image.
 4. Cell data and a new time step of both arrays."""
-import os
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
-import numpy as np  # noqa: E402
-import psi_data  # noqa: E402
-import psi_testing  # noqa: E402
-from paraview import simple  # noqa: E402
+import numpy as np
+from paraview import simple
 
-t = psi_testing.Checks("test_separate_opacity")
-psi_data.load_plugin(globals())
-src, array = psi_data.wavelet(6)
+from psivolume import data, testing
+
+t = testing.Checks("test_separate_opacity")
+data.load_plugin(globals())
+src, array = data.wavelet(6)
 calc = simple.Calculator(Input=src, ResultArrayName="Other",
                          Function="RTData*0.5 + 40*sin(coordsX)")
 cells = simple.PointDatatoCellData(Input=calc)
 # The features on a coarse mesh (4^3 voxels): long segments within each cell, where a slip in the
 # opacity scalar's ends (near-plane clipping, isosurface pieces) shows in an 8-bit image.
-coarse_src, _ = psi_data.wavelet(2)
+coarse_src, _ = data.wavelet(2)
 coarse = simple.Calculator(Input=coarse_src, ResultArrayName="Other",
                            Function="RTData*0.5 + 40*sin(coordsX)")
-view = psi_testing.black_view(120)
+view = testing.black_view(120)
 SAME = 0.05  # mean |difference| on 0..255: the same image up to float rounding ...
 SAME_MAX = 1.0  # ... and no pixel off by more than one 8-bit step
 pwf = simple.GetOpacityTransferFunction(array)
@@ -56,6 +53,7 @@ def render(source, rep="Psi Volume", opacity=None, assoc="POINTS", setup=None):
     simple.ColorBy(d, (assoc, array))
     d.ScalarOpacityUnitDistance = 3.0
     if rep == "Psi Volume":  # the display keeps its settings between renders: reset them
+        testing.apply_requested(d)
         d.IntegrationMethod = "Partial Pre-Integration"
         d.IsosurfaceValues = []
         d.EarlyDiscard = 1
@@ -65,7 +63,7 @@ def render(source, rep="Psi Volume", opacity=None, assoc="POINTS", setup=None):
     if setup:
         setup(d)
     simple.Render(view)
-    img = psi_testing.grab(view)
+    img = testing.grab(view)
     d.UseSeparateOpacityArray = 0
     simple.Hide(source, view)
     return img
@@ -85,7 +83,7 @@ for m in methods:
     plainMethod = "Partial Pre-Integration" if m == "Full Pre-Integration" else m
     plain = render(calc, setup=lambda d: setattr(d, "IntegrationMethod", plainMethod))
     own = render(calc, opacity=array, setup=lambda d: setattr(d, "IntegrationMethod", m))
-    t.check(psi_testing.covered(plain, [0, 0, 0]) > 2000, "%s: the image is not empty" % m)
+    t.check(testing.covered(plain, [0, 0, 0]) > 2000, "%s: the image is not empty" % m)
     t.check(same(plain, own), "%s: own array as opacity array draws the plain image "
             "(mean %.3f, max %.0f)" % (m, diff(plain, own), np.abs(plain - own).max()))
 
@@ -149,7 +147,7 @@ pwf.Points = [lo, 0.0, 0.5, 0.0, 0.5 * (lo + hi), 0.0, 0.5, 0.0, hi, 1.0, 0.5, 0
 on = render(calc, opacity="Other", setup=lambda d: setattr(d, "EarlyDiscard", 1))
 off = render(calc, opacity="Other", setup=lambda d: setattr(d, "EarlyDiscard", 0))
 pwf.Points = ramp
-t.check(psi_testing.covered(on, [0, 0, 0]) > 500, "early discard: the image is not empty")
+t.check(testing.covered(on, [0, 0, 0]) > 500, "early discard: the image is not empty")
 t.check(same(on, off), "early discard on the opacity array: on and off agree (%.3f)"
         % diff(on, off))
 
@@ -162,6 +160,7 @@ t.check(diff(cpsi, cpsi0) > 5.0 and diff(cpsi, cvol) < bound,
         % (diff(cpsi, cpsi0), diff(cpsi, cvol)))
 d = simple.Show(calc, view)
 d.SetRepresentationType("Psi Volume")
+testing.apply_requested(d)
 simple.ColorBy(d, ("POINTS", array))
 d.ScalarOpacityUnitDistance = 3.0
 d.UseSeparateOpacityArray = 1
@@ -169,7 +168,7 @@ d.OpacityArrayName = ["POINTS", "Other"]
 simple.Render(view)
 calc.Function = "RTData*0.25 + 60*cos(coordsY)"
 simple.Render(view)
-stepped = psi_testing.grab(view)
+stepped = testing.grab(view)
 simple.Hide(calc, view)
 fresh = simple.Calculator(Input=src, ResultArrayName="Other",
                           Function="RTData*0.25 + 60*cos(coordsY)")

@@ -1,16 +1,12 @@
-"""The timing harness (Python/psi_timing.py) with contenders whose times are known, no GL: the
+"""The timing harness (psivolume.timing) with contenders whose times are known, no GL: the
 order rotates from round to round; a drift of the whole machine between rounds cancels in the
 ratios (the point of interleaving); steady contenders converge after the minimum rounds, a noisy
 one runs the rounds to the budget and the summary says so; a contender that fails gets its note
 and the others go on."""
-import os
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
-import psi_testing  # noqa: E402
-import psi_timing  # noqa: E402
+from psivolume import testing, timing
 
-t = psi_testing.Checks("timing")
+t = testing.Checks("timing")
 
 
 class Fake:
@@ -37,7 +33,7 @@ class Fake:
 
 machine, log = [1.0], []
 steady = [Fake("A", 1.0, machine, log), Fake("B", 2.0, machine, log), Fake("C", 0.5, machine, log)]
-r = psi_timing.interleaved(steady, "A", min_rounds=3, budget=1e9, min_turn=0)
+r = timing.interleaved(steady, "A", min_rounds=3, budget=1e9, min_turn=0)
 t.check(log[:9] == ["A", "B", "C", "B", "C", "A", "C", "A", "B"],
         "the order rotates from round to round: %s" % log[:9])
 t.check(r.converged and r.rounds == 3, "steady ratios converge after 3 rounds (%d, %s)"
@@ -53,7 +49,7 @@ t.check(abs(r.row("B")["cpu"] / r.row("B")["spf"] - 0.5) < 1e-9, "CPU seconds ke
 
 machine, log = [1.0], []
 noisy = [Fake("A", 1.0, [1.0], log), Fake("N", 1.0, [1.0], log, noise=[1.0, 1.5, 0.7, 1.2])]
-r = psi_timing.interleaved(noisy, "A", min_rounds=3, max_rounds=8, budget=1e9, min_turn=0)
+r = timing.interleaved(noisy, "A", min_rounds=3, max_rounds=8, budget=1e9, min_turn=0)
 t.check(not r.converged and r.rounds == 8 and "8 rounds allowed spent" in r.summary() and
         "N" in r.summary(),
         "a noisy ratio keeps the rounds going and is named: %s" % r.summary())
@@ -61,7 +57,7 @@ t.check(not r.converged and r.rounds == 8 and "8 rounds allowed spent" in r.summ
 log = []
 failing = [Fake("A", 1.0, [1.0], log), Fake("F", 1.0, [1.0], log, fail_at=2),
            Fake("G", 2.0, [1.0], log)]
-r = psi_timing.interleaved(failing, "A", min_rounds=3, budget=1e9, min_turn=0)
+r = timing.interleaved(failing, "A", min_rounds=3, budget=1e9, min_turn=0)
 t.check(r.notes["F"] == "failed (crashed)" and r.row("F")["rounds"] == 1 and r.converged and
         r.row("G")["rounds"] == 3, "a failing contender keeps its note, the others go on: %s, %s"
         % (r.notes, r.summary()))

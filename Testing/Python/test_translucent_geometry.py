@@ -14,29 +14,27 @@ Testing/Cxx/TestPsiTranslucentGeometry.cxx; here ParaView's view checks the same
 3. A translucent sphere in front of the volume (unlit, color (1, 0.5, 0.25), opacity 0.5): the
    image is the sphere's own image S over the volume's V, S + (1 - A) V, with the sphere's
    coverage A read from its red channel (color 1)."""
-import os
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Python"))
-import numpy as np  # noqa: E402
-import psi_data  # noqa: E402
-import psi_testing  # noqa: E402
-from paraview import simple  # noqa: E402
+import numpy as np
+from paraview import simple
 
-t = psi_testing.Checks("test_translucent_geometry")
-psi_data.load_plugin(globals())
-src, array = psi_data.wavelet(8)
-view = psi_testing.black_view(160)
+from psivolume import data, testing
+
+t = testing.Checks("test_translucent_geometry")
+data.load_plugin(globals())
+src, array = data.wavelet(8)
+view = testing.black_view(160)
 d = simple.Show(src, view)
 d.SetRepresentationType("Psi Volume")
+testing.apply_requested(d)
 simple.ColorBy(d, ("POINTS", array))
 d.ScalarOpacityUnitDistance = 3.0
 view.CameraPosition = [0.0, 0.0, 60.0]
 view.CameraFocalPoint = [0.0, 0.0, 0.0]
 view.CameraViewUp = [0.0, 1.0, 0.0]
 simple.Render(view)
-volume = psi_testing.grab(view)
-t.check(psi_testing.covered(volume, [0, 0, 0]) > 5000, "the volume alone is drawn")
+volume = testing.grab(view)
+t.check(testing.covered(volume, [0, 0, 0]) > 5000, "the volume alone is drawn")
 
 
 def with_sphere(center, peel, show_volume=True, radius=3.0):
@@ -50,7 +48,7 @@ def with_sphere(center, peel, show_volume=True, radius=3.0):
     if not show_volume:
         simple.Hide(src, view)
     simple.Render(view)
-    img = psi_testing.grab(view)
+    img = testing.grab(view)
     simple.Hide(s, view)
     simple.Delete(s)
     simple.Show(src, view)
@@ -72,7 +70,7 @@ for peel in (1, 0):
         # the volume over a white background.
         view.Background = [1.0, 1.0, 1.0]
         simple.Render(view)
-        transparency = np.clip(psi_testing.grab(view) - volume, 0.0, 255.0) / 255.0
+        transparency = np.clip(testing.grab(view) - volume, 0.0, 255.0) / 255.0
         view.Background = [0.0, 0.0, 0.0]
         behind = with_sphere([0.0, 0.0, -20.0], peel, radius=6.0)
         sphere = with_sphere([0.0, 0.0, -20.0], peel, show_volume=False, radius=6.0)
@@ -80,7 +78,7 @@ for peel in (1, 0):
         err = np.abs(behind - expected)
         print("%s, sphere behind: against V + (1 - A_V) S mean %.3f, 99th percentile %.0f"
               % (mode, err.mean(), np.percentile(err, 99)))
-        t.check(psi_testing.covered(sphere, [0, 0, 0]) > 1000 and err.mean() < 0.5 and
+        t.check(testing.covered(sphere, [0, 0, 0]) > 1000 and err.mean() < 0.5 and
                 np.percentile(err, 99) <= 8,
                 "%s, sphere behind: seen through the volume (mean %.3f/255)" % (mode, err.mean()))
         front = with_sphere([0.0, 0.0, 20.0], peel)
@@ -90,7 +88,7 @@ for peel in (1, 0):
         err = np.abs(front - expected)
         print("%s, sphere in front: against S + (1 - A) V mean %.3f, 99th percentile %.0f"
               % (mode, err.mean(), np.percentile(err, 99)))
-        t.check(psi_testing.covered(sphere, [0, 0, 0]) > 1000 and err.mean() < 0.5 and
+        t.check(testing.covered(sphere, [0, 0, 0]) > 1000 and err.mean() < 0.5 and
                 np.percentile(err, 99) <= 8,
                 "%s, sphere in front: composited over the volume (mean %.3f/255)"
                 % (mode, err.mean()))

@@ -9,9 +9,11 @@
 # CaptureWindow(1)), compares it with the same baseline PNG, and fails when more than MAX_PIXELS
 # pixels differ by more than LEVEL in some channel. Same-method replays differ by 0 on llvmpipe.
 #
-# Loaded with runpy.run_path (no __pycache__ in the source tree). Prints one line per check on the
-# process's own stdout/stderr (the shell widget's output is not on the console): Testing/GUI.cmake
-# counts "PsiGUICheck passed:" lines and fails on "PsiGUICheck FAILED".
+# Loaded with runpy.run_path (no __pycache__ in the source tree). The test image is written by the
+# project's PNG writer, psivolume.testing.write_png (the test's ENVIRONMENT puts the checkout's
+# Python/ on the client's PYTHONPATH). Prints one line per check on the process's own
+# stdout/stderr (the shell widget's output is not on the console): Testing/GUI.cmake counts
+# "PsiGUICheck passed:" lines and fails on "PsiGUICheck FAILED".
 import os
 import sys
 
@@ -54,15 +56,14 @@ def check(baseline_dir, test_dir, name, test_name=None, level=LEVEL, max_pixels=
     """Compares the active view with baseline_dir/name.png; writes it to test_dir/test_name.png."""
     test_name = test_name or name
     try:
-        from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
+        from vtkmodules.vtkIOImage import vtkPNGReader
 
-        image = _capture(size)
+        from psivolume.testing import write_png
+
+        tw, th, test = _pixels(_capture(size))
         os.makedirs(test_dir, exist_ok=True)
         test_png = os.path.join(test_dir, test_name + ".png")
-        writer = vtkPNGWriter()
-        writer.SetInputData(image)
-        writer.SetFileName(test_png)
-        writer.Write()
+        write_png(test.reshape(th, tw, 3), test_png)
         baseline_png = os.path.join(baseline_dir, name + ".png")
         if not os.path.exists(baseline_png):
             _say(sys.__stderr__, "PsiGUICheck FAILED: %s: no baseline %s (test image written to %s)"
@@ -71,7 +72,6 @@ def check(baseline_dir, test_dir, name, test_name=None, level=LEVEL, max_pixels=
         reader = vtkPNGReader()
         reader.SetFileName(baseline_png)
         reader.Update()
-        tw, th, test = _pixels(image)
         bw, bh, base = _pixels(reader.GetOutput())
         if (tw, th) != (bw, bh):
             _say(sys.__stderr__, "PsiGUICheck FAILED: %s: image %dx%d, baseline %dx%d"

@@ -3,15 +3,16 @@
 view and measured against the exact reference, the project's CPU ray caster
 (Testing/Support/PsiReferenceRaycaster, run by build/bin/psi_reference_render).
 
-From pvpython or the GUI's Python shell, on the active view and the active source's volume:
-    import psi_accuracy; psi_accuracy.report(out_dir="accuracy")
-As a command (scripts/accuracy-report.sh wraps it under Xvfb):
-    pvpython Python/psi_accuracy.py [FILE|bluntfin|post|comb|spx] [--array NAME] [--out DIR]
-                                    [--size 384] [--frames 3] [--wavelet-half 20]
-                                    [--unit-distance U] [--no-paraview] [--paraview-timeout 120]
-                                    [--paraview-mappers 'Projected tetra' 'Z sweep' ...]
-                                    [--budget 300]
-Times come from interleaved rounds (Python/psi_timing.py): every method and mapper once per round,
+From pvpython or the GUI's Python shell (the checkout's Python/ folder on sys.path or
+PYTHONPATH), on the active view and the active source's volume:
+    from psivolume import accuracy; accuracy.report(out_dir="accuracy")
+As a command (scripts/accuracy-report.sh wraps it under Xvfb), with PYTHONPATH=Python:
+    pvpython -m psivolume.accuracy [FILE|bluntfin|post|comb|spx] [--array NAME] [--out DIR]
+                                   [--size 384] [--frames 3] [--wavelet-half 20]
+                                   [--unit-distance U] [--no-paraview] [--paraview-timeout 120]
+                                   [--paraview-mappers 'Projected tetra' 'Z sweep' ...]
+                                   [--budget 300]
+Times come from interleaved rounds (psivolume.timing): every method and mapper once per round,
 medians over the rounds, ratios to Average taken round by round, until every ratio's spread is
 within 5% or the budget is spent. Prints the table and writes DIR/report.md, DIR/accuracy.png (error against time),
 DIR/methods.png (each image and its error map) and the rows as DIR/report.json. ParaView's
@@ -21,9 +22,7 @@ import argparse
 import glob
 import json
 import os
-import shutil
 import subprocess
-import sys
 import tempfile
 import time
 
@@ -34,12 +33,7 @@ from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
 from vtkmodules.vtkRenderingCore import vtkColorTransferFunction
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import psi_bench  # noqa: E402
-import psi_data  # noqa: E402
-import psi_process  # noqa: E402
-import psi_testing  # noqa: E402
-import psi_timing  # noqa: E402
+from . import accuracy_plots, bench, data, testing, timing
 
 PARAVIEW_MAPPERS = ["Projected tetra", "Z sweep", "Bunyk ray cast"]
 REFERENCE = "Exact reference (CPU)"
@@ -51,17 +45,13 @@ def find_reference_renderer():
     """build/bin/psi_reference_render (PSI_REFERENCE_RENDER overrides)."""
     if os.environ.get("PSI_REFERENCE_RENDER"):
         return os.environ["PSI_REFERENCE_RENDER"]
-    plugin = psi_data.find_plugin()
+    plugin = data.find_plugin()
     # <build>/lib*/paraview-X.Y/plugins/PsiVolume/PsiVolume.so
     build = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(plugin)))))
     hits = glob.glob(os.path.join(build, "bin", "psi_reference_render"))
     if not hits:
         raise RuntimeError("psi_reference_render not built: run scripts/build.sh")
     return hits[0]
-
-
-def find_pvpython():
-    return os.environ.get("PSI_PVPYTHON") or shutil.which("pvpython") or "pvpython"
 
 
 class Capture:
@@ -71,7 +61,7 @@ class Capture:
     def __init__(self, view, rep, src, work):
         self.view, self.rep, self.src, self.work = view, rep, src, work
         self.array = rep.ColorArrayName[1]
-        self.association = rep.ColorArrayName[0] or psi_data.association(src, self.array)
+        self.association = rep.ColorArrayName[0] or data.association(src, self.array)
         self.lut = simple.GetColorTransferFunction(self.array)
         self.pwf = simple.GetOpacityTransferFunction(self.array)
         self.size = list(view.ViewSize)
@@ -79,20 +69,20 @@ class Capture:
         self.write_mesh()
 
     def write_mesh(self):
-        data = servermanager.Fetch(self.src)
-        if data.IsA("vtkCompositeDataSet"):
+        grid = servermanager.Fetch(self.src)
+        if grid.IsA("vtkCompositeDataSet"):
             merged = simple.MergeBlocks(Input=self.src)
-            data = servermanager.Fetch(merged)
+            grid = servermanager.Fetch(merged)
             simple.Delete(merged)
-        if not data.IsA("vtkUnstructuredGrid"):
+        if not grid.IsA("vtkUnstructuredGrid"):
             tets = vtkDataSetTriangleFilter()
-            tets.SetInputData(data)
+            tets.SetInputData(grid)
             tets.Update()
-            data = tets.GetOutput()
-        self.cells = data.GetNumberOfCells()
+            grid = tets.GetOutput()
+        self.cells = grid.GetNumberOfCells()
         w = vtkXMLUnstructuredGridWriter()
         w.SetFileName(self.mesh)
-        w.SetInputData(data)
+        w.SetInputData(grid)
         w.SetDataModeToAppended()
         w.Write()
 
@@ -181,7 +171,7 @@ def reference_image(cap, runs=2):
         seconds.append(time.perf_counter() - t)
         img = np.fromfile(out, dtype=np.float64).reshape(cap.size[1], cap.size[0], 3)
         images.append(np.clip(img, 0, 1) * 255.0)
-    return images, min(seconds)
+    return images, timing.frame_time(seconds)
 
 
 def psi_contenders(cap, methods):
@@ -192,13 +182,13 @@ def psi_contenders(cap, methods):
             name = "%s%s" % (m, " + adaptive" if adaptive == "On" else "")
 
             def prepare(m=m, adaptive=adaptive):
-                psi_bench.set_mapper(cap.rep, "Psi Volume|" + m)
+                bench.set_mapper(cap.rep, "Psi Volume|" + m)
                 cap.rep.AdaptiveSampling = adaptive
 
             prepare()
             simple.Render(cap.view)
-            images[name] = psi_testing.grab(cap.view)
-            contenders.append(psi_timing.InProcess(name, cap.view, prepare))
+            images[name] = testing.grab(cap.view)
+            contenders.append(timing.InProcess(name, cap.view, prepare))
     return contenders, images
 
 
@@ -210,13 +200,19 @@ def paraview_contenders(cap, mappers, timeout=120):
     contenders, images = [], {}
     for name in mappers:
         out = os.path.join(cap.work, "pv_%s.npy" % name.replace(" ", "_"))
-        cmd = [find_pvpython(), "--force-offscreen-rendering", os.path.abspath(__file__),
-               "--child-mapper", name, "--child-scene", scene, "--child-out", out]
-        proc = psi_timing.ChildProcess(cmd, env=psi_timing.child_environment(), timeout=timeout)
+        proc = timing.ChildProcess(child_command(name, scene, out), env=timing.child_environment(),
+                                   timeout=timeout)
         row = "ParaView " + name
         images[row] = np.load(out) if proc.ready and os.path.exists(out) else None
-        contenders.append(psi_timing.Child(row, proc))
+        contenders.append(timing.Child(row, proc))
     return contenders, images
+
+
+def child_command(mapper, scene, out):
+    """The command of a child pvpython drawing `mapper` on the scene written by
+    Capture.write_child_scene to `scene` (child_main)."""
+    return [timing.pvpython(), "--force-offscreen-rendering", "-m", __spec__.name,
+            "--child-mapper", mapper, "--child-scene", scene, "--child-out", out]
 
 
 def errors(img, ref):
@@ -231,8 +227,6 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
     """Renders the active (or given) view's volume with every method and mapper, measures each
     image against the exact reference at the same view, prints the table and writes
     out_dir/report.md, accuracy.png and methods.png. Returns the rows as dicts."""
-    import psi_accuracy_plots
-
     view = view or simple.GetActiveView()
     src = src or simple.GetActiveSource()
     rep = rep or simple.GetDisplayProperties(src, view)
@@ -250,12 +244,12 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
         psi, images = psi_contenders(cap, methods)
         pv, pv_images = paraview_contenders(cap, paraview_mappers, paraview_timeout)
         images.update(pv_images)
-        timing = psi_timing.interleaved(psi + pv, BASELINE, frames=frames, budget=budget,
-                                        min_rounds=5, log=lambda m: print("  " + m, flush=True))
+        timed = timing.interleaved(psi + pv, BASELINE, frames=frames, budget=budget,
+                                   min_rounds=5, log=lambda m: print("  " + m, flush=True))
         rows = []
         for c in psi + pv:
             rows.append(dict(name=c.name, image=images.get(c.name),
-                             note=timing.notes[c.name], **timing.row(c.name)))
+                             note=timed.notes[c.name], **timed.row(c.name)))
         rows.append(dict(name=REFERENCE, spf=ref_seconds, image=refs[-1], note="",
                          spf_min=ref_seconds, spf_max=ref_seconds, cpu=None, ratio=None,
                          ratio_spread=None, rounds=1))
@@ -265,21 +259,21 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
         r["mean"], r["max"] = errors(r["image"], ref)
         r["err_s"] = r["mean"] * r["spf"] if r["spf"] is not None else float("nan")
     info = dict(title=title or "%s (%s)" % (src.GetXMLLabel(), cap.array), cells=cap.cells,
-                size=cap.size, frames=frames, timing=timing.summary(), baseline=BASELINE,
-                rounds=timing.rounds, converged=timing.converged,
+                size=cap.size, frames=frames, timing=timed.summary(), baseline=BASELINE,
+                rounds=timed.rounds, converged=timed.converged,
                 threads=os.environ.get("LP_NUM_THREADS", "all"))
-    print(psi_accuracy_plots.table_text(rows, info))
-    psi_accuracy_plots.write_all(rows, ref, info, out_dir)
+    print(accuracy_plots.table_text(rows, info))
+    accuracy_plots.write_all(rows, ref, info, out_dir)
     return [{k: v for k, v in r.items() if k != "image"} for r in rows]
 
 
 def child_main(args):
     """One mapper on the captured scene (one of ParaView's, or 'Psi Volume|<method>'): saves its
-    image as .npy, then draws the timing rounds it is asked for (psi_timing.serve_rounds)."""
+    image as .npy, then draws the timing rounds it is asked for (timing.serve_rounds)."""
     with open(args.child_scene) as f:
         s = json.load(f)
     if args.child_mapper.startswith("Psi Volume"):
-        psi_data.load_plugin(globals())
+        data.load_plugin(globals())
     reader = simple.XMLUnstructuredGridReader(FileName=[s["mesh"]])
     view = simple.CreateRenderView()
     view.ViewSize = s["size"]
@@ -296,7 +290,7 @@ def child_main(args):
     lut.VectorMode = s["vector_mode"]
     lut.VectorComponent = s["vector_component"]
     pwf.Points = s["opacity_points"]
-    psi_bench.set_mapper(d, args.child_mapper)
+    bench.set_mapper(d, args.child_mapper)
     d.ScalarOpacityUnitDistance = s["unit"]
     c = s["camera"]
     view.CameraPosition, view.CameraFocalPoint, view.CameraViewUp = (
@@ -305,35 +299,23 @@ def child_main(args):
     view.CameraParallelProjection = c["parallel"]
     view.CameraParallelScale = c["scale"]
     simple.Render(view)
-    np.save(args.child_out, psi_testing.grab(view))
-    psi_timing.serve_rounds(view, d)
-    psi_testing.exit_now(0)
+    np.save(args.child_out, testing.grab(view))
+    timing.serve_rounds(view, d)
+    testing.exit_now(0)
 
 
 def command_scene(args):
     """Source, array and a view for the command line: FILE, a shared dataset or the Wavelet."""
     if args.file:
         name = args.file
-        shared = psi_data.PLOT3D.get(name, psi_data.NAMED_FILES.get(name))
-        if shared and not os.path.exists(os.path.join(psi_data.SHARED_DATA, shared[0])):
-            print("SKIP: %s not found in %s" % (name, psi_data.SHARED_DATA))
-            psi_testing.exit_now(psi_testing.SKIP)
-        src, array = psi_data.open_any(name, args.array)
-    else:
-        src, array = psi_data.wavelet(args.wavelet_half)
-    if array is None:
-        raise SystemExit("%s has no point or cell array to render" % args.file)
-    view = simple.CreateRenderView()
-    view.ViewSize = [args.size, args.size]
-    view.OrientationAxesVisibility = 0
-    d = psi_data.show_volume(src, array, view, unit_distance=args.unit_distance)
+        shared = data.PLOT3D.get(name, data.NAMED_FILES.get(name))
+        if shared and not os.path.exists(os.path.join(data.SHARED_DATA, shared[0])):
+            print("SKIP: %s not found in %s" % (name, data.SHARED_DATA))
+            testing.exit_now(testing.SKIP)
+    src, array = data.open_or_wavelet(args.file, args.array, args.wavelet_half)
+    view, d = data.volume_view(src, array, args.size, args.unit_distance)
     simple.SetActiveView(view)
     simple.SetActiveSource(src)
-    view.ResetCamera()
-    cam = view.GetActiveCamera()
-    cam.Azimuth(30)
-    cam.Elevation(20)
-    view.ResetCamera()
     title = args.file or "Wavelet %d^3, tetrahedralized" % (2 * args.wavelet_half + 1)
     return view, d, src, "%s (%s)" % (title, array)
 
@@ -361,12 +343,12 @@ def main():
     args = p.parse_args()
     if args.child_mapper:
         child_main(args)
-    psi_data.load_plugin(globals())
+    data.load_plugin(globals())
     view, rep, src, title = command_scene(args)
     report(view, rep, src, args.out, args.frames,
            [] if args.no_paraview else args.paraview_mappers, title, args.paraview_timeout,
            args.budget)
-    psi_testing.exit_now(0)
+    testing.exit_now(0)
 
 
 if __name__ == "__main__":

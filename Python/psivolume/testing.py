@@ -1,4 +1,6 @@
-"""Helpers for the pvpython tests: image capture and comparison, checks that count failures."""
+"""Helpers for the pvpython tests: image capture and comparison, checks that count failures, and
+the project's PNG writer (write_png: the accuracy report's plots, the tests' images, the GUI
+tests' strict check, the README's screenshot)."""
 import os
 import sys
 
@@ -79,3 +81,30 @@ def covered(img, background):
     """Pixels that differ from the background color by more than 2/255."""
     bg = np.array(background, dtype=np.float64) * 255.0
     return int((np.abs(img - bg).sum(axis=2) > 2.0).sum())
+
+
+def write_png(rgb, path):
+    """Writes `rgb` (rows x columns x 3, bottom row first, as VTK orders images; values 0..255,
+    clipped) to a PNG."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+    from vtkmodules.vtkIOImage import vtkPNGWriter
+
+    h, w, _ = rgb.shape
+    img = vtkImageData()
+    img.SetDimensions(w, h, 1)
+    arr = numpy_to_vtk(np.clip(rgb.reshape(-1, 3), 0, 255).astype(np.uint8), deep=1)
+    img.GetPointData().SetScalars(arr)
+    writer = vtkPNGWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(img)
+    writer.Write()
+
+
+def apply_requested(display):
+    """Gives a 'Psi Volume' display the projector the test's command line asks for
+    (`--projector compute` or `--projector geometry`; CTest's `.compute` variants), and returns it."""
+    if "--projector" in sys.argv:
+        asked = sys.argv[sys.argv.index("--projector") + 1]
+        display.Projector = {"compute": "Compute Shader", "geometry": "Geometry Shader"}[asked]
+    return display

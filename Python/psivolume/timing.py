@@ -5,8 +5,10 @@ once per round, the order rotating from round to round, so that whatever else th
 (another process, a frequency change) falls on all of them alike. In its turn a contender draws
 `warmup` frames that are not counted (tables, shaders, the first sort), then `frames` timed
 frames, the camera turning by +-`jitter` degrees between them so that view-dependent work is
-counted; its round time is the median of those frames, in wall seconds and in CPU seconds of the
-process that drew them (all its threads: Mesa's llvmpipe renders inside the process).
+counted (or around an orbit); its round time is the frame_time (median) of those frames, in wall
+seconds and in CPU seconds of the process that drew them (all its threads: Mesa's llvmpipe
+renders inside the process). A single frame is timed by frame(), a view's frames by
+time_frames(): the benchmarks, the render command and the accuracy report time frames that way.
 
 Each contender's ratio to the baseline is taken round by round, against the baseline measured in
 the same round, and summarized by its median and interquartile range. Rounds go on until every
@@ -26,45 +28,66 @@ import time
 
 import numpy as np
 
+from . import process
+
 ROUND_PREFIX = "PSI_ROUND "
 CHILD_READY = "PSI_CHILD_READY"
 
 
-def time_frames(view, frames, warmup=1, jitter=0.5):
-    """(wall, cpu) seconds per frame of `view`: `warmup` frames untimed, then the median of
-    `frames` timed ones (a frame that met a hiccup of the machine does not move it). The camera
-    turns by +-`jitter` degrees between frames and is put back."""
-    from paraview import simple
-    import psi_data
+def wait(view):
+    """Blocks until the GL work of the last render of `view` is done (for wall-clock frame
+    times)."""
+    view.GetRenderWindow().WaitForCompletion()
 
+
+def frame(view):
+    """(wall, cpu) seconds of one frame of `view`: its Render and the GL work it started."""
+    from paraview import simple
+
+    wall0, cpu0 = time.perf_counter(), time.process_time()
+    simple.Render(view)
+    wait(view)
+    return time.perf_counter() - wall0, time.process_time() - cpu0
+
+
+def frame_time(seconds):
+    """The frame time of frames timed one by one (a list of seconds): their median, so that a
+    frame that met a hiccup of the machine does not move it. Every frame time of the project is
+    summarized by this function."""
+    return float(np.median(seconds))
+
+
+def time_frames(view, frames, warmup=1, jitter=0.5, orbit=False):
+    """(wall, cpu) seconds per frame of `view`: `warmup` frames untimed, then the frame_time of
+    `frames` timed ones. The camera turns by +-`jitter` degrees between frames, or with `orbit`
+    by 360/`frames` degrees before each (an orbit), and is put back."""
     cam = view.GetActiveCamera()
     saved = (list(view.CameraPosition), list(view.CameraFocalPoint), list(view.CameraViewUp))
     for _ in range(warmup):
-        simple.Render(view)
-        psi_data.wait(view)
+        frame(view)
+    frames = max(frames, 1)
     walls, cpus = [], []
-    for k in range(max(frames, 1)):
-        cam.Azimuth(jitter if k % 2 == 0 else -jitter)
-        wall0, cpu0 = time.perf_counter(), time.process_time()
-        simple.Render(view)
-        psi_data.wait(view)
-        walls.append(time.perf_counter() - wall0)
-        cpus.append(time.process_time() - cpu0)
+    for k in range(frames):
+        cam.Azimuth(360.0 / frames if orbit else (jitter if k % 2 == 0 else -jitter))
+        wall, cpu = frame(view)
+        walls.append(wall)
+        cpus.append(cpu)
     view.CameraPosition, view.CameraFocalPoint, view.CameraViewUp = saved
-    return float(np.median(walls)), float(np.median(cpus))
+    return frame_time(walls), frame_time(cpus)
 
 
 class InProcess:
     """A contender drawn in this process: `prepare()` puts the view in its state (a
-    representation, a method), then its frames are timed."""
+    representation, a method), then its frames are timed (time_frames; over an orbit with
+    `orbit`)."""
 
-    def __init__(self, name, view, prepare=None):
-        self.name, self.view, self.prepare, self.note = name, view, prepare, ""
+    def __init__(self, name, view, prepare=None, orbit=False):
+        self.name, self.view, self.prepare, self.orbit, self.note = name, view, prepare, orbit, ""
 
     def measure(self, frames, warmup, jitter):
         if self.prepare:
             self.prepare()
-        return time_frames(self.view, frames, warmup, jitter)
+        return time_frames(self.view, frames, warmup, jitter, self.orbit)
 
     def close(self):
         pass
@@ -141,8 +164,8 @@ class Child:
     """A contender drawn in a ChildProcess (several may share one), with the representation
     settings it needs (for example {"IntegrationMethod": "Average"})."""
 
-    def __init__(self, name, process, settings=None):
-        self.name, self.process, self.settings = name, process, settings or {}
+    def __init__(self, name, proc, settings=None):
+        self.name, self.process, self.settings = name, proc, settings or {}
 
     @property
     def note(self):
@@ -217,8 +240,8 @@ class Result:
         if not w:
             return dict(spf=None, spf_min=None, spf_max=None, cpu=None, ratio=None,
                         ratio_spread=None, rounds=0)
-        return dict(spf=float(np.median(w)), spf_min=min(w), spf_max=max(w),
-                    cpu=float(np.median(c)), ratio=float(np.median(r)) if r else None,
+        return dict(spf=frame_time(w), spf_min=min(w), spf_max=max(w), cpu=frame_time(c),
+                    ratio=float(np.median(r)) if r else None,
                     ratio_spread=self.spread(name) if r else None, rounds=len(w))
 
     def summary(self):
@@ -277,9 +300,7 @@ def interleaved(contenders, baseline, frames=3, warmup=1, jitter=0.5, min_rounds
 def child_environment(threads=None):
     """The environment of a child pvpython: no MPI-singleton variables, unbuffered, and
     optionally llvmpipe's thread count."""
-    import psi_process
-
-    env = psi_process.environment_without_mpi()
+    env = process.environment_without_mpi()
     if threads is not None:
         env["LP_NUM_THREADS"] = str(threads)
     return env

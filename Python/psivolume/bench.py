@@ -2,27 +2,25 @@
 the view, and the exact reference (ParaView's Bunyk ray caster with VTK's linear ray integrator)
 at chosen orbit steps."""
 import os
-import time
 
 import numpy as np
 from paraview import simple
 from vtkmodules.vtkRenderingVolume import vtkUnstructuredGridLinearRayIntegrator
 
-import psi_data
-import psi_testing
+from . import data, testing, timing
 
 
-def load(data):
+def load(name):
     """Source and array for 'wavelet', a PLOT3D name or a file. A benchmark on a PLOT3D dataset
     whose files are absent prints SKIP and ends here."""
-    if data == "wavelet":
-        return psi_data.wavelet()
-    if data in psi_data.PLOT3D:
-        if not os.path.exists(os.path.join(psi_data.SHARED_DATA, psi_data.PLOT3D[data][0])):
-            print("SKIP: %s not found in %s" % (data, psi_data.SHARED_DATA))
-            psi_testing.exit_now(0)
-        return psi_data.plot3d(data)
-    return psi_data.open_any(data)
+    if name == "wavelet":
+        return data.wavelet()
+    if name in data.PLOT3D:
+        if not os.path.exists(os.path.join(data.SHARED_DATA, data.PLOT3D[name][0])):
+            print("SKIP: %s not found in %s" % (name, data.SHARED_DATA))
+            testing.exit_now(0)
+        return data.plot3d(name)
+    return data.open_any(name)
 
 
 def set_mapper(rep, name):
@@ -48,7 +46,7 @@ def scale_view(source, array, mapper, size):
     view = simple.CreateRenderView()
     view.ViewSize = [size, size]
     view.OrientationAxesVisibility = 0
-    rep = psi_data.show_volume(source, array, view, representation="Volume")
+    rep = data.show_volume(source, array, view, representation="Volume")
     if mapper.startswith("Psi Volume"):
         rep.SetRepresentationType("Psi Volume")
         fan = mapper.endswith(" fan")
@@ -94,8 +92,8 @@ class Scene:
         self.view.OrientationAxesVisibility = 0
         self.view.UseColorPaletteForBackground = 0
         self.view.Background = [0.0, 0.0, 0.0]
-        self.rep = psi_data.show_volume(src, array, self.view, representation="Volume",
-                                        unit_distance=unit_distance)
+        self.rep = data.show_volume(src, array, self.view, representation="Volume",
+                                    unit_distance=unit_distance)
         simple.GetColorTransferFunction(array).ColorSpace = "RGB"
         if transparent_below > 0:
             # opacity 0 on the lower part of the range, then a ramp to 1: a typical user choice,
@@ -134,16 +132,14 @@ class Scene:
         bunyk = self.rep.GetClientSideObject().GetActiveRepresentation().GetActiveVolumeMapper()
         bunyk.SetRayIntegrator(vtkUnstructuredGridLinearRayIntegrator())
         self.reset_camera()
-        refs = {}
-        t0 = time.perf_counter()
+        refs, seconds = {}, []
         for k in range(self.frames):
             if k in steps:
-                simple.Render(self.view)
-                refs[k] = psi_testing.grab(self.view)
+                seconds.append(timing.frame(self.view)[0])
+                refs[k] = testing.grab(self.view)
             self.step()
-        seconds = (time.perf_counter() - t0) / max(len(refs), 1)
         bunyk.SetRayIntegrator(None)
-        return refs, seconds
+        return refs, timing.frame_time(seconds) if seconds else float("nan")
 
     def errors(self, name, refs, png_dir=""):
         """Mean and max pixel error (0..255) of `name` against the reference images, over the
@@ -154,7 +150,7 @@ class Scene:
         for k in range(self.frames):
             if k in refs:
                 simple.Render(self.view)
-                img = psi_testing.grab(self.view)
+                img = testing.grab(self.view)
                 e = np.abs(img - refs[k])
                 errs.append(e.mean())
                 maxes.append(e.max())
@@ -168,15 +164,13 @@ class Scene:
 
     def timing(self, names, baseline, frames=3, budget=300.0):
         """Seconds per frame of each of `names` (mapper names as set_mapper takes them) in
-        interleaved rounds, ratios to `baseline` (psi_timing.interleaved), at the orbit's start."""
-        import psi_timing
-
+        interleaved rounds, ratios to `baseline` (timing.interleaved), at the orbit's start."""
         def contender(name):
             def prepare():
                 self.set_mapper(name)
                 self.reset_camera()
-            return psi_timing.InProcess(name, self.view, prepare)
+            return timing.InProcess(name, self.view, prepare)
 
-        return psi_timing.interleaved([contender(n) for n in names], baseline, frames=frames,
-                                      budget=budget, min_rounds=5,
-                                      log=lambda m: print("  " + m, flush=True))
+        return timing.interleaved([contender(n) for n in names], baseline, frames=frames,
+                                  budget=budget, min_rounds=5,
+                                  log=lambda m: print("  " + m, flush=True))

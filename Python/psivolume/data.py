@@ -6,8 +6,10 @@ import os
 
 from paraview import servermanager, simple
 
+# The checkout's root: this file is <root>/Python/psivolume/data.py.
+SOURCE_ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 SHARED_DATA = os.environ.get("PSI_DATA") or os.path.normpath(
-    os.path.join(os.path.dirname(__file__), "..", "..", "shared", "data"))
+    os.path.join(SOURCE_ROOT, "..", "shared", "data"))
 
 # PLOT3D datasets of ../shared/data: grid file, solution file, IBLANK, array to render.
 PLOT3D = {
@@ -24,8 +26,7 @@ def find_plugin():
     """Path of the built plugin (PSI_PLUGIN overrides)."""
     if os.environ.get("PSI_PLUGIN"):
         return os.environ["PSI_PLUGIN"]
-    here = os.path.dirname(os.path.abspath(__file__))
-    build = os.environ.get("PSI_BUILD_DIR") or os.path.join(here, "..", "build")
+    build = os.environ.get("PSI_BUILD_DIR") or os.path.join(SOURCE_ROOT, "build")
     # The plugin directory is named for the ParaView it was built against (CMakeLists.txt):
     # only a build for the running ParaView can load.
     sm = servermanager.vtkSMProxyManager
@@ -103,6 +104,15 @@ def open_any(path, array=None):
     return src, array
 
 
+def open_or_wavelet(path=None, array=None, half=20):
+    """open_any(`path`, `array`), or with no path the embedded default (wavelet(`half`)); ends
+    the program with a message when there is no array to render."""
+    src, array = open_any(path, array) if path else wavelet(half)
+    if array is None:
+        raise SystemExit("%s has no point or cell array to render" % path)
+    return src, array
+
+
 def association(src, array):
     """'POINTS' or 'CELLS' for the array name."""
     if src.PointData.GetArray(array) is not None:
@@ -121,6 +131,17 @@ def show_volume(src, array, view, representation="Psi Volume", unit_distance=Non
     return d
 
 
-def wait(view):
-    """Blocks until the GL work of the last render is done (for wall-clock frame times)."""
-    view.GetRenderWindow().WaitForCompletion()
+def volume_view(src, array, size, unit_distance=None):
+    """The commands' scene (the render command, the accuracy report): `src` shown as a volume
+    colored by `array` in a size x size view without orientation axes, the camera reset, turned
+    30 degrees and raised 20. Returns (view, representation)."""
+    view = simple.CreateRenderView()
+    view.ViewSize = [size, size]
+    view.OrientationAxesVisibility = 0
+    d = show_volume(src, array, view, unit_distance=unit_distance)
+    view.ResetCamera()
+    cam = view.GetActiveCamera()
+    cam.Azimuth(30)
+    cam.Elevation(20)
+    view.ResetCamera()
+    return view, d

@@ -1,13 +1,16 @@
-"""Outputs of the accuracy report (psi_accuracy.report): the table as text and Markdown, the
+"""Outputs of the accuracy report (accuracy.report): the table as text and Markdown, the
 error-against-time plot (accuracy.png) and the images with their error maps (methods.png).
-Uses matplotlib when it imports; otherwise writes the plots with VTK's PNG writer (plain points
-and images, no text) and says so in report.md."""
+Uses matplotlib when it imports; otherwise writes the plots with the project's PNG writer
+(testing.write_png: plain points and images, no text) and says so in report.md."""
 import json
 import math
 import os
 import textwrap
 
 import numpy as np
+
+from . import moreland
+from .testing import write_png
 
 try:
     import matplotlib
@@ -90,13 +93,11 @@ def write_all(rows, ref, info, out_dir):
 
 def moreland_section(rows, info):
     """Moreland's Table 6.4 beside this report's ratios (frame rates relative to Average)."""
-    import psi_moreland
-
     ours = {r["name"]: (r.get("ratio"), r.get("ratio_spread") or 0.0) for r in rows}
     heading = "this scene, llvmpipe threads: %s" % info.get("threads", "all")
     return ("Frame rate relative to Average, beside Moreland's Table 6.4 (Quadro FX 3000, "
             "800x800; ours with the spread of the ratio over the rounds):\n\n" +
-            psi_moreland.side_by_side([(heading, ours)]))
+            moreland.side_by_side([(heading, ours)]))
 
 
 def _spread(targets, gap):
@@ -196,23 +197,6 @@ def plot_methods(rows, ref, path, pairs_per_line=4):
     fig.savefig(path, dpi=80)
     plt.close(fig)
     return True
-
-
-def write_png(rgb, path):
-    """Writes `rgb` (rows x columns x 3, bottom row first, as VTK orders images) to a PNG."""
-    from vtkmodules.util.numpy_support import numpy_to_vtk
-    from vtkmodules.vtkCommonDataModel import vtkImageData
-    from vtkmodules.vtkIOImage import vtkPNGWriter
-
-    h, w, _ = rgb.shape
-    img = vtkImageData()
-    img.SetDimensions(w, h, 1)
-    arr = numpy_to_vtk(np.ascontiguousarray(rgb.reshape(-1, 3)).astype(np.uint8), deep=1)
-    img.GetPointData().SetScalars(arr)
-    writer = vtkPNGWriter()
-    writer.SetFileName(path)
-    writer.SetInputData(img)
-    writer.Write()
 
 
 def _fallback_scatter(pts, path, n=400):

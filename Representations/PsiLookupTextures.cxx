@@ -1,27 +1,14 @@
-#include "PsiTransferTextures.h"
+#include "PsiLookupTextures.h"
 
 #include "PsiTable.h"
 #include "PsiTransferFunctionAnalysis.h"
 
-#include "vtkOpenGLRenderWindow.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkVolumeProperty.h"
 
 namespace
 {
-void SetLinearClamped(vtkTextureObject* t, bool r = false)
-{
-  t->SetMinificationFilter(vtkTextureObject::Linear);
-  t->SetMagnificationFilter(vtkTextureObject::Linear);
-  t->SetWrapS(vtkTextureObject::ClampToEdge);
-  t->SetWrapT(vtkTextureObject::ClampToEdge);
-  if (r)
-  {
-    t->SetWrapR(vtkTextureObject::ClampToEdge);
-  }
-}
-
 void SetUniform2(vtkShaderProgram* p, const char* name, double a, double b)
 {
   const float v[2] = { static_cast<float>(a), static_cast<float>(b) };
@@ -30,8 +17,10 @@ void SetUniform2(vtkShaderProgram* p, const char* name, double a, double b)
 } // namespace
 
 // ---- transfer function ------------------------------------------------------------------------
-PsiTransferFunctionTexture::PsiTransferFunctionTexture() = default;
-PsiTransferFunctionTexture::~PsiTransferFunctionTexture() = default;
+PsiTransferFunctionTexture::PsiTransferFunctionTexture()
+  : PsiLookupTexture("transferFunction")
+{
+}
 
 bool PsiTransferFunctionTexture::NeedsUpdate(const PsiTableSources& in) const
 {
@@ -52,11 +41,10 @@ void PsiTransferFunctionTexture::Update(vtkOpenGLRenderWindow* renWin, const Psi
   // the prefix also sees control points between samples, which the table may not show
   bool zero = false;
   std::vector<float> prefix = psi::OpacityPrefixCounts(tf, property, zero);
-  if (tf.Rgba != this->Table.Rgba || prefix != this->OpacityPrefix || !this->Texture->GetHandle())
+  if (tf.Rgba != this->Table.Rgba || prefix != this->OpacityPrefix || !this->IsUploaded())
   {
-    this->Texture->SetContext(renWin);
-    this->Texture->Create1DFromRaw(tf.Size, 4, VTK_FLOAT, tf.Rgba.data());
-    SetLinearClamped(this->Texture);
+    this->TextureIn(renWin)->Create1DFromRaw(tf.Size, 4, VTK_FLOAT, tf.Rgba.data());
+    this->SetLinearClamped();
     this->Table = std::move(tf);
     this->OpacityPrefix = std::move(prefix);
     this->ZeroOpacity = zero;
@@ -70,10 +58,8 @@ void PsiTransferFunctionTexture::Update(vtkOpenGLRenderWindow* renWin, const Psi
   this->Samples = in.Samples;
 }
 
-void PsiTransferFunctionTexture::Activate(vtkShaderProgram* program)
+void PsiTransferFunctionTexture::SetUniforms(vtkShaderProgram* program)
 {
-  this->Texture->Activate();
-  program->SetUniformi("transferFunction", this->Texture->GetTextureUnit());
   // texture coordinate = u * scale + shift, on texel centres, for u the scalar as a fraction of
   // the table's range (psi::TetMesh::Points4: the mesh's range is the table's); the same for a
   // separate opacity array's scalars, fractions of the attenuation's range
@@ -82,22 +68,18 @@ void PsiTransferFunctionTexture::Activate(vtkShaderProgram* program)
   SetUniform2(program, "tfOpacityScaleShift", (n - 1) / n, 0.5 / n);
 }
 
-void PsiTransferFunctionTexture::Deactivate()
+void PsiTransferFunctionTexture::Forget()
 {
-  this->Texture->Deactivate();
-}
-
-void PsiTransferFunctionTexture::ReleaseGraphicsResources(vtkWindow* win)
-{
-  this->Texture->ReleaseGraphicsResources(win);
   this->Table = psi::TransferFunctionTable();
   this->OpacityPrefix.clear();
   this->Time = 0;
 }
 
 // ---- opacity prefix counts (early discard) ----------------------------------------------------
-PsiOpacityPrefixTexture::PsiOpacityPrefixTexture() = default;
-PsiOpacityPrefixTexture::~PsiOpacityPrefixTexture() = default;
+PsiOpacityPrefixTexture::PsiOpacityPrefixTexture()
+  : PsiLookupTexture("opacityPrefix")
+{
+}
 
 bool PsiOpacityPrefixTexture::NeedsUpdate(const PsiTableSources& in) const
 {
@@ -108,69 +90,45 @@ void PsiOpacityPrefixTexture::Update(vtkOpenGLRenderWindow* renWin, const PsiTab
 {
   const PsiTransferFunctionTexture& transfer = *in.Transfer;
   this->Samples = transfer.GetTable().Size;
-  this->Texture->SetContext(renWin);
-  this->Texture->Create2DFromRaw(
+  this->TextureIn(renWin)->Create2DFromRaw(
     this->Samples, 1, 1, VTK_FLOAT, const_cast<float*>(transfer.GetOpacityPrefix().data()));
   this->Version = transfer.GetVersion();
 }
 
-void PsiOpacityPrefixTexture::Activate(vtkShaderProgram* program)
+void PsiOpacityPrefixTexture::SetUniforms(vtkShaderProgram* program)
 {
-  this->Texture->Activate();
-  program->SetUniformi("opacityPrefix", this->Texture->GetTextureUnit());
   // opacity scalar, a fraction u of the table's opacity range -> sample index u (N - 1)
   SetUniform2(program, "tfIndexScaleShift", this->Samples - 1.0, 0.0);
   program->SetUniformi("tfSamples", this->Samples);
 }
 
-void PsiOpacityPrefixTexture::Deactivate()
+// ---- the Ψ table (partial pre-integration) ----------------------------------------------------
+PsiPartialPreIntegrationTexture::PsiPartialPreIntegrationTexture()
+  : PsiLookupTexture("psiTable")
 {
-  this->Texture->Deactivate();
 }
 
-void PsiOpacityPrefixTexture::ReleaseGraphicsResources(vtkWindow* win)
-{
-  this->Texture->ReleaseGraphicsResources(win);
-  this->Version = -1;
-}
-
-// ---- Psi table (partial pre-integration) ------------------------------------------------------
-PsiPsiTableTexture::PsiPsiTableTexture() = default;
-PsiPsiTableTexture::~PsiPsiTableTexture() = default;
-
-void PsiPsiTableTexture::Update(vtkOpenGLRenderWindow* renWin, const PsiTableSources&)
+void PsiPartialPreIntegrationTexture::Update(vtkOpenGLRenderWindow* renWin, const PsiTableSources&)
 {
   const psi::PsiTable& table = psi::GetDefaultPsiTable();
-  this->Texture->SetContext(renWin);
-  this->Texture->Create2DFromRaw(
+  this->TextureIn(renWin)->Create2DFromRaw(
     table.N, table.N, 1, VTK_FLOAT, const_cast<float*>(table.Values.data()));
-  SetLinearClamped(this->Texture);
+  this->SetLinearClamped();
   this->Size = table.N;
 }
 
-void PsiPsiTableTexture::Activate(vtkShaderProgram* program)
+void PsiPartialPreIntegrationTexture::SetUniforms(vtkShaderProgram* program)
 {
-  this->Texture->Activate();
-  program->SetUniformi("psiTable", this->Texture->GetTextureUnit());
   SetUniform2(program, "psiScaleShift", (this->Size - 1.0) / this->Size, 0.5 / this->Size);
 }
 
-void PsiPsiTableTexture::Deactivate()
-{
-  this->Texture->Deactivate();
-}
-
-void PsiPsiTableTexture::ReleaseGraphicsResources(vtkWindow* win)
-{
-  this->Texture->ReleaseGraphicsResources(win);
-  this->Size = 0;
-}
-
 // ---- full pre-integration (Röttger et al. 2000) -----------------------------------------------
-PsiPreIntegrationTexture::PsiPreIntegrationTexture() = default;
-PsiPreIntegrationTexture::~PsiPreIntegrationTexture() = default;
+PsiFullPreIntegrationTexture::PsiFullPreIntegrationTexture()
+  : PsiLookupTexture("preIntegrated")
+{
+}
 
-bool PsiPreIntegrationTexture::NeedsUpdate(const PsiTableSources& in) const
+bool PsiFullPreIntegrationTexture::NeedsUpdate(const PsiTableSources& in) const
 {
   const psi::PreIntegrationLengthAxis& a = this->Table.Axis;
   const psi::PreIntegrationLengthAxis& axis = in.LengthAxis;
@@ -178,25 +136,22 @@ bool PsiPreIntegrationTexture::NeedsUpdate(const PsiTableSources& in) const
     a.MaxLength != axis.MaxLength || a.MinLength != axis.MinLength || a.Samples != axis.Samples;
 }
 
-void PsiPreIntegrationTexture::Update(vtkOpenGLRenderWindow* renWin, const PsiTableSources& in)
+void PsiFullPreIntegrationTexture::Update(vtkOpenGLRenderWindow* renWin, const PsiTableSources& in)
 {
   const PsiTransferFunctionTexture& transfer = *in.Transfer;
   this->Table =
     psi::BuildPreIntegrationTable(transfer.GetTable(), psi::GetDefaultPsiTable(), in.LengthAxis);
-  this->Texture->SetContext(renWin);
-  this->Texture->Create3DFromRaw(this->Table.ScalarSamples, this->Table.ScalarSamples,
+  this->TextureIn(renWin)->Create3DFromRaw(this->Table.ScalarSamples, this->Table.ScalarSamples,
     this->Table.LengthSamples, 4, VTK_FLOAT, this->Table.Rgba.data());
-  SetLinearClamped(this->Texture, true);
+  this->SetLinearClamped(true);
   this->Table.Rgba.clear();
   this->Table.Rgba.shrink_to_fit();
   this->Version = transfer.GetVersion();
   this->Valid = true;
 }
 
-void PsiPreIntegrationTexture::Activate(vtkShaderProgram* program)
+void PsiFullPreIntegrationTexture::SetUniforms(vtkShaderProgram* program)
 {
-  this->Texture->Activate();
-  program->SetUniformi("preIntegrated", this->Texture->GetTextureUnit());
   // the scalars are fractions of the table's range (psi::TetMesh::Points4)
   const double ns = this->Table.ScalarSamples;
   SetUniform2(program, "preScalarScaleShift", (ns - 1) / ns, 0.5 / ns);
@@ -205,50 +160,11 @@ void PsiPreIntegrationTexture::Activate(vtkShaderProgram* program)
   program->SetUniform4f("preLengthAxis", axis);
 }
 
-void PsiPreIntegrationTexture::Deactivate()
-{
-  this->Texture->Deactivate();
-}
-
-void PsiPreIntegrationTexture::ReleaseGraphicsResources(vtkWindow* win)
-{
-  this->Texture->ReleaseGraphicsResources(win);
-  this->Valid = false;
-}
-
-// ---- all four, and any set of tables ------------------------------------------------------------
-void PsiTransferTables::ReleaseGraphicsResources(vtkWindow* win)
+// ---- all four ---------------------------------------------------------------------------------
+void PsiLookupTextureSet::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->Transfer.ReleaseGraphicsResources(win);
   this->OpacityPrefix.ReleaseGraphicsResources(win);
   this->PsiTable.ReleaseGraphicsResources(win);
   this->PreIntegration.ReleaseGraphicsResources(win);
-}
-
-void psi::UpdateTables(
-  const std::vector<PsiGpuTable*>& tables, vtkOpenGLRenderWindow* renWin, const PsiTableSources& in)
-{
-  for (PsiGpuTable* t : tables)
-  {
-    if (t->NeedsUpdate(in))
-    {
-      t->Update(renWin, in);
-    }
-  }
-}
-
-void psi::ActivateTables(const std::vector<PsiGpuTable*>& tables, vtkShaderProgram* program)
-{
-  for (PsiGpuTable* t : tables)
-  {
-    t->Activate(program);
-  }
-}
-
-void psi::DeactivateTables(const std::vector<PsiGpuTable*>& tables)
-{
-  for (PsiGpuTable* t : tables)
-  {
-    t->Deactivate();
-  }
 }

@@ -1,0 +1,14 @@
+"""The project's Python helpers for pvpython, pvbatch and the GUI's Python shell, one module each:
+
+    data            datasets for 'Psi Volume': the literature's files, the embedded default
+    testing         checks that count failures, image capture and comparison, the PNG writer
+    timing          frame times: one frame, a view's frames, interleaved rounds of contenders
+    process         the environment of child pvpython/pvbatch processes
+    bench           the benchmarks' scene, mapper switching and exact reference
+    accuracy        the accuracy report (also a command: pvpython -m psivolume.accuracy)
+    accuracy_plots  the accuracy report's table and plots
+    moreland        Moreland's Table 6.4 beside the report's ratios
+
+The folder holding this package (the checkout's Python/) goes on PYTHONPATH: the tests' CTest
+registrations and the scripts set it; by hand, `PYTHONPATH=Python pvpython FILE.py`. Nothing here
+imports from the rest of the checkout, and importing the package alone imports no module."""

@@ -1,0 +1,30 @@
+// PsiLODVolume: ParaView's vtkPVLODVolume, for a low level of detail that is a volume. ParaView's
+// own class was written for a surface level of detail: it asks the low LOD for a surface mapper
+// each time a property or mapper is set (an error logged for a volume mapper) and reports
+// translucent polygonal geometry whenever the low LOD is drawn (the renderer then draws the volume
+// inside its depth-peeling pass, about a fifth slower). Here both follow the low LOD's kind.
+#ifndef PsiLODVolume_h
+#define PsiLODVolume_h
+
+#include "vtkPVLODVolume.h"
+
+class PsiLODVolume : public vtkPVLODVolume
+{
+public:
+  static PsiLODVolume* New();
+  vtkTypeMacro(PsiLODVolume, vtkPVLODVolume);
+
+  int HasTranslucentPolygonalGeometry() override;
+
+protected:
+  PsiLODVolume() = default;
+  ~PsiLODVolume() override = default;
+  void UpdateLODProperty() override;
+
+private:
+  PsiLODVolume(const PsiLODVolume&) = delete;
+  void operator=(const PsiLODVolume&) = delete;
+  bool LowLODIsVolume();
+};
+
+#endif

@@ -1,0 +1,140 @@
+// vtkPsiVolumeRepresentation while the camera moves: in each render the representation chooses
+// what its vtkPVLODVolume draws (psi::UsesVolumeLOD decides 'Auto' from the last still frame's
+// time), builds the volume level of detail (PsiVolumeLOD) when it is stale, and reads out what
+// drew the frame. The rest of the representation is in vtkPsiVolumeRepresentation.cxx.
+#include "vtkPsiVolumeRepresentation.h"
+
+#include "PsiSceneQueries.h"
+#include "PsiSettings.h"
+#include "PsiVolumeLOD.h"
+#include "vtkPsiVolumeMapper.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkAlgorithmOutput.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDataSet.h"
+#include "vtkInformation.h"
+#include "vtkPVLODVolume.h"
+#include "vtkPVRenderView.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkRenderWindow.h"
+#include "vtkSmartVolumeMapper.h"
+#include "vtkVolumeProperty.h"
+
+int vtkPsiVolumeRepresentation::ProcessViewRequest(
+  vtkInformationRequestKey* request_type, vtkInformation* inInfo, vtkInformation* outInfo)
+{
+  if (!this->Superclass::ProcessViewRequest(request_type, inInfo, outInfo))
+  {
+    return 0;
+  }
+  if (request_type == vtkPVView::REQUEST_RENDER())
+  {
+    this->ChooseInteractiveImage(inInfo);
+  }
+  return 1;
+}
+
+// The superclass has set the actor's LOD from ParaView's LODThreshold (USE_LOD); every mode but
+// 'ParaView surface' replaces that choice: the volume level of detail in interactive renders
+// when the settings call for it, else the full frame. A still render (and so a screenshot, unless
+// the view takes screenshots with interactive renders) is always the full frame.
+void vtkPsiVolumeRepresentation::ChooseInteractiveImage(vtkInformation* inInfo)
+{
+  vtkPVRenderView* view = vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW()));
+  const bool interactive = view && psi::IsInteractiveRender(view->GetRenderWindow()) &&
+    !view->GetUseInteractiveRenderingForScreenshots();
+  const psi::Settings& s = this->PsiMapper->GetSettings();
+  const bool surface = s.InteractionMode == psi::InteractionModes::ParaViewSurface;
+  this->InstallLODMapper(!surface);
+  if (!this->Actor->GetMapper())
+  {
+    // the superclass draws nothing for this piece (not an unstructured grid): neither does the
+    // level of detail, which the actor would otherwise select
+    this->LOD->Reset();
+  }
+  bool lod = false;
+  if (surface)
+  {
+    lod = this->Actor->GetEnableLOD() != 0;
+  }
+  else
+  {
+    lod = interactive && psi::UsesVolumeLOD(s, this->PsiMapper->GetLastStillSeconds()) &&
+      this->UpdateVolumeLOD(inInfo);
+    this->Actor->SetEnableLOD(lod ? 1 : 0);
+  }
+  if (interactive)
+  {
+    this->LastInteractiveImage = !lod ? psi::InteractiveImages::FullFrame
+      : surface                       ? psi::InteractiveImages::ParaViewSurface
+                                      : psi::InteractiveImages::VolumeLOD;
+  }
+}
+
+// The actor's low level of detail: the volume one, or the superclass's surface mapper.
+void vtkPsiVolumeRepresentation::InstallLODMapper(bool volume)
+{
+  if (volume == this->VolumeLODInstalled)
+  {
+    return;
+  }
+  if (volume)
+  {
+    this->Actor->SetLODMapper(this->LOD->GetMapper());
+  }
+  else
+  {
+    this->Actor->SetLODMapper(this->LODMapper.GetPointer());
+  }
+  this->VolumeLODInstalled = volume;
+}
+
+// Builds the level of detail from the piece this process draws, when the piece or its array
+// changed, and gives its mapper the array and vector mode the full frame uses. False: nothing
+// to draw (no piece, an empty one, or no array).
+bool vtkPsiVolumeRepresentation::UpdateVolumeLOD(vtkInformation* inInfo)
+{
+  vtkAlgorithmOutput* port = vtkPVRenderView::GetPieceProducer(inInfo, this);
+  vtkDataSet* piece = port && port->GetProducer()
+    ? vtkDataSet::SafeDownCast(port->GetProducer()->GetOutputDataObject(port->GetIndex()))
+    : nullptr;
+  PsiVolumeLOD::Arrays arrays;
+  arrays.Color = this->PsiMapper->GetArrayName() ? this->PsiMapper->GetArrayName() : "";
+  const bool stale = !this->LOD->IsCurrent(piece, arrays);
+  if (stale)
+  {
+    this->SetProgressText("Psi Volume: interactive level of detail");
+    this->UpdateProgress(0.0);
+  }
+  this->LOD->Update(piece, arrays);
+  if (stale)
+  {
+    this->UpdateProgress(1.0);
+  }
+  // as the superclass gives a vtkSmartVolumeMapper its vector mode (UpdateMapperParameters)
+  vtkSmartVolumeMapper* mapper = this->LOD->GetMapper();
+  vtkColorTransferFunction* ctf = this->Property->GetRGBTransferFunction(0);
+  const bool independent = this->Property->GetIndependentComponents() != 0;
+  mapper->SetVectorMode(independent && ctf ? ctf->GetVectorMode() : vtkScalarsToColors::COMPONENT);
+  mapper->SetVectorComponent(independent && ctf ? ctf->GetVectorComponent() : 0);
+  return this->LOD->HasImage();
+}
+
+double vtkPsiVolumeRepresentation::GetLastInteractiveSeconds()
+{
+  switch (this->LastInteractiveImage)
+  {
+    case psi::InteractiveImages::FullFrame:
+      return this->PsiMapper->GetLastRenderSeconds();
+    case psi::InteractiveImages::VolumeLOD:
+      return this->LOD->GetLastDrawSeconds();
+    default:
+      return 0;
+  }
+}
+
+double vtkPsiVolumeRepresentation::GetLODBuildSeconds()
+{
+  return this->LOD->GetLastBuildSeconds();
+}
