@@ -24,6 +24,11 @@
 int vtkPsiVolumeRepresentation::ProcessViewRequest(
   vtkInformationRequestKey* request_type, vtkInformation* inInfo, vtkInformation* outInfo)
 {
+  if (request_type == vtkPVView::REQUEST_UPDATE_LOD() &&
+    this->PsiMapper->GetInteractionMode() != psi::InteractionModes::ParaViewSurface)
+  {
+    return this->UpdateUnusedSurfaceLOD(inInfo, outInfo);
+  }
   if (!this->Superclass::ProcessViewRequest(request_type, inInfo, outInfo))
   {
     return 0;
@@ -33,6 +38,22 @@ int vtkPsiVolumeRepresentation::ProcessViewRequest(
     this->ChooseInteractiveImage(inInfo);
   }
   return 1;
+}
+
+// ParaView asks for its surface level of detail when the data is larger than its LODThreshold
+// (the GUI's default is 20 MB): the surface of the whole mesh, which 'Psi Volume' draws only in
+// 'ParaView surface' mode. Otherwise the superclass makes an outline instead (its bounds, at no
+// cost), where the surface of a 2.56M-tetrahedron mesh took 4.7 s and 228 MB.
+int vtkPsiVolumeRepresentation::UpdateUnusedSurfaceLOD(vtkInformation* inInfo, vtkInformation* outInfo)
+{
+  const bool outline = inInfo->Has(vtkPVRenderView::USE_OUTLINE_FOR_LOD()) != 0;
+  inInfo->Set(vtkPVRenderView::USE_OUTLINE_FOR_LOD(), 1);
+  const int ok = this->Superclass::ProcessViewRequest(vtkPVView::REQUEST_UPDATE_LOD(), inInfo, outInfo);
+  if (!outline)
+  {
+    inInfo->Remove(vtkPVRenderView::USE_OUTLINE_FOR_LOD());
+  }
+  return ok;
 }
 
 // The superclass has set the actor's LOD from ParaView's LODThreshold (USE_LOD); every mode but
