@@ -83,3 +83,9 @@ set_tests_properties(PsiRepresentations.ShaderComposition PROPERTIES
 add_executable(TestFramePlan Cxx/TestFramePlan.cxx)
 target_link_libraries(TestFramePlan PRIVATE PsiVolume::Representations PsiTestSupport)
 add_test(NAME PsiRepresentations.FramePlan COMMAND TestFramePlan)
+
+# The mapper holds the one settings type: the integration method clamped to the method table
+# (through psi::SetClamped), named from it, its default the settings' (GL-free).
+add_executable(TestMapperSettings Cxx/TestMapperSettings.cxx)
+target_link_libraries(TestMapperSettings PRIVATE PsiVolume::Representations)
+add_test(NAME PsiRepresentations.MapperSettings COMMAND TestMapperSettings)
