@@ -4,10 +4,11 @@
 // caster (vtkSmartVolumeMapper) with the same vtkVolumeProperty, hence the same color map,
 // opacity function and unit distance. Each process probes its own piece alone (vtkResampleToImage
 // would be ParaView's collective vtkPResampleToImage, and a level of detail chosen by each
-// process's own frame time must not wait for the others). In parallel (ordered compositing) the
-// processes sample one lattice, spanned over the whole mesh's bounds, each the lattice points
-// around its own region (ParaView's cut), and each draws only its region (the mapper's cropping):
-// the composited image is the serial one up to the ray caster's sample phase (PsiVolumeLOD.cxx).
+// process's own frame time must not wait for the others). In parallel (ordered compositing) every
+// process probes its piece on one lattice, spanned over the whole mesh's bounds, and draws only its
+// own region of it (ParaView's cut, through the mapper's cropping): its ray samples are then the
+// serial ray's samples inside its cut, and the composited image is the serial one up to the 8-bit
+// compositing of the processes' images (docs/decisions.md, "Interaction").
 //
 // Built once per piece, array and resolution, not per camera move nor per transfer-function edit
 // (the image holds scalars, not colors). Samples whose scalar is not finite are blanked, as
@@ -60,8 +61,8 @@ public:
   bool IsCurrent(vtkDataSet* piece, const Arrays& arrays, const Region& region,
     int resolution = DefaultResolution) const;
   /// Resamples `piece` when it, its arrays, the region or the resolution changed since the last
-  /// build; true when it rebuilt. A null or empty piece, or one outside its region, gives no
-  /// image (the mapper then has no input).
+  /// build; true when it rebuilt. A null or empty piece gives no image (the mapper then has no
+  /// input).
   bool Update(vtkDataSet* piece, const Arrays& arrays, const Region& region,
     int resolution = DefaultResolution);
   /// The mapper that draws the image (its input set by Update).
