@@ -201,6 +201,8 @@ MUTATIONS = [
     Mutation("lod_rank_own_lattice", "Representations/PsiVolumeLOD.cxx",
              "GlobalLattice(region.Parallel ? region.Global : bounds, resolution)",
              "GlobalLattice(bounds, resolution)", ["PsiPython.mpi_lod"]),
+    Mutation("lod_lattice_over_own_cut", "Representations/vtkPsiVolumeRepresentationInteraction.cxx",
+             "    all.AddBox(cut);", "    all.AddBox(own);", ["PsiPython.mpi_lod"]),
     Mutation("lod_rank_not_cropped", "Representations/PsiVolumeLOD.cxx",
              "  this->Mapper->SetCropping(region.Parallel ? 1 : 0);",
              "  this->Mapper->SetCropping(0);", ["PsiPython.mpi_lod"]),
