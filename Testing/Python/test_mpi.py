@@ -134,14 +134,21 @@ def watch_environment():
     faulthandler.dump_traceback_later(WATCHDOG, exit=True, file=err)
 
 
-def parallel_main():
-    t = testing.Checks("test_mpi")
+def start(name):
+    """The checks of a parallel test named `name`, with the environment watched; skips a run on
+    fewer than 2 ranks. Returns the checks and the number of ranks."""
+    t = testing.Checks(name)
     watch_environment()
     nranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
     print("ranks: %d" % nranks)
     if nranks < 2:
         print("SKIP: run with mpiexec -n 2 pvbatch (this run has %d rank)" % nranks)
         testing.exit_now(testing.SKIP)
+    return t, nranks
+
+
+def parallel_main():
+    t, nranks = start("test_mpi")
     out = os.path.join(tempfile.mkdtemp(), "serial.npy")
     ok = serial_reference(out)
     t.check(ok, "the serial reference rendered")
