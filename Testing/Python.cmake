@@ -37,18 +37,21 @@ endforeach ()
 # More than one draw call (5.1M tetrahedra, ~15-20 s here): run alone, it is the heaviest.
 set_tests_properties(PsiPython.bad_input.large PROPERTIES RUN_SERIAL ON)
 
-# MPI ordered compositing: 2 pvbatch ranks against a serial render.
+# MPI ordered compositing: 2 pvbatch ranks against a serial render, the still frame (mpi) and
+# the interactive level of detail (mpi_lod).
 if (PVBATCH_EXECUTABLE AND MPIEXEC_EXECUTABLE)
-  add_test(NAME PsiPython.mpi
-    COMMAND "${MPIEXEC_EXECUTABLE}" --allow-run-as-root -n 2 "${PVBATCH_EXECUTABLE}"
-            --force-offscreen-rendering "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_mpi.py")
-  set_tests_properties(PsiPython.mpi PROPERTIES
-    ENVIRONMENT "PSI_PLUGIN=$<TARGET_FILE:PsiVolume>;${PSI_PYTHONPATH};PSI_PVBATCH=${PVBATCH_EXECUTABLE};OMPI_MCA_rmaps_base_oversubscribe=1"
-    SKIP_RETURN_CODE 77
-    TIMEOUT 240
-    RUN_SERIAL ON)
+  foreach (name IN ITEMS mpi mpi_lod)
+    add_test(NAME PsiPython.${name}
+      COMMAND "${MPIEXEC_EXECUTABLE}" --allow-run-as-root -n 2 "${PVBATCH_EXECUTABLE}"
+              --force-offscreen-rendering "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_${name}.py")
+    set_tests_properties(PsiPython.${name} PROPERTIES
+      ENVIRONMENT "PSI_PLUGIN=$<TARGET_FILE:PsiVolume>;${PSI_PYTHONPATH};PSI_PVBATCH=${PVBATCH_EXECUTABLE};OMPI_MCA_rmaps_base_oversubscribe=1"
+      SKIP_RETURN_CODE 77
+      TIMEOUT 240
+      RUN_SERIAL ON)
+  endforeach ()
 else ()
-  message(STATUS "pvbatch or mpiexec not found: PsiPython.mpi is not registered")
+  message(STATUS "pvbatch or mpiexec not found: PsiPython.mpi and PsiPython.mpi_lod are not registered")
 endif ()
 
 # Client-server: a pvpython client renders through `mpiexec -n 2 pvserver` (remote rendering,

@@ -197,6 +197,18 @@ MUTATIONS = [
              "true ||", ["PsiPython.interaction"]),
     Mutation("lod_outside_not_hidden", "Representations/PsiVolumeLOD.cxx",
              "    if (mask->GetTuple1(i) == 0)", "    if (false)", ["PsiPython.interaction"]),
+    # in parallel: one lattice over the whole mesh, each rank drawing its own cut of it
+    Mutation("lod_rank_own_lattice", "Representations/PsiVolumeLOD.cxx",
+             "GlobalLattice(region.Parallel ? region.Global : bounds, resolution)",
+             "GlobalLattice(bounds, resolution)", ["PsiPython.mpi_lod"]),
+    Mutation("lod_lattice_over_own_cut", "Representations/vtkPsiVolumeRepresentationInteraction.cxx",
+             "    all.AddBox(cut);", "    all.AddBox(own);", ["PsiPython.mpi_lod"]),
+    Mutation("lod_rank_not_cropped", "Representations/PsiVolumeLOD.cxx",
+             "  this->Mapper->SetCropping(region.Parallel ? 1 : 0);",
+             "  this->Mapper->SetCropping(0);", ["PsiPython.mpi_lod"]),
+    Mutation("lod_rank_beyond_cut_hidden", "Representations/PsiVolumeLOD.cxx",
+             "  if (region.Parallel)\n  {\n    FillBeyondCut(",
+             "  if (false)\n  {\n    FillBeyondCut(", ["PsiPython.mpi_lod"]),
     # --- The driver's buffer limits (Representations/PsiMeshBuffers.cxx, PsiComputeProjector.cxx).
     Mutation("texture_buffer_limit_unchecked", "Representations/PsiMeshBuffers.cxx",
              "if (static_cast<long long>(this->Mesh.NumberOfPoints()) > maxTexels ||",

@@ -33,6 +33,11 @@ Environment: PSI_PLUGIN (the plugin), PSI_PVSERVER, PSI_MPIEXEC (default: from P
    1.0/255 and at most 1% of the pixels differing by more than 24/255 (the two ranks' partial
    images are 8-bit and premultiplied, so seam pixels differ by a few 1/255; a wrong order or a
    missing piece changes far more). Measured here: mean 0.152/255, max 5/255, no pixel > 24/255.
+7. The interactive level of detail on the server: InteractionMode 'Volume LOD', one interactive
+   render (image reduction 1, images sent uncompressed): 'Psi Volume' on server rank 0 reads
+   LastInteractiveImage 1 (the level of detail; read as in 5), the client's image is not the
+   still one (3.5/255 apart) and matches the serial level of detail with the still frame's
+   tolerance (test_mpi_lod.py holds the tight bound), and the server logged no error.
 """
 import faulthandler
 import os
@@ -49,6 +54,7 @@ import numpy as np
 from paraview import servermanager, simple
 
 import test_mpi  # the scene, camera, capture and tolerance of the MPI test (this folder)
+import test_mpi_lod  # the level of detail's frame and tolerance
 from psivolume import data, process, testing
 
 NRANKS = 2
@@ -199,8 +205,9 @@ def serial_reference(plugin):
     n = d.GetProperty("NumberOfTetrahedra").GetElement(0)
     simple.Delete(d)
     simple.Delete(view)
+    _, ref_lod, _ = test_mpi_lod.lod_frame(src)
     simple.Disconnect()
-    return ref, n
+    return ref, n, ref_lod
 
 
 def cells_per_rank(proxy, nranks):
@@ -209,23 +216,55 @@ def cells_per_rank(proxy, nranks):
             for rank in range(nranks)]
 
 
-def drawn(d):
-    """Tetrahedra drawn in the last render by the client's 'Psi Volume' and by the server root's.
-    The representation lives on the client and the servers; UpdatePropertyInformation pulls from
-    the client whenever the proxy's location includes it (vtkSMSessionClient::PullState), so the
-    server root's value is pulled with the location narrowed to the data server for that call."""
+def drawn(d, name="NumberOfTetrahedra"):
+    """A read-out (by default the tetrahedra drawn in the last render) of the client's 'Psi
+    Volume' and of the server root's. The representation lives on the client and the servers;
+    UpdatePropertyInformation pulls from the client whenever the proxy's location includes it
+    (vtkSMSessionClient::PullState), so the server root's value is pulled with the location
+    narrowed to the data server for that call."""
     d.UpdatePropertyInformation()
-    n_client = d.GetProperty("NumberOfTetrahedra").GetElement(0)
+    n_client = d.GetProperty(name).GetElement(0)
     location = d.SMProxy.GetLocation()
     try:
         d.SMProxy.SetLocation(0x01)  # vtkPVSession::DATA_SERVER
         d.SMProxy.UpdatePropertyInformation()
     finally:
         d.SMProxy.SetLocation(location)
-    return n_client, d.GetProperty("NumberOfTetrahedra").GetElement(0)
+    return n_client, d.GetProperty(name).GetElement(0)
 
 
-def remote_checks(t, port, plugin, ref, n_serial):
+def logged_errors(text):
+    """vtkErrorMacro's lines ("ERROR: In ...") and vtkLogger's errors ("ERR|")."""
+    return text.count("ERROR") + text.count("ERR|")
+
+
+def lod_checks(t, label, view, d, still, ref_lod, logpath):
+    """The interactive level of detail, drawn on the server (docstring, 7)."""
+    errors_before = logged_errors(read(logpath))
+    view.ImageReductionFactor = 1
+    d.InteractionMode = "Volume LOD"
+    view.InteractiveRender()
+    img = testing.grab(view)
+    _, used = drawn(d, "LastInteractiveImage")
+    t.check(used == test_mpi_lod.LOD, "%s: server rank 0 drew the level of detail in the "
+            "interactive render (LastInteractiveImage %d)" % (label, used))
+    to_still = 255 * testing.mean_error(img, still)
+    t.check(to_still > 0.5, "%s: the interactive image is not the still one (mean |diff| "
+            "%.3f/255)" % (label, to_still))
+    d_abs = np.abs(img - ref_lod)
+    mean, mx = float(d_abs.mean()), float(d_abs.max())
+    log("%s: pvserver level of detail vs serial: mean |diff| %.3f/255, max %.0f/255"
+        % (label, mean, mx))
+    t.check(mean <= test_mpi.MEAN_TOL and mx <= test_mpi_lod.MAX_TOL,
+            "%s: the level of detail from the server matches the serial one (mean %.3f/255 <= "
+            "%.2f, max %.0f/255 <= %.0f)" % (label, mean, test_mpi.MEAN_TOL, mx,
+                                              test_mpi_lod.MAX_TOL))
+    errors = logged_errors(read(logpath)) - errors_before
+    t.check(errors == 0, "%s: no error in the server's log during the interactive render (%d)"
+            % (label, errors))
+
+
+def remote_checks(t, port, plugin, ref, n_serial, ref_lod, logpath):
     t1 = time.time()
     conn = simple.Connect("localhost", port)
     t.check(conn is not None and servermanager.ActiveConnection.IsRemote(),
@@ -240,6 +279,7 @@ def remote_checks(t, port, plugin, ref, n_serial):
 
     settings = simple.GetSettingsProxy("RenderViewSettings")
     settings.RemoteRenderThreshold = 0.0  # always render on the server, never deliver to client
+    settings.CompressorConfig = "NULL"  # interactive images are otherwise sent lossy
 
     for redistribute in (False, True):
         label = "RedistributeDataSet" if redistribute else "Wavelet pieces"
@@ -295,6 +335,7 @@ def remote_checks(t, port, plugin, ref, n_serial):
                 out = os.environ["PSI_PVSERVER_SAVE"]
                 np.save(os.path.join(out, "pvserver_%d.npy" % redistribute), img)
                 np.save(os.path.join(out, "serial.npy"), ref)
+        lod_checks(t, label, view, d, img, ref_lod, logpath)
         simple.Delete(d)
         simple.Delete(view)
 
@@ -321,7 +362,7 @@ def main():
         server = start_server(port, logfile)
     reaper = start_reaper(server.pid)
     try:
-        ref, n_serial = serial_reference(plugin)
+        ref, n_serial, ref_lod = serial_reference(plugin)
         log("serial reference (built-in connection): %d tetrahedra, %.1f s"
             % (n_serial, time.time() - t0))
         ok, how = wait_for_server(server, logpath)
@@ -331,7 +372,7 @@ def main():
         else:
             t.check(False, "pvserver did not start: %s (log below)" % how)
         if ok:
-            remote_checks(t, port, plugin, ref, n_serial)
+            remote_checks(t, port, plugin, ref, n_serial, ref_lod, logpath)
             disconnect()
     except Exception:  # noqa: BLE001 -- any error is a failure with its traceback, never a hang
         traceback.print_exc()
