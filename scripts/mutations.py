@@ -59,6 +59,17 @@ MUTATIONS = [
     Mutation("improved_opacity_parabola_sign", "Shaders/PsiIntegrateLinearOpacityImproved.glsl",
              "0.5 * (tb + tf) - 0.108165 * (tb - tf) * (tb - tf)",
              "0.5 * (tb + tf) + 0.108165 * (tb - tf) * (tb - tf)", GLSL),
+    # A transmittance of 0 (opacity 1) clamped to a small one instead of an infinite optical
+    # depth: only a segment opaque over its whole length with D > 0 sees it (the ray must take
+    # the front luminance; Psi of the clamped depth lets the back one in, within the sweep bounds).
+    Mutation("opaque_depth_clamped", "Core/PsiIntegrationMethods.cxx",
+             "const double t = std::min(std::max(trans, 0.0), 1.0);",
+             "const double t = std::min(std::max(trans, 1e-12), 1.0);",
+             ["PsiCore.IntegrationMethods"]),
+    Mutation("improved_opacity_opaque_depth_clamped",
+             "Shaders/PsiIntegrateLinearOpacityImproved.glsl",
+             "float tau2D = t2 > 0.0 ? -log(t2) * units : (D > 0.0 ? 1e30 : 0.0);",
+             "float tau2D = -log(max(t2, 1e-12)) * units;", GLSL),
     Mutation("full_preintegration_front_back_swapped", "Shaders/PsiIntegrateFullPreIntegration.glsl",
              "    sb * preScalarScaleShift.x + preScalarScaleShift.y,",
              "    sf * preScalarScaleShift.x + preScalarScaleShift.y,", GL),

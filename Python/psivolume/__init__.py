@@ -4,6 +4,7 @@
     testing         checks that count failures, image capture and comparison, the PNG writer
     timing          frame times: one frame, a view's frames, interleaved rounds of contenders
     process         the environment of child pvpython/pvbatch processes
+    session         a server's session and its end (the whole session, every MPI rank)
     bench           the benchmarks' scene, mapper switching and exact reference
     accuracy        the accuracy report (also a command: pvpython -m psivolume.accuracy)
     accuracy_plots  the accuracy report's table and plots

@@ -8,8 +8,10 @@ Environment: PSI_PLUGIN (the plugin), PSI_PVSERVER, PSI_MPIEXEC (default: from P
 0. Holds one X connection for the whole run (see hold_display: Xvfb resets, and refuses
    connections, whenever its last client disconnects; the source of "bad X server connection").
 1. Starts `mpiexec --allow-run-as-root -n 2 pvserver --server-port=P --force-offscreen-rendering`
-   on a free port P, in its own process group, output to a log file. A reaper process kills that
-   group if this client dies any way (crash, watchdog, ctest timeout); `finally` kills it too.
+   on a free port P, in a session of its own, output to a log file. A reaper process ends that
+   session if this client dies any way (crash, watchdog, ctest timeout, SIGKILL); `finally` ends
+   it too (psivolume.session: the session, since each Open MPI rank has a process group of its
+   own).
 2. Meanwhile renders the serial reference in this process on the built-in connection: the same
    pipeline, view and camera as test_mpi.py (its build/render/capture), then disconnects.
 3. Waits for the server's 'Accepting connection(s)' line (fails, printing the server log, if the
@@ -42,7 +44,6 @@ Environment: PSI_PLUGIN (the plugin), PSI_PVSERVER, PSI_MPIEXEC (default: from P
 import faulthandler
 import os
 import shutil
-import signal
 import socket
 import subprocess
 import sys
@@ -55,7 +56,7 @@ from paraview import servermanager, simple
 
 import test_mpi  # the scene, camera, capture and tolerance of the MPI test (this folder)
 import test_mpi_lod  # the level of detail's frame and tolerance
-from psivolume import data, process, testing
+from psivolume import data, process, session, testing
 
 NRANKS = 2
 START_TIMEOUT = 60  # seconds for the server's 'Accepting connection(s)'
@@ -117,64 +118,20 @@ def start_server(port, logfile):
                             stderr=subprocess.STDOUT, env=env, start_new_session=True)
 
 
-REAPER = r"""
-import os, signal, sys, time
-pgid, parent, deadline = int(sys.argv[1]), int(sys.argv[2]), time.time() + float(sys.argv[3])
-while os.getppid() == parent and time.time() < deadline:
-    time.sleep(0.5)
-for sig in (signal.SIGTERM, signal.SIGKILL):
-    try:
-        os.killpg(pgid, sig)
-    except OSError:
-        break
-    time.sleep(2)
-"""
-
-
-def start_reaper(pgid):
-    """Kills the server's process group when this client is gone (or after WATCHDOG + 30 s)."""
-    py = shutil.which("python3") or "/usr/bin/python3"
-    return subprocess.Popen([py, "-c", REAPER, str(pgid), str(os.getpid()), str(WATCHDOG + 30)],
-                            stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                            stderr=subprocess.DEVNULL, start_new_session=True)
-
-
-def group_members(pgid):
-    pids = []
-    for entry in os.listdir("/proc"):
-        if not entry.isdigit():
-            continue
-        try:
-            with open("/proc/%s/stat" % entry) as f:
-                fields = f.read().rsplit(")", 1)[1].split()
-        except OSError:
-            continue
-        if int(fields[2]) == pgid and fields[0] != "Z":  # fields: state, ppid, pgrp, ...
-            pids.append(int(entry))
-    return pids
-
-
 def stop_server(proc):
-    """Lets the server end on its own after the client disconnected, else kills its group.
-    Returns (exit code or None if killed, pids of the group still alive afterwards)."""
+    """Lets the server end on its own after the client disconnected, else ends its session.
+    Returns (exit code or None if killed, pids of the session still alive afterwards)."""
     code = None
     try:
         code = proc.wait(timeout=10)
     except subprocess.TimeoutExpired:
         pass
-    for sig in (signal.SIGTERM, signal.SIGKILL):
-        if not group_members(proc.pid) and proc.poll() is not None:
-            break
-        try:
-            os.killpg(proc.pid, sig)
-        except OSError:
-            pass
-        try:
-            proc.wait(timeout=5)
-        except subprocess.TimeoutExpired:
-            pass
-        time.sleep(0.5)
-    return code, group_members(proc.pid)
+    alive = session.end(proc.pid) if session.members(proc.pid) or proc.poll() is None else []
+    try:
+        proc.wait(timeout=5)
+    except subprocess.TimeoutExpired:
+        pass
+    return code, alive
 
 
 def read(path):
@@ -360,7 +317,8 @@ def main():
     logpath = os.path.join(tmp, "pvserver.log")
     with open(logpath, "w") as logfile:
         server = start_server(port, logfile)
-    reaper = start_reaper(server.pid)
+    # the server's session ends when this client does, however it ends
+    reaper = session.reaper(server.pid, WATCHDOG + 30, env=process.environment_without_mpi())
     try:
         ref, n_serial, ref_lod = serial_reference(plugin)
         log("serial reference (built-in connection): %d tetrahedra, %.1f s"
