@@ -10,6 +10,7 @@
     moreland        Moreland's Table 6.4 beside the report's ratios
 
 Installed by `cmake --install` beside ParaView's own Python modules, it imports as it is (and finds
-the installed plugin). In a checkout, the folder holding this package (Python/) goes on PYTHONPATH: the tests' CTest
-registrations and the scripts set it; by hand, `PYTHONPATH=Python pvpython FILE.py`. Nothing here
+the installed plugin). In a checkout, the folder holding this package (Python/) goes on
+PYTHONPATH: the tests' CTest registrations and the scripts set it; by hand,
+`PYTHONPATH=Python pvpython FILE.py`. Nothing here
 imports from the rest of the checkout, and importing the package alone imports no module."""
