@@ -67,3 +67,12 @@ endif ()
 # While the camera moves: the volume level of detail chosen by mode and budget, never in still
 # renders or screenshots, close to the full frame; rebuilt for new arrays and data; hard inputs.
 psi_add_python_test(interaction TIMEOUT 300)
+
+# The install tree: `cmake --install` into a temporary prefix, then pvpython loads the plugin from
+# it by path, draws the embedded default with 'Psi Volume' and imports psivolume from it, with the
+# checkout's Python/ off its path (Testing/Install/run_installed.py).
+add_test(NAME PsiPython.installed
+  COMMAND "${PSI_PYTHON3}" "${CMAKE_CURRENT_SOURCE_DIR}/Install/run_installed.py"
+          --build "${CMAKE_BINARY_DIR}" --cmake "${CMAKE_COMMAND}" --pvpython "${PVPYTHON_EXECUTABLE}"
+          --plugins-dir "${PSI_PLUGINS_DIR}" --python-dir "${PSI_PYTHON_DESTINATION}")
+set_tests_properties(PsiPython.installed PROPERTIES TIMEOUT 300)

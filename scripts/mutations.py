@@ -426,4 +426,10 @@ MUTATIONS = [
              "if (n[1] > 0 && x >= 0 && x <= table.Size - 1)",
              "if (n[1] > 1 && x >= 0 && x <= table.Size - 1)",
              ["PsiCore.TransferFunctionNodes"]),
+    # --- The install tree (cmake/PsiVolumeInstall.cmake, docs/install.md).
+    Mutation("installed_package_misses_its_plugin", "Python/psivolume/data.py",
+             "        from . import installed_paths\n", "        from . import installed_path\n",
+             ["PsiPython.installed"]),
+    Mutation("no_plugins_xml_installed", "CMakeLists.txt",
+             '  PLUGINS_FILE_NAME "PsiVolume.plugins.xml")', "  )", ["PsiPython.installed"]),
 ]

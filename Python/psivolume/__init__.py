@@ -10,6 +10,8 @@
     accuracy_plots  the accuracy report's table and plots
     moreland        Moreland's Table 6.4 beside the report's ratios
 
-The folder holding this package (the checkout's Python/) goes on PYTHONPATH: the tests' CTest
-registrations and the scripts set it; by hand, `PYTHONPATH=Python pvpython FILE.py`. Nothing here
+Installed by `cmake --install` beside ParaView's own Python modules, it imports as it is (and finds
+the installed plugin). In a checkout, the folder holding this package (Python/) goes on
+PYTHONPATH: the tests' CTest registrations and the scripts set it; by hand,
+`PYTHONPATH=Python pvpython FILE.py`. Nothing here
 imports from the rest of the checkout, and importing the package alone imports no module."""
