@@ -32,10 +32,12 @@ def still():
     return testing.grab(view)
 
 
-def interactive():
+def interactive(display=None):
+    """The image of an interactive render, and what drew `display` in it (default: d)."""
+    display = display or d
     view.InteractiveRender()
-    d.UpdatePropertyInformation()
-    return testing.grab(view), d.GetProperty("LastInteractiveImage").GetElement(0)
+    display.UpdatePropertyInformation()
+    return testing.grab(view), display.GetProperty("LastInteractiveImage").GetElement(0)
 
 
 def footprint(img):
@@ -112,24 +114,38 @@ with tempfile.TemporaryDirectory() as tmp:
             "a screenshot after moving is the full frame")
 
 # --- A new array, new data: a new level of detail (never a stale image).
+def rescale_to(name, source):
+    """The color map and the opacity function of `name` over its range in `source`."""
+    r = source.PointData[name].GetRange()
+    simple.GetColorTransferFunction(name).RescaleTransferFunction(*r)
+    simple.GetOpacityTransferFunction(name).RescaleTransferFunction(*r)
+
+
 calc = simple.Calculator(Input=src, ResultArrayName="twice", Function="2*%s" % array)
 d2 = data.show_volume(calc, "twice", view, unit_distance=2.0)
 simple.Hide(src, view)
 d2.InteractionMode = "Volume LOD"
-simple.GetColorTransferFunction("twice").RescaleTransferFunction(
-    *calc.PointData["twice"].GetRange())
+rescale_to("twice", calc)
 full2 = still()
-lod2, used = interactive()
+lod2, used = interactive(d2)
 t.check(used == LOD and testing.mean_error(lod2, full2) <= bound,
         "a new array: its own level of detail (%.4f)" % testing.mean_error(lod2, full2))
 calc.Function = "-2*%s" % array
-simple.GetColorTransferFunction("twice").RescaleTransferFunction(
-    *calc.PointData["twice"].GetRange())
+rescale_to("twice", calc)
 full3 = still()
-lod3, used = interactive()
-t.check(testing.mean_error(full3, full2) > 0.001 and
+lod3, used = interactive(d2)
+# ParaView's 'Resample To Image' of the new data, for the bound on this scene
+simple.Hide(src, pt_view)
+rti3_display = data.show_volume(calc, "twice", pt_view, representation="Volume", unit_distance=2.0)
+rti3_display.SelectMapper = "Resample To Image"
+simple.Render(pt_view)
+bound3 = 1.25 * testing.mean_error(testing.grab(pt_view), full3)
+t.check(used == LOD and testing.covered(full3, BG) > SIZE * SIZE / 10 and
+        testing.mean_error(full3, full2) > 0.001 and
+        testing.mean_error(lod3, full3) <= bound3 and
         testing.mean_error(lod3, full3) < testing.mean_error(lod3, lod2),
-        "new data: a new level of detail, not the old one")
+        "new data: a new level of detail (drew %d), close to the new frame (%.4f; bound %.4f), "
+        "not the old one" % (used, testing.mean_error(lod3, full3), bound3))
 simple.Delete(d2)
 simple.Delete(calc)
 
@@ -172,7 +188,7 @@ for name, function in (("empty", None), ("one", None), ("nan", "nan")):
     r = data.show_volume(shown, arr, view, unit_distance=2.0)
     r.InteractionMode = "Volume LOD"
     full_one = still()
-    img, used = interactive()
+    img, used = interactive(r)
     t.check(np.isfinite(img).all(), "%s: a finite image" % name)
     if name == "one":
         a, b = footprint(img), footprint(full_one)
