@@ -361,6 +361,12 @@ MUTATIONS = [
     Mutation("off_record_extra_values_accepted", "Readers/PsiOFFParser.cxx",
              "  if (n != 4)\n  {\n    std::ostringstream msg;",
              "  if (n < 4)\n  {\n    std::ostringstream msg;", ["PsiReaders.OFFReader"]),
+    # The size check forgets that the last line may lack its newline: a file as compact as the
+    # format allows (single-digit values, no final newline) is rejected as truncated.
+    Mutation("off_size_check_last_newline_required", "Readers/PsiOFFParser.cxx",
+             "lines * MinBytesPerLine <= static_cast<uint64_t>(remaining) + 1",
+             "lines * MinBytesPerLine <= static_cast<uint64_t>(remaining)",
+             ["PsiReaders.OFFReader", "PsiPython.bad_input.reader"]),
     # --- Exact adaptive sampling: the nodes (Core/PsiTransferFunctionNodes), the early-discard
     # prefix that sees spikes between samples, and the piece's node interval in the shader.
     Mutation("adaptive_piece_interval_off_by_one", "Shaders/PsiAdaptiveFS.glsl",
