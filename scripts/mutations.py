@@ -21,6 +21,7 @@ SEPARATE = ["PsiPython.separate_opacity"]
 TRANSLUCENT = ["PsiPython.translucent_geometry"]
 PEELED = ["PsiRepresentations.TranslucentGeometry"]
 SCALAR_RANGES = ["PsiPython.scalar_ranges"]
+CYCLIC = ["PsiRepresentations.CyclicOrder"]
 
 MUTATIONS = [
     # --- Integrators (Shaders/PsiIntegrate*.glsl): Moreland & Angel 2004; Moreland's dissertation.
@@ -334,6 +335,16 @@ MUTATIONS = [
     Mutation("mpvonc_tie_break_reversed", "Core/PsiMPVONCSort.cxx",
              "return (static_cast<uint64_t>(~u) << 32) | id;",
              "return (static_cast<uint64_t>(~u) << 32) | (0xffffffffu - id);", ["PsiCore.MPVONC"] + ORDER),
+    # A cycle break (Williams 1992 §7) takes the nearest remaining tetrahedron instead of the
+    # farthest (the key's ascending order is farthest first), or the one of smallest id: the
+    # breaks cascade on a mesh with cycles (a twisted Delaunay mesh).
+    Mutation("mpvonc_cycle_break_nearest", "Core/PsiMPVONCSort.cxx",
+             "vtkSMPTools::Sort(allByDepth.begin(), allByDepth.end());",
+             "vtkSMPTools::Sort(allByDepth.begin(), allByDepth.end(), std::greater<uint64_t>());",
+             CYCLIC),
+    Mutation("mpvonc_cycle_break_by_id", "Core/PsiMPVONCSort.cxx",
+             "        vtkSMPTools::Sort(allByDepth.begin(), allByDepth.end());\n",
+             "", CYCLIC),
     # --- Conforming tetrahedralization (Filters/): diagonal choice, degenerate removal.
     Mutation("cone_apex_max_id", "Filters/PsiConformingDiagonals.cxx",
              "const vtkIdType apex = *std::min_element(faces.Ids.begin(), faces.Ids.end());",
