@@ -361,6 +361,11 @@ MUTATIONS = [
              ["PsiFilters.ConformingTetrahedralize"]),
     Mutation("negative_tetrahedra_not_flipped", "Filters/PsiOrientedTetrahedra.cxx",
              "std::swap(c, d);", "std::swap(c, c);", ["PsiFilters.ConformingTetrahedralize"]),
+    # Early discard kept with a separate opacity array and marching tetrahedra: their volume
+    # pieces are tested on the colored scalar, and visible pieces of the opacity array vanish.
+    Mutation("separate_opacity_discard_with_iso_triangles", "Representations/PsiFramePlan.cxx",
+             "    f.EarlyDiscard = f.EarlyDiscard && !f.IsoTriangles;\n", "",
+             ["PsiRepresentations.FramePlan"] + SEPARATE),
     # --- The .off parser (Readers/).
     Mutation("off_index_equal_to_count_accepted", "Readers/PsiOFFParser.cxx",
              "ids[k] >= this->NumberOfVertices", "ids[k] > this->NumberOfVertices", ["PsiReaders.OFFReader"]),
