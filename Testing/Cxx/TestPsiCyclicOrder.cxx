@@ -14,7 +14,6 @@
 #include "PsiTestView.h"
 #include "vtkPsiVolumeMapper.h"
 
-#include "vtkCamera.h"
 #include "vtkDelaunay3D.h"
 #include "vtkDoubleArray.h"
 #include "vtkNew.h"
@@ -25,9 +24,9 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <random>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -159,7 +158,7 @@ void CheckViews(Fixture& f)
     const long long breaks = f.Mapper->GetLastSortCycles();
     allBreaks += breaks;
     std::printf("%-28s %lld cycle breaks\n", name.c_str(), breaks);
-    PSI_CHECK(r.Mean < 0.003 && r.Max < 0.08, "%s: mean error %g, max %g", name.c_str(), r.Mean,
+    PSI_CHECK(r.Mean < 0.004 && r.Max < 0.08, "%s: mean error %g, max %g", name.c_str(), r.Mean,
       r.Max);
     PSI_CHECK(r.Covered > W * H / 4, "%s: image nearly empty (%d pixels)", name.c_str(), r.Covered);
     PSI_CHECK(breaks <= n / 50, "%s: %lld cycle breaks of %lld tetrahedra", name.c_str(), breaks,
