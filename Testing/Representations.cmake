@@ -43,6 +43,11 @@ psi_add_render_test(Isosurfaces TestPsiIsosurfaces FAN)
 psi_add_gl_executable(TestPsiDegenerateProjections)
 psi_add_render_test(DegenerateProjections TestPsiDegenerateProjections FAN TIMEOUT 120)
 
+# A mesh whose visibility order has cycles (a twisted Delaunay mesh): MPVONC's cycle breaks
+# counted, the image against the exact reference, which needs no order.
+psi_add_gl_executable(TestPsiCyclicOrder VTK::FiltersCore)
+psi_add_render_test(CyclicOrder TestPsiCyclicOrder)
+
 psi_add_gl_executable(TestPsiVisibilityOrder)
 add_test(NAME PsiRepresentations.VisibilityOrder COMMAND TestPsiVisibilityOrder)
 set_tests_properties(PsiRepresentations.VisibilityOrder PROPERTIES TIMEOUT 120)

@@ -21,6 +21,7 @@ SEPARATE = ["PsiPython.separate_opacity"]
 TRANSLUCENT = ["PsiPython.translucent_geometry"]
 PEELED = ["PsiRepresentations.TranslucentGeometry"]
 SCALAR_RANGES = ["PsiPython.scalar_ranges"]
+CYCLIC = ["PsiRepresentations.CyclicOrder"]
 
 MUTATIONS = [
     # --- Integrators (Shaders/PsiIntegrate*.glsl): Moreland & Angel 2004; Moreland's dissertation.
@@ -364,6 +365,16 @@ MUTATIONS = [
     Mutation("mpvonc_tie_break_reversed", "Core/PsiMPVONCSort.cxx",
              "return (static_cast<uint64_t>(~u) << 32) | id;",
              "return (static_cast<uint64_t>(~u) << 32) | (0xffffffffu - id);", ["PsiCore.MPVONC"] + ORDER),
+    # A cycle break (Williams 1992 §7) takes the nearest remaining tetrahedron instead of the
+    # farthest (the key's ascending order is farthest first), or the one of smallest id: the
+    # breaks cascade on a mesh with cycles (a twisted Delaunay mesh).
+    Mutation("mpvonc_cycle_break_nearest", "Core/PsiMPVONCSort.cxx",
+             "vtkSMPTools::Sort(allByDepth.begin(), allByDepth.end());",
+             "vtkSMPTools::Sort(allByDepth.begin(), allByDepth.end(), std::greater<uint64_t>());",
+             CYCLIC),
+    Mutation("mpvonc_cycle_break_by_id", "Core/PsiMPVONCSort.cxx",
+             "        vtkSMPTools::Sort(allByDepth.begin(), allByDepth.end());\n",
+             "", CYCLIC),
     # --- Conforming tetrahedralization (Filters/): diagonal choice, degenerate removal.
     Mutation("cone_apex_max_id", "Filters/PsiConformingDiagonals.cxx",
              "const vtkIdType apex = *std::min_element(faces.Ids.begin(), faces.Ids.end());",
@@ -380,6 +391,11 @@ MUTATIONS = [
              ["PsiFilters.ConformingTetrahedralize"]),
     Mutation("negative_tetrahedra_not_flipped", "Filters/PsiOrientedTetrahedra.cxx",
              "std::swap(c, d);", "std::swap(c, c);", ["PsiFilters.ConformingTetrahedralize"]),
+    # Early discard kept with a separate opacity array and marching tetrahedra: their volume
+    # pieces are tested on the colored scalar, and visible pieces of the opacity array vanish.
+    Mutation("separate_opacity_discard_with_iso_triangles", "Representations/PsiFramePlan.cxx",
+             "    f.EarlyDiscard = f.EarlyDiscard && !f.IsoTriangles;\n", "",
+             ["PsiRepresentations.FramePlan"] + SEPARATE),
     # --- The .off parser (Readers/).
     Mutation("off_index_equal_to_count_accepted", "Readers/PsiOFFParser.cxx",
              "ids[k] >= this->NumberOfVertices", "ids[k] > this->NumberOfVertices", ["PsiReaders.OFFReader"]),
@@ -391,6 +407,12 @@ MUTATIONS = [
     Mutation("off_record_extra_values_accepted", "Readers/PsiOFFParser.cxx",
              "  if (n != 4)\n  {\n    std::ostringstream msg;",
              "  if (n < 4)\n  {\n    std::ostringstream msg;", ["PsiReaders.OFFReader"]),
+    # The size check forgets that the last line may lack its newline: a file as compact as the
+    # format allows (single-digit values, no final newline) is rejected as truncated.
+    Mutation("off_size_check_last_newline_required", "Readers/PsiOFFParser.cxx",
+             "lines * MinBytesPerLine <= static_cast<uint64_t>(remaining) + 1",
+             "lines * MinBytesPerLine <= static_cast<uint64_t>(remaining)",
+             ["PsiReaders.OFFReader", "PsiPython.bad_input.reader"]),
     # --- Exact adaptive sampling: the nodes (Core/PsiTransferFunctionNodes), the early-discard
     # prefix that sees spikes between samples, and the piece's node interval in the shader.
     Mutation("adaptive_piece_interval_off_by_one", "Shaders/PsiAdaptiveFS.glsl",

@@ -4,7 +4,8 @@
 // with per-fragment isosurfaces; marching tetrahedra when asked for or under 'Auto' with early
 // discard, and only within the driver's geometry-shader limits; adaptive sampling on, off and
 // 'Auto' against the table's deviation, never with unfaithful nodes; a separate opacity array
-// (silhouettes, no adaptive sampling, full pre-integration drawn as partial); depth peeling
+// (silhouettes, no adaptive sampling, full pre-integration drawn as partial, no early discard
+// with marching tetrahedra); depth peeling
 // (silhouettes); the scene depth copied only when something tests or samples it.
 #include "PsiFramePlan.h"
 #include "PsiIntegrationMethods.h"
@@ -133,6 +134,15 @@ void TestSeparateOpacityAndPeeling()
   PSI_CHECK(plan.MethodReplaced && !plan.Tables.PreIntegration && plan.Tables.PsiTable &&
       plan.Features.Method == static_cast<int>(psi::Method::PartialPreIntegration),
     "full pre-integration with a separate opacity array draws as partial");
+  // With isosurfaces and zero opacity, 'Auto' draws marching tetrahedra; early discard would
+  // test their volume pieces on the colored scalar, so none with a separate opacity array.
+  s = Settings();
+  s.IsosurfaceValues = { 0.2, 0.6 };
+  facts.ZeroOpacity = true;
+  plan = PlanFrame(s, facts);
+  PSI_CHECK(plan.Features.IsoTriangles && !plan.Features.EarlyDiscard &&
+      !plan.Tables.OpacityPrefix,
+    "separate opacity, zero opacity, 'Auto' isosurfaces: marching tetrahedra, no early discard");
   facts = Facts();
   facts.DepthPeeled = true;
   plan = PlanFrame(s, facts);

@@ -1,7 +1,9 @@
 // Tests of vtkPsiOFFTetReader: round trips of valid files (from memory and from disk,
-// with the lenient header forms), and every malformed case giving an error event, a message, an
+// with the lenient header forms; literature-style files as compact as the format allows, at the
+// size check's bound), and every malformed case giving an error event, a message, an
 // error code and an empty output, quickly (absurd counts must not allocate or hang).
 // Usage: TestOFFReader [TEMP_DIR]
+#include "PsiOFFParser.h"
 #include "PsiTestCheck.h"
 #include "vtkPsiOFFTetReader.h"
 
@@ -16,6 +18,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -100,49 +103,70 @@ const char* const ValidText = "5 2\n"
                               "0 1 2 3\n"
                               "1 2 3 4\n";
 
-// The mesh of ValidText, checked exactly.
-void CheckValidMesh(vtkUnstructuredGrid* ug, const char* what)
+// A mesh as the reader must return it: x, y, z, s per vertex and four ids per tetrahedron.
+struct ExpectedMesh
 {
-  PSI_CHECK(ug->GetNumberOfPoints() == 5, "%s: %lld points", what,
-    static_cast<long long>(ug->GetNumberOfPoints()));
-  PSI_CHECK(ug->GetNumberOfCells() == 2, "%s: %lld cells", what,
-    static_cast<long long>(ug->GetNumberOfCells()));
-  if (ug->GetNumberOfPoints() != 5 || ug->GetNumberOfCells() != 2)
+  std::vector<std::array<double, 4>> Vertices;
+  std::vector<std::array<vtkIdType, 4>> Tets;
+};
+
+// The mesh of ValidText.
+ExpectedMesh ValidMesh()
+{
+  return { { { 0, 0, 0, 0.5 }, { 1, 0, 0, 1.5 }, { 0, 1, 0, 2.5 }, { 0, 0, 1, 3.5 },
+             { 1, 1, 1, -42.5 } },
+    { { 0, 1, 2, 3 }, { 1, 2, 3, 4 } } };
+}
+
+// `ug` is exactly the mesh `m`: points, the active point scalars 'scalars', tetrahedra.
+void CheckMesh(vtkUnstructuredGrid* ug, const ExpectedMesh& m, const char* what)
+{
+  const vtkIdType nv = static_cast<vtkIdType>(m.Vertices.size());
+  const vtkIdType nt = static_cast<vtkIdType>(m.Tets.size());
+  PSI_CHECK(ug->GetNumberOfPoints() == nv && ug->GetNumberOfCells() == nt,
+    "%s: %lld points, %lld cells (expected %lld, %lld)", what,
+    static_cast<long long>(ug->GetNumberOfPoints()), static_cast<long long>(ug->GetNumberOfCells()),
+    static_cast<long long>(nv), static_cast<long long>(nt));
+  if (ug->GetNumberOfPoints() != nv || ug->GetNumberOfCells() != nt)
   {
     return;
   }
-  const double expectP[5][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 1, 1 } };
-  const double expectS[5] = { 0.5, 1.5, 2.5, 3.5, -42.5 };
   vtkDataArray* s = ug->GetPointData()->GetArray("scalars");
   PSI_CHECK(s != nullptr, "%s: point array 'scalars' exists", what);
   PSI_CHECK(ug->GetPointData()->GetScalars() == s, "%s: 'scalars' are the active scalars", what);
-  for (int i = 0; i < 5; ++i)
+  for (vtkIdType i = 0; i < nv; ++i)
   {
     double p[3];
     ug->GetPoint(i, p);
     for (int k = 0; k < 3; ++k)
     {
-      PSI_CHECK(p[k] == expectP[i][k], "%s: point %d coordinate %d is %g", what, i, k, p[k]);
+      PSI_CHECK(p[k] == m.Vertices[i][k], "%s: point %lld coordinate %d is %g", what,
+        static_cast<long long>(i), k, p[k]);
     }
-    if (s)
-    {
-      PSI_CHECK(s->GetTuple1(i) == expectS[i], "%s: scalar %d is %g", what, i, s->GetTuple1(i));
-    }
+    PSI_CHECK(!s || s->GetTuple1(i) == m.Vertices[i][3], "%s: scalar %lld is %g", what,
+      static_cast<long long>(i), s ? s->GetTuple1(i) : 0.0);
   }
-  const vtkIdType expectC[2][4] = { { 0, 1, 2, 3 }, { 1, 2, 3, 4 } };
-  for (int c = 0; c < 2; ++c)
+  for (vtkIdType c = 0; c < nt; ++c)
   {
-    PSI_CHECK(ug->GetCellType(c) == VTK_TETRA, "%s: cell %d is a tetrahedron", what, c);
+    PSI_CHECK(ug->GetCellType(c) == VTK_TETRA, "%s: cell %lld is a tetrahedron", what,
+      static_cast<long long>(c));
     vtkIdType npts;
     const vtkIdType* pts;
     ug->GetCellPoints(c, npts, pts);
-    PSI_CHECK(npts == 4, "%s: cell %d has %lld points", what, c, static_cast<long long>(npts));
+    PSI_CHECK(npts == 4, "%s: cell %lld has %lld points", what, static_cast<long long>(c),
+      static_cast<long long>(npts));
     for (int k = 0; k < 4 && npts == 4; ++k)
     {
-      PSI_CHECK(pts[k] == expectC[c][k], "%s: cell %d point %d is %lld", what, c, k,
-        static_cast<long long>(pts[k]));
+      PSI_CHECK(pts[k] == m.Tets[c][k], "%s: cell %lld point %d is %lld", what,
+        static_cast<long long>(c), k, static_cast<long long>(pts[k]));
     }
   }
+}
+
+// The mesh of ValidText, checked exactly.
+void CheckValidMesh(vtkUnstructuredGrid* ug, const char* what)
+{
+  CheckMesh(ug, ValidMesh(), what);
 }
 
 void TestValid(Fixture& f)
@@ -259,6 +283,86 @@ void TestValid(Fixture& f)
     }
     PSI_CHECK(bad == 0, "random mesh round-trips exactly (%d mismatches)", bad);
   }
+}
+
+// The unit cube's corners (vertex i at (i & 1, i >> 1 & 1, i >> 2 & 1), scalar i) and its 6
+// Kuhn tetrahedra around the diagonal 0-7; or, with `single`, the tetrahedron of its corners
+// 0, 1, 2, 4.
+ExpectedMesh CubeMesh(bool single)
+{
+  ExpectedMesh m;
+  for (int i = 0; i < (single ? 5 : 8); ++i)
+  {
+    if (!single || i != 3)
+    {
+      m.Vertices.push_back({ double(i & 1), double(i >> 1 & 1), double(i >> 2 & 1), double(i) });
+    }
+  }
+  m.Tets = single ? std::vector<std::array<vtkIdType, 4>>{ { 0, 1, 2, 3 } }
+                  : std::vector<std::array<vtkIdType, 4>>{ { 0, 1, 3, 7 }, { 0, 1, 5, 7 },
+                      { 0, 2, 3, 7 }, { 0, 2, 6, 7 }, { 0, 4, 5, 7 }, { 0, 4, 6, 7 } };
+  return m;
+}
+
+// `m` as compactly as the format allows (single-digit values, single spaces, each data line
+// "a b c d\n"), after `header` (the counts line); the last line without its newline unless
+// `finalNewline`.
+std::string CompactText(const ExpectedMesh& m, const std::string& header, bool finalNewline)
+{
+  std::ostringstream os;
+  os << header;
+  for (const auto& v : m.Vertices)
+  {
+    os << v[0] << ' ' << v[1] << ' ' << v[2] << ' ' << v[3] << '\n';
+  }
+  for (const auto& t : m.Tets)
+  {
+    os << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << t[3] << '\n';
+  }
+  std::string text = os.str();
+  if (!finalNewline)
+  {
+    text.pop_back();
+  }
+  return text;
+}
+
+// Literature-style files written as compactly as the format allows: with no newline after the
+// last line they hold exactly MinBytesPerLine bytes a line less one, the least the size check
+// accepts. Each must read exactly, from memory and from disk, with and without the keyword.
+void TestCompact(Fixture& f, const std::string& dir)
+{
+  const std::string path = dir + "/psi_off_reader_compact.off";
+  for (const bool single : { true, false })
+  {
+    const ExpectedMesh m = CubeMesh(single);
+    const size_t lines = m.Vertices.size() + m.Tets.size();
+    const std::string counts =
+      std::to_string(m.Vertices.size()) + " " + std::to_string(m.Tets.size()) + "\n";
+    const std::string body = CompactText(m, "", false);
+    PSI_CHECK(body.size() == psi::OFFParser::MinBytesPerLine * lines - 1,
+      "compact body: %zu bytes for %zu lines", body.size(), lines);
+    const std::string forms[] = { counts + body, "OFF\n" + counts + body, "OFF " + counts + body,
+      CompactText(m, counts, true), "# HAVS\r\n" + counts + body };
+    int k = 0;
+    for (const std::string& text : forms)
+    {
+      const std::string what =
+        std::string(single ? "compact tetrahedron" : "compact cube") + ", form " + std::to_string(k++);
+      CheckMesh(f.ReadString(text), m, (what + " (memory)").c_str());
+      PSI_CHECK(f.Events->Errors == 0, "%s: no error (%s)", what.c_str(), f.Events->LastError.c_str());
+      std::ofstream(path, std::ios::binary) << text;
+      CheckMesh(f.ReadFile(path), m, (what + " (file)").c_str());
+      PSI_CHECK(f.Events->Errors == 0 && f.Reader->CanReadFile(path.c_str()) == 1,
+        "%s file: read without error (%s)", what.c_str(), f.Events->LastError.c_str());
+    }
+    // One byte less cannot hold the lines: the size check rejects it.
+    f.ReadString(counts + body.substr(0, body.size() - 1));
+    PSI_CHECK(f.Events->Errors == 1 &&
+        f.Events->LastError.find("bytes follow the header") != std::string::npos,
+      "compact, last byte cut: too short (%s)", f.Events->LastError.c_str());
+  }
+  std::remove(path.c_str());
 }
 
 struct BadCase
@@ -409,6 +513,7 @@ int main(int argc, char* argv[])
   Fixture f;
   TestValid(f);
   TestMalformed(f);
+  TestCompact(f, dir);
   TestFiles(f, dir);
   std::printf("TestOFFReader: %s (%d failures)\n", psitest::Failures() ? "FAILED" : "passed",
     psitest::Failures());

@@ -649,7 +649,39 @@ def case_reader():
     t.check(len(errs) > 0 and "line 7" in errs[0], "reader: a malformed file gives an error naming "
             "the line")
     t.check(rb.GetDataInformation().GetNumberOfCells() == 0, "reader: and an empty output")
+    check_compact_file(d, view)
     check_off_reader_choice(good, bad, d)
+
+
+def check_compact_file(d, view):
+    """A literature-style file as compact as the format allows (single-digit values, single
+    spaces, no newline after the last line: the least the reader's size check accepts) draws as
+    the same mesh written out in full: the unit cube's corners, scalar = corner id, in 6 Kuhn
+    tetrahedra."""
+    corners = [(i & 1, i >> 1 & 1, i >> 2 & 1, i) for i in range(8)]
+    tets = [(0, 1, 3, 7), (0, 1, 5, 7), (0, 2, 3, 7), (0, 2, 6, 7), (0, 4, 5, 7), (0, 4, 6, 7)]
+    compact = "8 6\n" + "\n".join("%d %d %d %d" % r for r in corners + tets)
+    full = "# the same mesh in full\n8 6\n" + "".join(
+        "%.6f %.6f %.6f %.6f\n" % r for r in corners) + "".join("%d %d %d %d\n" % c for c in tets)
+    for src in simple.GetSources().values():
+        simple.Hide(src, view)
+    images = []
+    for name, text in (("compact.off", compact), ("full.off", full)):
+        path = os.path.join(d, name)
+        with open(path, "w") as fh:
+            fh.write(text)
+        r = simple.OpenDataFile(path)
+        r.UpdatePipeline()
+        cells = r.GetDataInformation().GetNumberOfCells()
+        t.check(cells == 6, "reader: %s, 6 tetrahedra read (%d)" % (name, cells))
+        dd = show(r, view, "scalars", rng=[0.0, 7.0], unit=0.5)
+        aim(view, [0, 1, 0, 1, 0, 1])
+        images.append(render_only(view, dd, [dd]))
+        simple.Hide(r, view)
+        check_image(images[-1], "reader: " + name, 0.1)
+    mean, mx = diff(images[0], images[1])
+    t.check(mx == 0, "reader: the compact file draws as the full one (mean %.3f/255, max %.0f)"
+            % (mean, mx))
 
 
 def possible_readers(path):

@@ -10,7 +10,8 @@ function of the opacity array's values).
 2. Parity: with another opacity array, each method agrees with 'Projected tetra' as well as the
    plain image does, and differs from the plain image as 'Projected tetra's' does.
 3. Early discard is judged on the opacity array: with an opacity function that is zero on part
-   of the opacity array's range, early discard on and off draw the same image.
+   of the opacity array's range, early discard on and off draw the same image; also with
+   isosurfaces, which 'Auto' then draws by marching tetrahedra.
 4. Cell data and a new time step of both arrays."""
 
 import numpy as np
@@ -34,6 +35,9 @@ SAME = 0.05  # mean |difference| on 0..255: the same image up to float rounding 
 SAME_MAX = 1.0  # ... and no pixel off by more than one 8-bit step
 pwf = simple.GetOpacityTransferFunction(array)
 ramp = list(pwf.Points)
+
+
+LAST = {}  # read-outs of the last 'Psi Volume' frame render() drew
 
 
 def diff(a, b):
@@ -64,6 +68,9 @@ def render(source, rep="Psi Volume", opacity=None, assoc="POINTS", setup=None):
         setup(d)
     simple.Render(view)
     img = testing.grab(view)
+    if rep == "Psi Volume":
+        d.UpdatePropertyInformation()
+        LAST["isosurface method"] = d.GetProperty("LastUsedIsosurfaceMethod").GetElement(0)
     d.UseSeparateOpacityArray = 0
     simple.Hide(source, view)
     return img
@@ -151,6 +158,42 @@ t.check(testing.covered(on, [0, 0, 0]) > 500, "early discard: the image is not e
 t.check(same(on, off), "early discard on the opacity array: on and off agree (%.3f)"
         % diff(on, off))
 
+# 3b. Early discard, another opacity array and marching tetrahedra together, as 'Auto' combines
+# them: isosurfaces of the colored array and an opacity function that is zero over part of the
+# opacity array's range, here an array over about the same range that falls where the colored
+# one rises. 'Auto' draws the isosurfaces by marching tetrahedra; the image must be the one drawn
+# without early discard (whose volume pieces between isosurfaces are bounded by the colored
+# scalar, not the opacity scalar), and the per-fragment isosurfaces' image.
+def isosurfaces(method, discard):
+    def setup(d):
+        d.IsosurfaceValues = [120.0, 180.0]
+        d.IsosurfaceOpacity = 0.5
+        d.IsosurfaceMethod = method
+        d.EarlyDiscard = discard
+    return setup
+
+
+for name, base in (("fine", calc), ("coarse", coarse)):
+    r = base.PointData[array].GetRange()  # the same range, falling where RTData rises
+    mesh = simple.Calculator(Input=base, ResultArrayName="Apart",
+                             Function="%r - RTData + 10*sin(coordsY)" % (r[0] + r[1]))
+    mesh.UpdatePipeline()
+    lo, hi = mesh.PointData["Apart"].GetRange()
+    pwf.Points = [lo, 0.0, 0.5, 0.0, 0.5 * (lo + hi), 0.0, 0.5, 0.0, hi, 1.0, 0.5, 0.0]
+    auto = render(mesh, opacity="Apart", setup=isosurfaces("Auto", 1))
+    auto_method = LAST["isosurface method"]
+    triangles = render(mesh, opacity="Apart", setup=isosurfaces("Marching Tetrahedra", 0))
+    fragments = render(mesh, opacity="Apart", setup=isosurfaces("Per Fragment", 0))
+    pwf.Points = ramp
+    t.check(auto_method == 0, "%s, zero opacity and isosurfaces: 'Auto' draws them by marching "
+            "tetrahedra (%d)" % (name, auto_method))
+    t.check(testing.covered(auto, [0, 0, 0]) > 2000, "%s: the image is not empty" % name)
+    t.check(same(auto, triangles), "%s: 'Auto' draws the image of marching tetrahedra without "
+            "early discard (mean %.3f, max %.0f)" % (name, diff(auto, triangles),
+                                                     np.abs(auto - triangles).max()))
+    t.check(diff(fragments, triangles) < SAME, "%s: and of per-fragment isosurfaces (mean %.3f, "
+            "max %.0f)" % (name, diff(fragments, triangles), np.abs(fragments - triangles).max()))
+
 # 4. Cell data; a new time step of both arrays (the same points and cells).
 cvol = render(cells, "Volume", opacity="Other", assoc="CELLS")
 cpsi = render(cells, opacity="Other", assoc="CELLS")
@@ -161,6 +204,8 @@ t.check(diff(cpsi, cpsi0) > 5.0 and diff(cpsi, cvol) < bound,
 d = simple.Show(calc, view)
 d.SetRepresentationType("Psi Volume")
 testing.apply_requested(d)
+d.IsosurfaceValues = []
+d.EarlyDiscard = 1
 simple.ColorBy(d, ("POINTS", array))
 d.ScalarOpacityUnitDistance = 3.0
 d.UseSeparateOpacityArray = 1
