@@ -8,6 +8,7 @@
 #include "PsiIntegrationMethods.h"
 #include "PsiReferenceIntegrals.h"
 #include "PsiPreIntegrationTable.h"
+#include "PsiRampTable.h"
 #include "PsiTable.h"
 #include "PsiTransferFunctionTable.h"
 
@@ -36,17 +37,7 @@ int main(int argc, char* argv[])
   }
   // Full pre-integration: a lookup in a table built for a transfer function, whose build is
   // timed separately (it is paid on every transfer-function edit).
-  psi::TransferFunctionTable tf;
-  tf.Size = 256;
-  tf.Range[0] = 0;
-  tf.Range[1] = 1;
-  tf.Rgba.resize(4 * tf.Size);
-  for (int i = 0; i < tf.Size; ++i)
-  {
-    const double s = double(i) / (tf.Size - 1);
-    const float v[4] = { float(s), float(0.5 * s), float(1 - s), float(s) };
-    std::copy(v, v + 4, &tf.Rgba[4 * i]);
-  }
+  const psi::TransferFunctionTable tf = psitest::RampTable({ 0, 0, 1, 0 }, { 1, 0.5f, 0, 1 });
   const psi::PreIntegrationTable pre = psi::BuildPreIntegrationTable(
     tf, table, psi::MakePreIntegrationLengthAxis(0, 100.0));
   // For its accuracy: a table for L(s) = s, tau(s) = s on [0, 1], lengths up to 1; a sweep point

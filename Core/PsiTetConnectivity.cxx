@@ -36,6 +36,23 @@ void SortedFace(const uint32_t* v, int f, uint32_t s[3])
     std::swap(s[0], s[1]);
 }
 
+// Calls visit(t, f, s) for face f of every tetrahedron t, s its point ids ascending.
+template <typename Visit>
+void ForEachSortedFace(TetCells tets, size_t numTets, Visit&& visit)
+{
+  for (size_t t = 0; t < numTets; ++t)
+  {
+    uint32_t v[4];
+    tets.Get(t, v);
+    for (int f = 0; f < 4; ++f)
+    {
+      uint32_t s[3];
+      SortedFace(v, f, s);
+      visit(t, f, s);
+    }
+  }
+}
+
 // Pairs the faces whose smallest point id is in [lo, hi): scatters them into their buckets
 // (`start`: bucket offsets by smallest id) with the (middle, largest) key, then per bucket (in
 // parallel) sorts by key and pairs equal runs. Every face belongs to exactly one bucket, so each
@@ -47,21 +64,13 @@ void PairFaces(TetCells tets, size_t numTets, const std::vector<uint32_t>& start
   const uint32_t base = start[lo];
   entries.resize(start[hi] - base);
   std::vector<uint32_t> fill(start.begin() + lo, start.begin() + hi);
-  for (size_t t = 0; t < numTets; ++t)
-  {
-    uint32_t v[4];
-    tets.Get(t, v);
-    for (int f = 0; f < 4; ++f)
+  ForEachSortedFace(tets, numTets, [&](size_t t, int f, const uint32_t* s) {
+    if (s[0] >= lo && s[0] < hi)
     {
-      uint32_t s[3];
-      SortedFace(v, f, s);
-      if (s[0] >= lo && s[0] < hi)
-      {
-        entries[fill[s[0] - lo]++ - base] = { (static_cast<uint64_t>(s[1]) << 32) | s[2],
-          static_cast<uint32_t>(4 * t + f) };
-      }
+      entries[fill[s[0] - lo]++ - base] = { (static_cast<uint64_t>(s[1]) << 32) | s[2],
+        static_cast<uint32_t>(4 * t + f) };
     }
-  }
+  });
   vtkSMPThreadLocal<TetConnectivityResult> local;
   vtkSMPTools::For(static_cast<vtkIdType>(lo), static_cast<vtkIdType>(hi),
     [&](vtkIdType begin, vtkIdType end) {
@@ -131,17 +140,8 @@ TetConnectivityResult ComputeTetNeighbors(TetCells tets, size_t numTets,
 
   // Bucket offsets: faces per smallest point id.
   std::vector<uint32_t> start(numPoints + 1, 0);
-  for (size_t t = 0; t < numTets; ++t)
-  {
-    uint32_t v[4];
-    tets.Get(t, v);
-    for (int f = 0; f < 4; ++f)
-    {
-      uint32_t s[3];
-      SortedFace(v, f, s);
-      ++start[s[0] + 1];
-    }
-  }
+  ForEachSortedFace(
+    tets, numTets, [&](size_t, int, const uint32_t* s) { ++start[s[0] + 1]; });
   for (size_t p = 0; p < numPoints; ++p)
   {
     start[p + 1] += start[p];

@@ -154,14 +154,26 @@ void PsiComputeProjector::ReserveBuffers(size_t tetsPerPass)
   this->ReservedIndices = indices;
 }
 
-void PsiComputeProjector::Draw(
-  vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder& order, size_t targetPixels)
+bool PsiComputeProjector::Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder& order,
+  size_t targetPixels, long long maxBlockBytes, std::string& error)
 {
-  const size_t bytesPerTet = size_t(this->SlotVertices) * this->Vec4sPerVertex * 16 +
-    size_t(this->SlotTriangles) * 3 * sizeof(GLuint);
-  const size_t perPass =
-    std::min<size_t>({ PsiVisibilityOrder::MaxChunkTets,
-      std::max<size_t>(64, BufferBudget / bytesPerTet), std::max<size_t>(order.GetSize(), 1) });
+  const size_t vertexBytes = size_t(this->SlotVertices) * this->Vec4sPerVertex * 16;
+  const size_t indexBytes = size_t(this->SlotTriangles) * 3 * sizeof(GLuint);
+  // each pass's vertex and index buffers are storage blocks: within the driver's block size, in
+  // whole work groups of 64 tetrahedra
+  const size_t blockTets =
+    static_cast<size_t>(std::max<long long>(maxBlockBytes, 0)) / std::max(vertexBytes, indexBytes);
+  if (blockTets < 64)
+  {
+    error = "the compute projector's storage blocks would need " +
+      std::to_string(64 * std::max(vertexBytes, indexBytes)) + " bytes per work group; this "
+      "OpenGL driver allows " + std::to_string(maxBlockBytes) +
+      " (GL_MAX_SHADER_STORAGE_BLOCK_SIZE): choose the geometry-shader projector.";
+    return false;
+  }
+  const size_t perPass = std::min<size_t>({ PsiVisibilityOrder::MaxChunkTets,
+    std::max<size_t>(64, BufferBudget / (vertexBytes + indexBytes)), blockTets / 64 * 64,
+    std::max<size_t>(order.GetSize(), 1) });
   this->ReserveBuffers((perPass + 63) / 64 * 64);
   const GLuint compute = static_cast<GLuint>(this->Compute->GetHandle());
   const GLuint draw = static_cast<GLuint>(this->DrawProgram->GetHandle());
@@ -220,6 +232,7 @@ void PsiComputeProjector::Draw(
   }
   renWin->GetShaderCache()->ReleaseCurrentShader();
   glUseProgram(0);
+  return true;
 }
 
 void PsiComputeProjector::ReleaseGraphicsResources(vtkWindow* win)

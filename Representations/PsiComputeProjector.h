@@ -42,7 +42,10 @@ public:
   /// Projects and draws the tetrahedra of `order`, chunk by chunk as it streams their point ids
   /// (PsiVisibilityOrder::Draw), in passes that fit the buffers. Both programs'
   /// uniforms must be set. Leaves no program bound (VTK's shader cache is told).
-  void Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder& order, size_t targetPixels);
+  /// Each pass's buffers fit `maxBlockBytes` (GL_MAX_SHADER_STORAGE_BLOCK_SIZE, PsiDriverLimits).
+  /// False, with `error` set, when not even one work group's triangles fit it (nothing drawn).
+  bool Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder& order, size_t targetPixels,
+    long long maxBlockBytes, std::string& error);
   void ReleaseGraphicsResources(vtkWindow* win);
 
   /// Bytes of the reused vertex and index buffers (their size bounds the tetrahedra per pass).

@@ -92,7 +92,7 @@ void PsiMeshBuffers::UploadPoints(vtkOpenGLRenderWindow* renWin)
 
 bool PsiMeshBuffers::Update(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBase* input,
   vtkDataArray* scalars, bool cellScalars, psi::ScalarComponent component,
-  const std::string& arrayKey, std::string& error)
+  const std::string& arrayKey, long long maxTexels, std::string& error)
 {
   this->Mesh = psi::GatherTetMesh(input, scalars, cellScalars, component);
   this->GeometryTime = GeometryTimeOf(input);
@@ -101,14 +101,15 @@ bool PsiMeshBuffers::Update(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBa
   this->ArrayKey = arrayKey;
   ++this->Version;
   bool fits = true;
-  GLint maxTexels = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
-  if (this->Mesh.NumberOfPoints() > static_cast<size_t>(maxTexels) ||
+  // one texel per point in each texture buffer (points, opacity scalars, gradients)
+  if (static_cast<long long>(this->Mesh.NumberOfPoints()) > maxTexels ||
     this->Mesh.NumberOfTets() > 0xffffffffu)
   {
     std::ostringstream msg;
-    msg << "mesh too large for this GPU (" << this->Mesh.NumberOfPoints()
-        << " points; the limit is " << maxTexels << ").";
+    msg << "the mesh has " << this->Mesh.NumberOfPoints() << " points and "
+        << this->Mesh.NumberOfTets() << " tetrahedra; this OpenGL driver's texture buffers hold "
+        << maxTexels << " points at most (GL_MAX_TEXTURE_BUFFER_SIZE), and at most 2^32 "
+        << "tetrahedra are drawn: the mesh is not drawn.";
     error = msg.str();
     this->Mesh = psi::TetMesh();
     fits = false;

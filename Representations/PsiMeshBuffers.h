@@ -47,10 +47,11 @@ public:
   bool UpdateScalars(
     vtkOpenGLRenderWindow* renWin, vtkDataArray* scalars, psi::ScalarComponent component);
   /// Gathers the mesh (psi::GatherTetMesh) and uploads it. Returns false, with `error` set, when
-  /// the mesh does not fit the GPU's texture-buffer limit; the mesh is then empty.
+  /// the mesh has more points than a texture buffer holds (`maxTexels`, PsiDriverLimits); the
+  /// mesh is then empty.
   bool Update(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBase* input,
     vtkDataArray* scalars, bool cellScalars, psi::ScalarComponent component,
-    const std::string& arrayKey, std::string& error);
+    const std::string& arrayKey, long long maxTexels, std::string& error);
   /// Uploads the smoothed point gradients once per mesh.
   void UpdateGradients(vtkOpenGLRenderWindow* renWin);
 

@@ -82,23 +82,84 @@ void BlankNonFinite(vtkImageData* image, const PsiVolumeLOD::Arrays& arrays)
 }
 
 // The lattice: `resolution` samples along the longest side of `bounds`, the others in
-// proportion, at least 2 each, spanning the bounds.
-vtkSmartPointer<vtkImageData> Lattice(const double bounds[6], int resolution)
+// proportion, at least 2 each, spanning the bounds. In parallel every process computes it from the
+// same global bounds, so that the processes' samples are points of one lattice.
+struct Lattice
 {
-  auto lattice = vtkSmartPointer<vtkImageData>::New();
+  int Dims[3];
+  double Spacing[3];
+  double Origin[3];
+};
+
+Lattice GlobalLattice(const double bounds[6], int resolution)
+{
+  Lattice l;
   const double sides[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
   const double longest = std::max({ sides[0], sides[1], sides[2], 1e-300 });
-  int dims[3];
-  double spacing[3];
   for (int k = 0; k < 3; ++k)
   {
-    dims[k] = std::max(2, static_cast<int>(std::lround(resolution * sides[k] / longest)));
-    spacing[k] = sides[k] > 0 ? sides[k] / (dims[k] - 1) : 1;
+    l.Dims[k] = std::max(2, static_cast<int>(std::lround(resolution * sides[k] / longest)));
+    l.Spacing[k] = sides[k] > 0 ? sides[k] / (l.Dims[k] - 1) : 1;
+    l.Origin[k] = bounds[2 * k];
   }
-  lattice->SetDimensions(dims);
-  lattice->SetSpacing(spacing);
-  lattice->SetOrigin(bounds[0], bounds[2], bounds[4]);
-  return lattice;
+  return l;
+}
+
+vtkSmartPointer<vtkImageData> LatticeImage(const Lattice& l)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetOrigin(l.Origin);
+  image->SetSpacing(l.Spacing);
+  image->SetDimensions(l.Dims);
+  return image;
+}
+
+// In parallel, the lattice points beyond this process's cut that its piece does not cover (the
+// neighbour holds their cells) take the value of the nearest point inside the cut, instead of
+// hiding the last lattice cell before the cut (a seam); the cropping draws nothing beyond the
+// cut, so these values only shape the interpolation between the last point and the cut.
+void FillBeyondCut(vtkImageData* image, const char* maskName, const double cut[6])
+{
+  vtkPointData* pd = image->GetPointData();
+  vtkDataArray* mask = pd->GetArray(maskName);
+  const int* ext = image->GetExtent();
+  const double* o = image->GetOrigin();
+  const double* h = image->GetSpacing();
+  int in[6]; // the extent of the points inside the cut
+  for (int k = 0; k < 3; ++k)
+  {
+    in[2 * k] = std::max(ext[2 * k], static_cast<int>(std::ceil((cut[2 * k] - o[k]) / h[k])));
+    in[2 * k + 1] =
+      std::min(ext[2 * k + 1], static_cast<int>(std::floor((cut[2 * k + 1] - o[k]) / h[k])));
+    if (!mask || in[2 * k] > in[2 * k + 1])
+    {
+      return;
+    }
+  }
+  for (int z = ext[4]; z <= ext[5]; ++z)
+  {
+    for (int y = ext[2]; y <= ext[3]; ++y)
+    {
+      for (int x = ext[0]; x <= ext[1]; ++x)
+      {
+        int p[3] = { x, y, z };
+        int q[3] = { std::clamp(x, in[0], in[1]), std::clamp(y, in[2], in[3]),
+          std::clamp(z, in[4], in[5]) };
+        const vtkIdType pid = image->ComputePointId(p), qid = image->ComputePointId(q);
+        if (pid == qid || mask->GetTuple1(pid) != 0 || mask->GetTuple1(qid) == 0)
+        {
+          continue;
+        }
+        for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+        {
+          if (vtkDataArray* array = pd->GetArray(a))
+          {
+            array->SetTuple(pid, qid, array);
+          }
+        }
+      }
+    }
+  }
 }
 
 // Samples outside the mesh are hidden, and so are the lattice cells that touch one, as VTK's
@@ -157,42 +218,70 @@ void PsiVolumeLOD::Reset()
   this->Mapper->RemoveAllInputs();
 }
 
-bool PsiVolumeLOD::IsCurrent(vtkDataSet* piece, const Arrays& arrays, int resolution) const
+bool PsiVolumeLOD::Region::operator==(const Region& o) const
 {
-  return this->Image && piece == this->Piece && piece->GetMTime() == this->PieceTime &&
-    arrays == this->BuiltArrays && resolution == this->BuiltResolution;
+  return Parallel == o.Parallel && std::equal(Global, Global + 6, o.Global) &&
+    std::equal(Cut, Cut + 6, o.Cut);
 }
 
-bool PsiVolumeLOD::Update(vtkDataSet* piece, const Arrays& arrays, int resolution)
+bool PsiVolumeLOD::IsCurrent(
+  vtkDataSet* piece, const Arrays& arrays, const Region& region, int resolution) const
+{
+  return this->Image && piece == this->Piece && piece->GetMTime() == this->PieceTime &&
+    arrays == this->BuiltArrays && region == this->BuiltRegion &&
+    resolution == this->BuiltResolution;
+}
+
+bool PsiVolumeLOD::Update(
+  vtkDataSet* piece, const Arrays& arrays, const Region& region, int resolution)
 {
   if (!piece || piece->GetNumberOfCells() == 0 || arrays.Color.empty())
   {
     this->Reset();
     return false;
   }
-  if (this->IsCurrent(piece, arrays, resolution))
+  if (this->IsCurrent(piece, arrays, region, resolution))
   {
     return false;
   }
   const auto t0 = std::chrono::steady_clock::now();
+  const double* bounds = piece->GetBounds();
+  const Lattice lattice = GlobalLattice(region.Parallel ? region.Global : bounds, resolution);
   vtkNew<vtkProbeFilter> probe;
-  probe->SetInputData(Lattice(piece->GetBounds(), resolution));
+  probe->SetInputData(LatticeImage(lattice));
   probe->SetSourceData(WithArrays(piece, arrays));
   psi::Parallel([&] { probe->Update(); });
   this->Image = vtkSmartPointer<vtkImageData>::New();
   this->Image->ShallowCopy(probe->GetOutput());
+  if (region.Parallel)
+  {
+    FillBeyondCut(this->Image, probe->GetValidPointMaskArrayName(), region.Cut);
+  }
   BlankOutside(this->Image, probe->GetValidPointMaskArrayName());
   BlankNonFinite(this->Image, arrays);
-  const double* spacing = this->Image->GetSpacing();
-  this->Mapper->SetSampleDistance(
-    static_cast<float>(0.5 * std::min({ spacing[0], spacing[1], spacing[2] })));
+  this->Crop(region);
+  this->Mapper->SetSampleDistance(static_cast<float>(
+    0.5 * std::min({ lattice.Spacing[0], lattice.Spacing[1], lattice.Spacing[2] })));
   this->Mapper->SetInputData(this->Image);
   this->Mapper->SelectScalarArray(arrays.Color.c_str());
   this->Piece = piece;
   this->PieceTime = piece->GetMTime();
   this->BuiltArrays = arrays;
+  this->BuiltRegion = region;
   this->BuiltResolution = resolution;
   this->LastBuildSeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return true;
+}
+
+// In parallel each process draws only its cut: the neighbours' images abut there, as ordered
+// compositing requires, and no lattice cell is drawn twice.
+void PsiVolumeLOD::Crop(const Region& region)
+{
+  this->Mapper->SetCropping(region.Parallel ? 1 : 0);
+  if (region.Parallel)
+  {
+    this->Mapper->SetCroppingRegionPlanes(const_cast<double*>(region.Cut));
+    this->Mapper->SetCroppingRegionFlagsToSubVolume();
+  }
 }

@@ -4,7 +4,11 @@
 // caster (vtkSmartVolumeMapper) with the same vtkVolumeProperty, hence the same color map,
 // opacity function and unit distance. Each process probes its own piece alone (vtkResampleToImage
 // would be ParaView's collective vtkPResampleToImage, and a level of detail chosen by each
-// process's own frame time must not wait for the others).
+// process's own frame time must not wait for the others). In parallel (ordered compositing) every
+// process probes its piece on one lattice, spanned over the whole mesh's bounds, and draws only its
+// own region of it (ParaView's cut, through the mapper's cropping): its ray samples are then the
+// serial ray's samples inside its cut, and the composited image is the serial one up to the 8-bit
+// compositing of the processes' images (docs/decisions.md, "Interaction").
 //
 // Built once per piece, array and resolution, not per camera move nor per transfer-function edit
 // (the image holds scalars, not colors). Samples whose scalar is not finite are blanked, as
@@ -41,12 +45,26 @@ public:
     bool operator==(const Arrays& o) const { return Color == o.Color && Opacity == o.Opacity; }
   };
 
-  /// Whether the image was built from this piece (unmodified since), these arrays and this
-  /// resolution.
-  bool IsCurrent(vtkDataSet* piece, const Arrays& arrays, int resolution = DefaultResolution) const;
-  /// Resamples `piece` when it, its arrays or the resolution changed since the last build; true
-  /// when it rebuilt. A null or empty piece gives no image (the mapper then has no input).
-  bool Update(vtkDataSet* piece, const Arrays& arrays, int resolution = DefaultResolution);
+  /// Where the lattice lies: spanned over `Global` (the whole mesh's bounds), and this process's
+  /// share of it, `Cut` (its ordered-compositing region), when `Parallel`. Serially the lattice
+  /// spans the piece's own bounds and no region is given.
+  struct Region
+  {
+    bool Parallel = false;
+    double Global[6] = { 0, 0, 0, 0, 0, 0 };
+    double Cut[6] = { 0, 0, 0, 0, 0, 0 };
+    bool operator==(const Region& o) const;
+  };
+
+  /// Whether the image was built from this piece (unmodified since), these arrays, this region
+  /// and this resolution.
+  bool IsCurrent(vtkDataSet* piece, const Arrays& arrays, const Region& region,
+    int resolution = DefaultResolution) const;
+  /// Resamples `piece` when it, its arrays, the region or the resolution changed since the last
+  /// build; true when it rebuilt. A null or empty piece gives no image (the mapper then has no
+  /// input).
+  bool Update(vtkDataSet* piece, const Arrays& arrays, const Region& region,
+    int resolution = DefaultResolution);
   /// The mapper that draws the image (its input set by Update).
   vtkSmartVolumeMapper* GetMapper() const { return this->Mapper; }
   /// Whether there is an image to draw.
@@ -61,12 +79,14 @@ public:
 private:
   PsiVolumeLOD(const PsiVolumeLOD&) = delete;
   void operator=(const PsiVolumeLOD&) = delete;
+  void Crop(const Region& region);
 
   vtkSmartPointer<vtkSmartVolumeMapper> Mapper; ///< a timed vtkSmartVolumeMapper
   vtkSmartPointer<vtkImageData> Image;
   vtkDataSet* Piece = nullptr; ///< identity only, never dereferenced after Update
   unsigned long PieceTime = 0;
   Arrays BuiltArrays;
+  Region BuiltRegion;
   int BuiltResolution = 0;
   double LastBuildSeconds = 0;
 };

@@ -233,6 +233,7 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   if (draw)
   {
     const size_t pixels = size_t(I.Target.GetSize()[0]) * size_t(I.Target.GetSize()[1]);
+    std::string drawError;
     auto drawImage = [&](int image) {
       if (features.DepthPeel)
       {
@@ -243,7 +244,9 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
       }
       if (compute)
       {
-        I.Compute.Draw(renWin, I.Order, pixels);
+        const long long maxBlock =
+          PsiDriverLimits::Query().LoweredTo(I.TestingLimits).MaxStorageBlockBytes;
+        I.Compute.Draw(renWin, I.Order, pixels, maxBlock, drawError);
       }
       else
       {
@@ -255,6 +258,11 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
         I.Peeling.SetShaderParameters(composite, this, vol, renWin);
       });
     I.Peeling.Deactivate();
+    if (!drawError.empty() && drawError != I.LastDrawError)
+    {
+      vtkErrorMacro("Psi Volume: " << drawError);
+    }
+    I.LastDrawError = drawError;
   }
   I.Mesh.Deactivate();
   psi::DeactivateTables(tables);
@@ -293,7 +301,9 @@ bool vtkPsiVolumeMapper::UpdateMesh(
   }
   vtkVLogScopeF(PARAVIEW_LOG_RENDERING_VERBOSITY(), "Psi Volume: mesh");
   std::string error;
-  if (!I.Mesh.Update(renWin, input, scalars, cellFlag == 1, component, arrayKey, error))
+  const long long maxTexels =
+    PsiDriverLimits::Query().LoweredTo(I.TestingLimits).MaxTextureBufferTexels;
+  if (!I.Mesh.Update(renWin, input, scalars, cellFlag == 1, component, arrayKey, maxTexels, error))
   {
     vtkErrorMacro("Psi Volume: " << error);
   }
@@ -368,6 +378,14 @@ int vtkPsiVolumeMapper::GetMeshVersion() const
 void vtkPsiVolumeMapper::SetRecordDrawOrder(bool on)
 {
   this->Impl->Order.SetRecordDrawn(on);
+}
+
+void vtkPsiVolumeMapper::SetDriverLimitsForTesting(
+  long long maxTextureBufferTexels, long long maxStorageBlockBytes)
+{
+  this->Impl->TestingLimits.MaxTextureBufferTexels = maxTextureBufferTexels;
+  this->Impl->TestingLimits.MaxStorageBlockBytes = maxStorageBlockBytes;
+  this->Modified();
 }
 
 const std::vector<uint32_t>& vtkPsiVolumeMapper::GetLastDrawOrder() const

@@ -177,6 +177,10 @@ public:
   /// mesh, which are the input's cell ids when every cell is a drawable tetrahedron), when
   /// recorded (SetRecordDrawOrder); empty otherwise.
   const std::vector<uint32_t>& GetLastDrawOrder() const;
+  /// Testing aid: the driver's buffer limits lowered to these (texels of a texture buffer, bytes
+  /// of a shader storage block; 0 keeps the driver's), so that a small mesh crosses them
+  /// (PsiDriverLimits.h). Takes effect when the mesh is next gathered and on the next draw.
+  void SetDriverLimitsForTesting(long long maxTextureBufferTexels, long long maxStorageBlockBytes);
   /// Bumped when the mesh is gathered again (points or cells changed), not for new scalars.
   int GetMeshVersion() const;
   /// Zeroes the read-outs above (no frame drawn, e.g. empty input).

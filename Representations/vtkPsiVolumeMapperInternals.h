@@ -8,6 +8,7 @@
 #include "PsiAdaptiveNodes.h"
 #include "PsiComputeProjector.h"
 #include "PsiDepthPeelingCalls.h"
+#include "PsiDriverLimits.h"
 #include "PsiGeometryProjector.h"
 #include "PsiMeshBuffers.h"
 #include "PsiRenderTarget.h"
@@ -29,7 +30,9 @@ struct vtkPsiVolumeMapper::Internals
   // Transfer-function nodes for adaptive sampling, for the property and range they came from.
   PsiAdaptiveNodes AdaptiveNodes;
 
+  PsiDriverLimits TestingLimits; // lowered limits for tests (SetDriverLimitsForTesting)
   std::string LastWarning;
+  std::string LastDrawError; // said once per new text
   std::string LastFeatureNote; // what a separate opacity array changed, said once
   vtkWindow* Context = nullptr;
 

@@ -135,6 +135,7 @@ protected:
   /// Chooses what this render draws while the camera moves, and builds the level of detail when
   /// it is stale (vtkPsiVolumeRepresentationInteraction.cxx).
   void ChooseInteractiveImage(vtkInformation* inInfo);
+  int UpdateUnusedSurfaceLOD(vtkInformation* inInfo, vtkInformation* outInfo);
   bool UpdateVolumeLOD(vtkInformation* inInfo);
   void InstallLODMapper(bool volume);
 

@@ -13,17 +13,58 @@
 #include "vtkAlgorithmOutput.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataSet.h"
+#include "vtkBoundingBox.h"
 #include "vtkInformation.h"
+#include "vtkMultiProcessController.h"
 #include "vtkPVLODVolume.h"
 #include "vtkPVRenderView.h"
+#include "vtkPVRenderViewDataDeliveryManager.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkSmartVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
+namespace
+{
+// Where this process samples the level of detail. In parallel, ParaView's ordered-compositing
+// cuts of this render: one box per process, the same on every process, their union the bounds of
+// the data ParaView balances (this mesh's, with other volumes' if shown), so the processes agree
+// on one lattice without communicating (ranks may decide 'Auto' differently: no collective call
+// here). Serially (or without cuts) the piece's own bounds.
+PsiVolumeLOD::Region LatticeRegion(vtkPVRenderView* view)
+{
+  PsiVolumeLOD::Region region;
+  auto* manager = view
+    ? vtkPVRenderViewDataDeliveryManager::SafeDownCast(view->GetDeliveryManager())
+    : nullptr;
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
+  if (!manager || ranks < 2 || static_cast<int>(manager->GetCuts().size()) != ranks)
+  {
+    return region;
+  }
+  const std::vector<vtkBoundingBox>& cuts = manager->GetCuts();
+  const vtkBoundingBox& own = cuts[controller->GetLocalProcessId()];
+  vtkBoundingBox all;
+  for (const vtkBoundingBox& cut : cuts)
+  {
+    all.AddBox(cut);
+  }
+  region.Parallel = own.IsValid() && all.IsValid();
+  own.GetBounds(region.Cut);
+  all.GetBounds(region.Global);
+  return region;
+}
+} // namespace
+
 int vtkPsiVolumeRepresentation::ProcessViewRequest(
   vtkInformationRequestKey* request_type, vtkInformation* inInfo, vtkInformation* outInfo)
 {
+  if (request_type == vtkPVView::REQUEST_UPDATE_LOD() &&
+    this->PsiMapper->GetInteractionMode() != psi::InteractionModes::ParaViewSurface)
+  {
+    return this->UpdateUnusedSurfaceLOD(inInfo, outInfo);
+  }
   if (!this->Superclass::ProcessViewRequest(request_type, inInfo, outInfo))
   {
     return 0;
@@ -33,6 +74,22 @@ int vtkPsiVolumeRepresentation::ProcessViewRequest(
     this->ChooseInteractiveImage(inInfo);
   }
   return 1;
+}
+
+// ParaView asks for its surface level of detail when the data is larger than its LODThreshold
+// (the GUI's default is 20 MB): the surface of the whole mesh, which 'Psi Volume' draws only in
+// 'ParaView surface' mode. Otherwise the superclass makes an outline instead (its bounds, at no
+// cost), where the surface of a 2.56M-tetrahedron mesh took 4.7 s and 228 MB.
+int vtkPsiVolumeRepresentation::UpdateUnusedSurfaceLOD(vtkInformation* inInfo, vtkInformation* outInfo)
+{
+  const bool outline = inInfo->Has(vtkPVRenderView::USE_OUTLINE_FOR_LOD()) != 0;
+  inInfo->Set(vtkPVRenderView::USE_OUTLINE_FOR_LOD(), 1);
+  const int ok = this->Superclass::ProcessViewRequest(vtkPVView::REQUEST_UPDATE_LOD(), inInfo, outInfo);
+  if (!outline)
+  {
+    inInfo->Remove(vtkPVRenderView::USE_OUTLINE_FOR_LOD());
+  }
+  return ok;
 }
 
 // The superclass has set the actor's LOD from ParaView's LODThreshold (USE_LOD); every mode but
@@ -101,13 +158,15 @@ bool vtkPsiVolumeRepresentation::UpdateVolumeLOD(vtkInformation* inInfo)
     : nullptr;
   PsiVolumeLOD::Arrays arrays;
   arrays.Color = this->PsiMapper->GetArrayName() ? this->PsiMapper->GetArrayName() : "";
-  const bool stale = !this->LOD->IsCurrent(piece, arrays);
+  const PsiVolumeLOD::Region region =
+    LatticeRegion(vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW())));
+  const bool stale = !this->LOD->IsCurrent(piece, arrays, region);
   if (stale)
   {
     this->SetProgressText("Psi Volume: interactive level of detail");
     this->UpdateProgress(0.0);
   }
-  this->LOD->Update(piece, arrays);
+  this->LOD->Update(piece, arrays, region);
   if (stale)
   {
     this->UpdateProgress(1.0);

@@ -1,8 +1,6 @@
 # Tests of the Core module (GL-free math), included from Testing/CMakeLists.txt. A test of Core
 # code links PsiVolume::Core (with PsiTestSupport for the exact references, and VTK's own modules
-# for the data it builds), not the Representations module or ParaView's rendering libraries:
-# only TestIntegrationMethods does, for its check of the mapper's IntegrationMethod (clamped to
-# the table, named from it, its default the XML's).
+# for the data it builds), not the Representations module or ParaView's rendering libraries.
 
 # The PTINT truth table and its fan, Psi and the segment integrals against an independent
 # quadrature, the Psi table.
@@ -13,7 +11,7 @@ add_test(NAME PsiCore.Math COMMAND TestPsiMath)
 # Every integration method against the reference of its model; the panel's IntegrationMethod
 # enumeration checked against psi::IntegrationMethodTable().
 add_executable(TestIntegrationMethods Cxx/TestIntegrationMethods.cxx)
-target_link_libraries(TestIntegrationMethods PRIVATE PsiVolume::Representations PsiTestSupport
+target_link_libraries(TestIntegrationMethods PRIVATE PsiVolume::Core PsiTestSupport
   ParaView::VTKExtensionsCore)
 target_compile_definitions(TestIntegrationMethods PRIVATE
   PSI_REPRESENTATION_XML="${PROJECT_SOURCE_DIR}/XML/PsiVolumeRepresentation.xml")

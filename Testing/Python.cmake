@@ -38,18 +38,21 @@ endforeach ()
 # More than one draw call (5.1M tetrahedra, ~15-20 s here): run alone, it is the heaviest.
 set_tests_properties(PsiPython.bad_input.large PROPERTIES RUN_SERIAL ON)
 
-# MPI ordered compositing: 2 pvbatch ranks against a serial render.
+# MPI ordered compositing: 2 pvbatch ranks against a serial render, the still frame (mpi) and
+# the interactive level of detail (mpi_lod).
 if (PVBATCH_EXECUTABLE AND MPIEXEC_EXECUTABLE)
-  add_test(NAME PsiPython.mpi
-    COMMAND "${MPIEXEC_EXECUTABLE}" --allow-run-as-root -n 2 "${PVBATCH_EXECUTABLE}"
-            --force-offscreen-rendering "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_mpi.py")
-  set_tests_properties(PsiPython.mpi PROPERTIES
-    ENVIRONMENT "PSI_PLUGIN=$<TARGET_FILE:PsiVolume>;${PSI_PYTHONPATH};PSI_PVBATCH=${PVBATCH_EXECUTABLE};OMPI_MCA_rmaps_base_oversubscribe=1"
-    SKIP_RETURN_CODE 77
-    TIMEOUT 240
-    RUN_SERIAL ON)
+  foreach (name IN ITEMS mpi mpi_lod)
+    add_test(NAME PsiPython.${name}
+      COMMAND "${MPIEXEC_EXECUTABLE}" --allow-run-as-root -n 2 "${PVBATCH_EXECUTABLE}"
+              --force-offscreen-rendering "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_${name}.py")
+    set_tests_properties(PsiPython.${name} PROPERTIES
+      ENVIRONMENT "PSI_PLUGIN=$<TARGET_FILE:PsiVolume>;${PSI_PYTHONPATH};PSI_PVBATCH=${PVBATCH_EXECUTABLE};OMPI_MCA_rmaps_base_oversubscribe=1"
+      SKIP_RETURN_CODE 77
+      TIMEOUT 240
+      RUN_SERIAL ON)
+  endforeach ()
 else ()
-  message(STATUS "pvbatch or mpiexec not found: PsiPython.mpi is not registered")
+  message(STATUS "pvbatch or mpiexec not found: PsiPython.mpi and PsiPython.mpi_lod are not registered")
 endif ()
 
 # Client-server: a pvpython client renders through `mpiexec -n 2 pvserver` (remote rendering,
@@ -65,3 +68,12 @@ endif ()
 # While the camera moves: the volume level of detail chosen by mode and budget, never in still
 # renders or screenshots, close to the full frame; rebuilt for new arrays and data; hard inputs.
 psi_add_python_test(interaction TIMEOUT 300)
+
+# The install tree: `cmake --install` into a temporary prefix, then pvpython loads the plugin from
+# it by path, draws the embedded default with 'Psi Volume' and imports psivolume from it, with the
+# checkout's Python/ off its path (Testing/Install/run_installed.py).
+add_test(NAME PsiPython.installed
+  COMMAND "${PSI_PYTHON3}" "${CMAKE_CURRENT_SOURCE_DIR}/Install/run_installed.py"
+          --build "${CMAKE_BINARY_DIR}" --cmake "${CMAKE_COMMAND}" --pvpython "${PVPYTHON_EXECUTABLE}"
+          --plugins-dir "${PSI_PLUGINS_DIR}" --python-dir "${PSI_PYTHON_DESTINATION}")
+set_tests_properties(PsiPython.installed PROPERTIES TIMEOUT 300)

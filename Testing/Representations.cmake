@@ -52,6 +52,11 @@ set_tests_properties(PsiRepresentations.VisibilityOrder PROPERTIES TIMEOUT 120)
 psi_add_gl_executable(TestPsiTranslucentGeometry)
 psi_add_render_test(TranslucentGeometry TestPsiTranslucentGeometry TIMEOUT 300)
 
+# Meshes past the driver's buffer limits (lowered for the test): the compute projector in many
+# passes with the same image, and one clear error where a mesh cannot be drawn.
+psi_add_gl_executable(TestPsiDriverLimits)
+add_test(NAME PsiRepresentations.DriverLimits COMMAND TestPsiDriverLimits)
+
 # The shipped GLSL of each method on the GPU against its C++ version.
 find_package(OpenGL REQUIRED)
 psi_add_gl_executable(TestIntegrationGLSL OpenGL::GL)
@@ -78,3 +83,9 @@ set_tests_properties(PsiRepresentations.ShaderComposition PROPERTIES
 add_executable(TestFramePlan Cxx/TestFramePlan.cxx)
 target_link_libraries(TestFramePlan PRIVATE PsiVolume::Representations PsiTestSupport)
 add_test(NAME PsiRepresentations.FramePlan COMMAND TestFramePlan)
+
+# The mapper holds the one settings type: the integration method clamped to the method table
+# (through psi::SetClamped), named from it, its default the settings' (GL-free).
+add_executable(TestMapperSettings Cxx/TestMapperSettings.cxx)
+target_link_libraries(TestMapperSettings PRIVATE PsiVolume::Representations)
+add_test(NAME PsiRepresentations.MapperSettings COMMAND TestMapperSettings)

@@ -59,6 +59,17 @@ MUTATIONS = [
     Mutation("improved_opacity_parabola_sign", "Shaders/PsiIntegrateLinearOpacityImproved.glsl",
              "0.5 * (tb + tf) - 0.108165 * (tb - tf) * (tb - tf)",
              "0.5 * (tb + tf) + 0.108165 * (tb - tf) * (tb - tf)", GLSL),
+    # A transmittance of 0 (opacity 1) clamped to a small one instead of an infinite optical
+    # depth: only a segment opaque over its whole length with D > 0 sees it (the ray must take
+    # the front luminance; Psi of the clamped depth lets the back one in, within the sweep bounds).
+    Mutation("opaque_depth_clamped", "Core/PsiIntegrationMethods.cxx",
+             "const double t = std::min(std::max(trans, 0.0), 1.0);",
+             "const double t = std::min(std::max(trans, 1e-12), 1.0);",
+             ["PsiCore.IntegrationMethods"]),
+    Mutation("improved_opacity_opaque_depth_clamped",
+             "Shaders/PsiIntegrateLinearOpacityImproved.glsl",
+             "float tau2D = t2 > 0.0 ? -log(t2) * units : (D > 0.0 ? 1e30 : 0.0);",
+             "float tau2D = -log(max(t2, 1e-12)) * units;", GLSL),
     Mutation("full_preintegration_front_back_swapped", "Shaders/PsiIntegrateFullPreIntegration.glsl",
              "    sb * preScalarScaleShift.x + preScalarScaleShift.y,",
              "    sf * preScalarScaleShift.x + preScalarScaleShift.y,", GL),
@@ -197,6 +208,25 @@ MUTATIONS = [
              "true ||", ["PsiPython.interaction"]),
     Mutation("lod_outside_not_hidden", "Representations/PsiVolumeLOD.cxx",
              "    if (mask->GetTuple1(i) == 0)", "    if (false)", ["PsiPython.interaction"]),
+    # in parallel: one lattice over the whole mesh, each rank drawing its own cut of it
+    Mutation("lod_rank_own_lattice", "Representations/PsiVolumeLOD.cxx",
+             "GlobalLattice(region.Parallel ? region.Global : bounds, resolution)",
+             "GlobalLattice(bounds, resolution)", ["PsiPython.mpi_lod"]),
+    Mutation("lod_lattice_over_own_cut", "Representations/vtkPsiVolumeRepresentationInteraction.cxx",
+             "    all.AddBox(cut);", "    all.AddBox(own);", ["PsiPython.mpi_lod"]),
+    Mutation("lod_rank_not_cropped", "Representations/PsiVolumeLOD.cxx",
+             "  this->Mapper->SetCropping(region.Parallel ? 1 : 0);",
+             "  this->Mapper->SetCropping(0);", ["PsiPython.mpi_lod"]),
+    Mutation("lod_rank_beyond_cut_hidden", "Representations/PsiVolumeLOD.cxx",
+             "  if (region.Parallel)\n  {\n    FillBeyondCut(",
+             "  if (false)\n  {\n    FillBeyondCut(", ["PsiPython.mpi_lod"]),
+    # --- The driver's buffer limits (Representations/PsiMeshBuffers.cxx, PsiComputeProjector.cxx).
+    Mutation("texture_buffer_limit_unchecked", "Representations/PsiMeshBuffers.cxx",
+             "if (static_cast<long long>(this->Mesh.NumberOfPoints()) > maxTexels ||",
+             "if (static_cast<long long>(this->Mesh.NumberOfPoints()) > 2 * maxTexels ||",
+             ["PsiRepresentations.DriverLimits"]),
+    Mutation("storage_block_limit_unchecked", "Representations/PsiComputeProjector.cxx",
+             "  if (blockTets < 64)\n", "  if (blockTets < 1)\n", ["PsiRepresentations.DriverLimits"]),
     # --- Translucent geometry with depth peeling for volumes (Representations/PsiDepthPeelingCalls,
     # PsiRenderTarget).
     Mutation("peeling_stages_ignored", "Representations/PsiDepthPeelingCalls.cxx",
@@ -396,4 +426,10 @@ MUTATIONS = [
              "if (n[1] > 0 && x >= 0 && x <= table.Size - 1)",
              "if (n[1] > 1 && x >= 0 && x <= table.Size - 1)",
              ["PsiCore.TransferFunctionNodes"]),
+    # --- The install tree (cmake/PsiVolumeInstall.cmake, docs/install.md).
+    Mutation("installed_package_misses_its_plugin", "Python/psivolume/data.py",
+             "        from . import installed_paths\n", "        from . import installed_path\n",
+             ["PsiPython.installed"]),
+    Mutation("no_plugins_xml_installed", "CMakeLists.txt",
+             '  PLUGINS_FILE_NAME "PsiVolume.plugins.xml")', "  )", ["PsiPython.installed"]),
 ]

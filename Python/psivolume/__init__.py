@@ -4,11 +4,14 @@
     testing         checks that count failures, image capture and comparison, the PNG writer
     timing          frame times: one frame, a view's frames, interleaved rounds of contenders
     process         the environment of child pvpython/pvbatch processes
+    session         a server's session and its end (the whole session, every MPI rank)
     bench           the benchmarks' scene, mapper switching and exact reference
     accuracy        the accuracy report (also a command: pvpython -m psivolume.accuracy)
     accuracy_plots  the accuracy report's table and plots
     moreland        Moreland's Table 6.4 beside the report's ratios
 
-The folder holding this package (the checkout's Python/) goes on PYTHONPATH: the tests' CTest
-registrations and the scripts set it; by hand, `PYTHONPATH=Python pvpython FILE.py`. Nothing here
+Installed by `cmake --install` beside ParaView's own Python modules, it imports as it is (and finds
+the installed plugin). In a checkout, the folder holding this package (Python/) goes on
+PYTHONPATH: the tests' CTest registrations and the scripts set it; by hand,
+`PYTHONPATH=Python pvpython FILE.py`. Nothing here
 imports from the rest of the checkout, and importing the package alone imports no module."""

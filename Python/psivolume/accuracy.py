@@ -49,10 +49,14 @@ TF_SAMPLES = 512  # extra breakpoints where the color map or opacity is not line
 
 
 def find_reference_renderer():
-    """build/bin/psi_reference_render (PSI_REFERENCE_RENDER overrides)."""
+    """psi_reference_render beside an installed plugin, else build/bin/ (PSI_REFERENCE_RENDER
+    overrides)."""
     if os.environ.get("PSI_REFERENCE_RENDER"):
         return os.environ["PSI_REFERENCE_RENDER"]
     plugin = data.find_plugin()
+    beside = os.path.join(os.path.dirname(plugin), "psi_reference_render")  # installed
+    if os.path.exists(beside):
+        return beside
     # <build>/lib*/paraview-X.Y/plugins/PsiVolume/PsiVolume.so
     build = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(plugin)))))
     hits = glob.glob(os.path.join(build, "bin", "psi_reference_render"))

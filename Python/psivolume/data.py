@@ -23,9 +23,16 @@ NAMED_FILES = {"spx": ("spx.vtk", "scalars")}
 
 
 def find_plugin():
-    """Path of the built plugin (PSI_PLUGIN overrides)."""
+    """Path of the plugin (PSI_PLUGIN overrides): the installed one when this package is installed
+    (`cmake --install` adds installed_paths.py), else the checkout's build."""
     if os.environ.get("PSI_PLUGIN"):
         return os.environ["PSI_PLUGIN"]
+    try:
+        from . import installed_paths
+        return os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                             installed_paths.PLUGIN))
+    except ImportError:
+        pass
     build = os.environ.get("PSI_BUILD_DIR") or os.path.join(SOURCE_ROOT, "build")
     # The plugin directory is named for the ParaView it was built against (CMakeLists.txt):
     # only a build for the running ParaView can load.

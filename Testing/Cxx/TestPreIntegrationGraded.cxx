@@ -20,6 +20,7 @@
 #include "PsiPreIntegrationTable.h"
 #include "PsiReferenceIntegrals.h"
 #include "PsiTable.h"
+#include "PsiRampTable.h"
 #include "PsiTestCheck.h"
 #include "PsiTestImageCompare.h"
 #include "PsiTestTransferFunction.h"
@@ -83,18 +84,7 @@ void TestLengthAxis()
 // Ramp transfer function: color and attenuation linear in s on [0, 1], tau up to tauMax.
 psi::TransferFunctionTable Ramp(double tauMax)
 {
-  psi::TransferFunctionTable tf;
-  tf.Size = 256;
-  tf.Range[0] = 0;
-  tf.Range[1] = 1;
-  tf.Rgba.resize(4 * tf.Size);
-  for (int i = 0; i < tf.Size; ++i)
-  {
-    const double s = double(i) / (tf.Size - 1);
-    const float v[4] = { float(s), float(0.5), float(1 - s), float(tauMax * s) };
-    std::copy(v, v + 4, &tf.Rgba[4 * i]);
-  }
-  return tf;
+  return psitest::RampTable({ 0, 0.5f, 1, 0 }, { 1, 0.5f, 0, static_cast<float>(tauMax) });
 }
 
 // Lookups against the exact integral for lengths from 1e-3 to 1 of the longest edge, with an

@@ -62,6 +62,17 @@ d.InteractionMode = "Volume LOD"
 lod, used = interactive()
 t.check(used == LOD, "'Volume LOD': the level of detail (drew %d)" % used)
 
+# --- ParaView's own level of detail: its surface past LODThreshold, only in 'ParaView surface'.
+view.LODThreshold = 0.0  # ParaView asks for its level of detail at any size
+d.InteractionMode = "ParaView surface"
+img, used = interactive()
+t.check(used == SURFACE, "'ParaView surface' past LODThreshold: ParaView's surface (drew %d)" % used)
+d.InteractionMode = "Volume LOD"
+img, used = interactive()
+t.check(used == LOD and testing.mean_error(img, lod) < 1e-6,
+        "'Volume LOD' past LODThreshold: the volume level of detail (drew %d)" % used)
+view.LODThreshold = 1e9
+
 # --- The level of detail is a volume close to the full frame.
 t.check(testing.mean_error(lod, full) > 0, "the level of detail is not the full frame")
 pt_view = testing.black_view(SIZE)

@@ -43,8 +43,8 @@ def capture(view):
     return a[:, :, :3].astype(np.float64)
 
 
-def build(redistribute):
-    w = simple.Wavelet(WholeExtent=[-HALF, HALF, -HALF, HALF, -HALF, HALF])
+def build(redistribute, extent=(-HALF, HALF, -HALF, HALF, -HALF, HALF)):
+    w = simple.Wavelet(WholeExtent=list(extent))
     src = simple.Tetrahedralize(Input=w)
     if redistribute:
         src = simple.RedistributeDataSet(Input=src)
@@ -76,7 +76,8 @@ def render(src, view_size=SIZE):
     c.SetFocalPoint(0, 0, 0)
     c.SetPosition(60, 35, 45)
     c.SetViewUp(0, 0, 1)
-    view.ResetCamera(-HALF * 1.0, HALF * 1.0, -HALF * 1.0, HALF * 1.0, -HALF * 1.0, HALF * 1.0)
+    # the data's bounds, as the first simple.Render of a session resets the camera to them
+    view.ResetCamera(*src.GetDataInformation().GetBounds())
     simple.Render(view)
     simple.Render(view)
     return view, d
@@ -92,11 +93,12 @@ def serial_main(out):
     testing.exit_now(0)
 
 
-def serial_reference(out):
-    """Runs this script serially in a clean environment (no MPI launcher variables)."""
+def serial_reference(out, script=__file__):
+    """Runs `script` (this one by default) with `--serial OUT` serially in a clean environment (no
+    MPI launcher variables)."""
     env = process.environment_without_mpi()
     exe = os.environ.get("PSI_PVBATCH") or "pvbatch"
-    cmd = [exe, "--force-offscreen-rendering", os.path.abspath(__file__), "--serial", out]
+    cmd = [exe, "--force-offscreen-rendering", os.path.abspath(script), "--serial", out]
     t0 = time.time()
     r = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                        timeout=240)
@@ -132,14 +134,21 @@ def watch_environment():
     faulthandler.dump_traceback_later(WATCHDOG, exit=True, file=err)
 
 
-def parallel_main():
-    t = testing.Checks("test_mpi")
+def start(name):
+    """The checks of a parallel test named `name`, with the environment watched; skips a run on
+    fewer than 2 ranks. Returns the checks and the number of ranks."""
+    t = testing.Checks(name)
     watch_environment()
     nranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
     print("ranks: %d" % nranks)
     if nranks < 2:
         print("SKIP: run with mpiexec -n 2 pvbatch (this run has %d rank)" % nranks)
         testing.exit_now(testing.SKIP)
+    return t, nranks
+
+
+def parallel_main():
+    t, nranks = start("test_mpi")
     out = os.path.join(tempfile.mkdtemp(), "serial.npy")
     ok = serial_reference(out)
     t.check(ok, "the serial reference rendered")
@@ -181,14 +190,18 @@ def parallel_main():
             np.save(os.path.join(os.environ["PSI_MPI_SAVE"], "serial.npy"), ref)
         simple.Delete(d)
         simple.Delete(view)
+    finish(t)
+
+
+def finish(t):
+    """Ends a parallel test. Not Checks.finish(): os._exit on rank 0 skips MPI_Finalize, and
+    mpiexec then reports the job as failed whatever the code. Ending the script lets pvbatch
+    finalize all ranks; an exception makes pvbatch (and mpiexec) exit non-zero."""
     faulthandler.cancel_dump_traceback_later()
-    # Not Checks.finish(): os._exit on rank 0 skips MPI_Finalize, and mpiexec then reports the
-    # job as failed whatever the code. Ending the script lets pvbatch finalize all ranks; an
-    # exception makes pvbatch (and mpiexec) exit non-zero.
     print("%s: %s" % (t.name, "FAILED (%d)" % t.failures if t.failures else "passed"))
     sys.stdout.flush()
     if t.failures:
-        raise RuntimeError("test_mpi: %d check(s) failed" % t.failures)
+        raise RuntimeError("%s: %d check(s) failed" % (t.name, t.failures))
 
 
 if __name__ == "__main__":

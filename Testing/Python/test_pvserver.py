@@ -8,8 +8,10 @@ Environment: PSI_PLUGIN (the plugin), PSI_PVSERVER, PSI_MPIEXEC (default: from P
 0. Holds one X connection for the whole run (see hold_display: Xvfb resets, and refuses
    connections, whenever its last client disconnects; the source of "bad X server connection").
 1. Starts `mpiexec --allow-run-as-root -n 2 pvserver --server-port=P --force-offscreen-rendering`
-   on a free port P, in its own process group, output to a log file. A reaper process kills that
-   group if this client dies any way (crash, watchdog, ctest timeout); `finally` kills it too.
+   on a free port P, in a session of its own, output to a log file. A reaper process ends that
+   session if this client dies any way (crash, watchdog, ctest timeout, SIGKILL); `finally` ends
+   it too (psivolume.session: the session, since each Open MPI rank has a process group of its
+   own).
 2. Meanwhile renders the serial reference in this process on the built-in connection: the same
    pipeline, view and camera as test_mpi.py (its build/render/capture), then disconnects.
 3. Waits for the server's 'Accepting connection(s)' line (fails, printing the server log, if the
@@ -33,11 +35,15 @@ Environment: PSI_PLUGIN (the plugin), PSI_PVSERVER, PSI_MPIEXEC (default: from P
    1.0/255 and at most 1% of the pixels differing by more than 24/255 (the two ranks' partial
    images are 8-bit and premultiplied, so seam pixels differ by a few 1/255; a wrong order or a
    missing piece changes far more). Measured here: mean 0.152/255, max 5/255, no pixel > 24/255.
+7. The interactive level of detail on the server: InteractionMode 'Volume LOD', one interactive
+   render (image reduction 1, images sent uncompressed): 'Psi Volume' on server rank 0 reads
+   LastInteractiveImage 1 (the level of detail; read as in 5), the client's image is not the
+   still one (3.5/255 apart) and matches the serial level of detail with the still frame's
+   tolerance (test_mpi_lod.py holds the tight bound), and the server logged no error.
 """
 import faulthandler
 import os
 import shutil
-import signal
 import socket
 import subprocess
 import sys
@@ -49,7 +55,8 @@ import numpy as np
 from paraview import servermanager, simple
 
 import test_mpi  # the scene, camera, capture and tolerance of the MPI test (this folder)
-from psivolume import data, process, testing
+import test_mpi_lod  # the level of detail's frame and tolerance
+from psivolume import data, process, session, testing
 
 NRANKS = 2
 START_TIMEOUT = 60  # seconds for the server's 'Accepting connection(s)'
@@ -111,64 +118,20 @@ def start_server(port, logfile):
                             stderr=subprocess.STDOUT, env=env, start_new_session=True)
 
 
-REAPER = r"""
-import os, signal, sys, time
-pgid, parent, deadline = int(sys.argv[1]), int(sys.argv[2]), time.time() + float(sys.argv[3])
-while os.getppid() == parent and time.time() < deadline:
-    time.sleep(0.5)
-for sig in (signal.SIGTERM, signal.SIGKILL):
-    try:
-        os.killpg(pgid, sig)
-    except OSError:
-        break
-    time.sleep(2)
-"""
-
-
-def start_reaper(pgid):
-    """Kills the server's process group when this client is gone (or after WATCHDOG + 30 s)."""
-    py = shutil.which("python3") or "/usr/bin/python3"
-    return subprocess.Popen([py, "-c", REAPER, str(pgid), str(os.getpid()), str(WATCHDOG + 30)],
-                            stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                            stderr=subprocess.DEVNULL, start_new_session=True)
-
-
-def group_members(pgid):
-    pids = []
-    for entry in os.listdir("/proc"):
-        if not entry.isdigit():
-            continue
-        try:
-            with open("/proc/%s/stat" % entry) as f:
-                fields = f.read().rsplit(")", 1)[1].split()
-        except OSError:
-            continue
-        if int(fields[2]) == pgid and fields[0] != "Z":  # fields: state, ppid, pgrp, ...
-            pids.append(int(entry))
-    return pids
-
-
 def stop_server(proc):
-    """Lets the server end on its own after the client disconnected, else kills its group.
-    Returns (exit code or None if killed, pids of the group still alive afterwards)."""
+    """Lets the server end on its own after the client disconnected, else ends its session.
+    Returns (exit code or None if killed, pids of the session still alive afterwards)."""
     code = None
     try:
         code = proc.wait(timeout=10)
     except subprocess.TimeoutExpired:
         pass
-    for sig in (signal.SIGTERM, signal.SIGKILL):
-        if not group_members(proc.pid) and proc.poll() is not None:
-            break
-        try:
-            os.killpg(proc.pid, sig)
-        except OSError:
-            pass
-        try:
-            proc.wait(timeout=5)
-        except subprocess.TimeoutExpired:
-            pass
-        time.sleep(0.5)
-    return code, group_members(proc.pid)
+    alive = session.end(proc.pid) if session.members(proc.pid) or proc.poll() is None else []
+    try:
+        proc.wait(timeout=5)
+    except subprocess.TimeoutExpired:
+        pass
+    return code, alive
 
 
 def read(path):
@@ -199,8 +162,9 @@ def serial_reference(plugin):
     n = d.GetProperty("NumberOfTetrahedra").GetElement(0)
     simple.Delete(d)
     simple.Delete(view)
+    _, ref_lod, _ = test_mpi_lod.lod_frame(src)
     simple.Disconnect()
-    return ref, n
+    return ref, n, ref_lod
 
 
 def cells_per_rank(proxy, nranks):
@@ -209,23 +173,55 @@ def cells_per_rank(proxy, nranks):
             for rank in range(nranks)]
 
 
-def drawn(d):
-    """Tetrahedra drawn in the last render by the client's 'Psi Volume' and by the server root's.
-    The representation lives on the client and the servers; UpdatePropertyInformation pulls from
-    the client whenever the proxy's location includes it (vtkSMSessionClient::PullState), so the
-    server root's value is pulled with the location narrowed to the data server for that call."""
+def drawn(d, name="NumberOfTetrahedra"):
+    """A read-out (by default the tetrahedra drawn in the last render) of the client's 'Psi
+    Volume' and of the server root's. The representation lives on the client and the servers;
+    UpdatePropertyInformation pulls from the client whenever the proxy's location includes it
+    (vtkSMSessionClient::PullState), so the server root's value is pulled with the location
+    narrowed to the data server for that call."""
     d.UpdatePropertyInformation()
-    n_client = d.GetProperty("NumberOfTetrahedra").GetElement(0)
+    n_client = d.GetProperty(name).GetElement(0)
     location = d.SMProxy.GetLocation()
     try:
         d.SMProxy.SetLocation(0x01)  # vtkPVSession::DATA_SERVER
         d.SMProxy.UpdatePropertyInformation()
     finally:
         d.SMProxy.SetLocation(location)
-    return n_client, d.GetProperty("NumberOfTetrahedra").GetElement(0)
+    return n_client, d.GetProperty(name).GetElement(0)
 
 
-def remote_checks(t, port, plugin, ref, n_serial):
+def logged_errors(text):
+    """vtkErrorMacro's lines ("ERROR: In ...") and vtkLogger's errors ("ERR|")."""
+    return text.count("ERROR") + text.count("ERR|")
+
+
+def lod_checks(t, label, view, d, still, ref_lod, logpath):
+    """The interactive level of detail, drawn on the server (docstring, 7)."""
+    errors_before = logged_errors(read(logpath))
+    view.ImageReductionFactor = 1
+    d.InteractionMode = "Volume LOD"
+    view.InteractiveRender()
+    img = testing.grab(view)
+    _, used = drawn(d, "LastInteractiveImage")
+    t.check(used == test_mpi_lod.LOD, "%s: server rank 0 drew the level of detail in the "
+            "interactive render (LastInteractiveImage %d)" % (label, used))
+    to_still = 255 * testing.mean_error(img, still)
+    t.check(to_still > 0.5, "%s: the interactive image is not the still one (mean |diff| "
+            "%.3f/255)" % (label, to_still))
+    d_abs = np.abs(img - ref_lod)
+    mean, mx = float(d_abs.mean()), float(d_abs.max())
+    log("%s: pvserver level of detail vs serial: mean |diff| %.3f/255, max %.0f/255"
+        % (label, mean, mx))
+    t.check(mean <= test_mpi.MEAN_TOL and mx <= test_mpi_lod.MAX_TOL,
+            "%s: the level of detail from the server matches the serial one (mean %.3f/255 <= "
+            "%.2f, max %.0f/255 <= %.0f)" % (label, mean, test_mpi.MEAN_TOL, mx,
+                                              test_mpi_lod.MAX_TOL))
+    errors = logged_errors(read(logpath)) - errors_before
+    t.check(errors == 0, "%s: no error in the server's log during the interactive render (%d)"
+            % (label, errors))
+
+
+def remote_checks(t, port, plugin, ref, n_serial, ref_lod, logpath):
     t1 = time.time()
     conn = simple.Connect("localhost", port)
     t.check(conn is not None and servermanager.ActiveConnection.IsRemote(),
@@ -240,6 +236,7 @@ def remote_checks(t, port, plugin, ref, n_serial):
 
     settings = simple.GetSettingsProxy("RenderViewSettings")
     settings.RemoteRenderThreshold = 0.0  # always render on the server, never deliver to client
+    settings.CompressorConfig = "NULL"  # interactive images are otherwise sent lossy
 
     for redistribute in (False, True):
         label = "RedistributeDataSet" if redistribute else "Wavelet pieces"
@@ -295,6 +292,7 @@ def remote_checks(t, port, plugin, ref, n_serial):
                 out = os.environ["PSI_PVSERVER_SAVE"]
                 np.save(os.path.join(out, "pvserver_%d.npy" % redistribute), img)
                 np.save(os.path.join(out, "serial.npy"), ref)
+        lod_checks(t, label, view, d, img, ref_lod, logpath)
         simple.Delete(d)
         simple.Delete(view)
 
@@ -319,9 +317,10 @@ def main():
     logpath = os.path.join(tmp, "pvserver.log")
     with open(logpath, "w") as logfile:
         server = start_server(port, logfile)
-    reaper = start_reaper(server.pid)
+    # the server's session ends when this client does, however it ends
+    reaper = session.reaper(server.pid, WATCHDOG + 30, env=process.environment_without_mpi())
     try:
-        ref, n_serial = serial_reference(plugin)
+        ref, n_serial, ref_lod = serial_reference(plugin)
         log("serial reference (built-in connection): %d tetrahedra, %.1f s"
             % (n_serial, time.time() - t0))
         ok, how = wait_for_server(server, logpath)
@@ -331,7 +330,7 @@ def main():
         else:
             t.check(False, "pvserver did not start: %s (log below)" % how)
         if ok:
-            remote_checks(t, port, plugin, ref, n_serial)
+            remote_checks(t, port, plugin, ref, n_serial, ref_lod, logpath)
             disconnect()
     except Exception:  # noqa: BLE001 -- any error is a failure with its traceback, never a hang
         traceback.print_exc()

@@ -41,6 +41,22 @@ Rgba IntegrateReference(const Segment& s)
   return out;
 }
 
+namespace
+{
+// Opacity 1 over the whole segment (D > 0). The color is (Moreland's dissertation §5.3, Eq. 5.12)
+//   C = int_0^D tau(s) L(s) exp(-int_0^s tau(t) dt) ds,  tau(s) = -ln(1 - alpha(s)) / unit,
+// whose weight w(s) = tau(s) exp(-int_0^s tau) is the density of 1 - T(s), T(s) the
+// transmittance from the entry to s. With alpha = 1, tau is infinite: T(s) = 0 for every s > 0,
+// so 1 - T jumps from 0 to 1 at s = 0, w is a unit impulse there and C = L(0) = Lf, alpha = 1.
+// (The limit of alpha = 1 - eps, tau = -ln(eps) / unit: w = tau e^{-tau s} has mass
+// 1 - eps^{D/unit} -> 1 and mean depth below 1/tau -> 0.) The quadrature below would multiply
+// tau = inf by exp(-inf) = 0 instead.
+Rgba FullyOpaque(const TFSegment& s)
+{
+  return Rgba{ { s.Lf[0], s.Lf[1], s.Lf[2], 1.0 } };
+}
+} // namespace
+
 Rgba IntegrateReferenceLinearOpacity(const TFSegment& s)
 {
   using R = long double;
@@ -51,6 +67,10 @@ Rgba IntegrateReferenceLinearOpacity(const TFSegment& s)
   }
   const R D = s.D / s.unit; // in unit distances
   const R af = std::min(std::max(s.af, 0.0), 1.0), ab = std::min(std::max(s.ab, 0.0), 1.0);
+  if (af >= 1 && ab >= 1)
+  {
+    return FullyOpaque(s);
+  }
   auto tau = [&](R u) { // per unit distance, u from the front
     const R a = af + (ab - af) * u;
     return a >= 1 ? std::numeric_limits<R>::infinity() : -std::log1p(-a);

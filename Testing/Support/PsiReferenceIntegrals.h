@@ -13,7 +13,8 @@ namespace psi
 Rgba IntegrateReference(const Segment& s);
 
 /// Linear opacity: alpha linear, tau(s) = -ln(1 - alpha(s)) / unit (Moreland's dissertation
-/// §5.3, Eq. 5.12), luminance linear; adaptive quadrature in long double.
+/// §5.3, Eq. 5.12), luminance linear; adaptive quadrature in long double. Where alpha = 1 over
+/// the whole segment (D > 0) the ray takes the front luminance: (Lf, 1) exactly.
 Rgba IntegrateReferenceLinearOpacity(const TFSegment& s);
 
 /// The reference of the model `m` approximates.

@@ -1,6 +1,6 @@
 // psi_reference_render: the exact CPU reference image (PsiReferenceRaycaster) of a mesh, a
 // transfer function and a camera written by a script, for accuracy reports
-// (Python/psi_accuracy.py). Not part of the plugin.
+// (the package module psivolume.accuracy, Python/psivolume/accuracy.py). Not part of the plugin.
 //
 // Usage: psi_reference_render MESH.vtu SCENE.txt OUT.raw
 //   MESH.vtu   an unstructured grid; non-tetrahedral cells are split by vtkDataSetTriangleFilter

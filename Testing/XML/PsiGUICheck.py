@@ -89,3 +89,24 @@ def check(baseline_dir, test_dir, name, test_name=None, level=LEVEL, max_pixels=
     except Exception as error:  # the shell would swallow the traceback
         _say(sys.__stderr__, "PsiGUICheck FAILED: %s: %s: %s" % (name, type(error).__name__, error))
         return False
+
+
+def check_interaction(expected):
+    """Whether the active representation's last interactive frame was drawn by `expected`
+    (its LastInteractiveImage read-out: 0 the full frame, 1 the volume level of detail, 2
+    ParaView's surface). Prints "PsiGUICheck passed:" or "PsiGUICheck FAILED", as check does."""
+    try:
+        from paraview import simple
+
+        rep = simple.GetDisplayProperties()
+        rep.UpdatePropertyInformation()
+        drew = rep.GetProperty("LastInteractiveImage").GetElement(0)
+        if drew != expected:
+            _say(sys.__stderr__, "PsiGUICheck FAILED: the interactive frames were drawn by %d, "
+                 "not %d (LastInteractiveImage)" % (drew, expected))
+            return False
+        _say(sys.__stdout__, "PsiGUICheck passed: the interactive frames were drawn by %d" % drew)
+        return True
+    except Exception as e:  # noqa: BLE001 - any error is a failed check, said as such
+        _say(sys.__stderr__, "PsiGUICheck FAILED: interaction: %r" % (e,))
+        return False

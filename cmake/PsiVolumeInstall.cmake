@@ -1,0 +1,55 @@
+# What `cmake --install` puts beside the plugin (docs/install.md): the project's Python package
+# where ParaView's own Python modules are, the reference renderer of the accuracy report in the
+# plugin's directory, and, for a packaged ParaView that has none, bin/paraview.conf.
+# paraview_plugin_build (CMakeLists.txt) installs the plugin, its modules and PsiVolume.plugins.xml.
+
+# The Python package (Python/psivolume): beside ParaView's `paraview` package, so that pvpython,
+# pvbatch and the GUI's Python shell import it with no PYTHONPATH.
+if (DEFINED PARAVIEW_PYTHONPATH)
+  set(_psi_python_default "${PARAVIEW_PYTHONPATH}")
+else ()
+  set(_psi_python_default "${CMAKE_INSTALL_LIBDIR}/python3/site-packages")
+endif ()
+set(PSI_PYTHON_DESTINATION "${_psi_python_default}" CACHE STRING
+  "Where the Python package psivolume is installed, relative to the prefix")
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/Python/psivolume"
+  DESTINATION "${PSI_PYTHON_DESTINATION}"
+  COMPONENT   runtime
+  FILES_MATCHING PATTERN "*.py"
+  PATTERN "__pycache__" EXCLUDE)
+
+# The installed package finds the installed plugin (psivolume.data.find_plugin) by this path,
+# relative to the package, so that the install tree can be moved (DESTDIR, a package).
+file(RELATIVE_PATH _psi_plugin_from_package
+  "/prefix/${PSI_PYTHON_DESTINATION}/psivolume"
+  "/prefix/${PSI_PLUGINS_DIR}/PsiVolume/PsiVolume.so")
+set(_psi_installed_paths "${CMAKE_CURRENT_BINARY_DIR}/CMakeFiles/psivolume_installed_paths.py")
+file(WRITE "${_psi_installed_paths}"
+  "\"\"\"Written by `cmake --install`: where the plugin is, relative to this package.\"\"\"\n"
+  "PLUGIN = \"${_psi_plugin_from_package}\"\n")
+install(FILES "${_psi_installed_paths}"
+  DESTINATION "${PSI_PYTHON_DESTINATION}/psivolume"
+  RENAME      installed_paths.py
+  COMPONENT   runtime)
+
+# The exact reference of the accuracy report (psivolume.accuracy), beside the plugin whose
+# libPsiVolumeCore.so it links.
+set_target_properties(psi_reference_render PROPERTIES INSTALL_RPATH "\$ORIGIN")
+install(TARGETS psi_reference_render
+  RUNTIME DESTINATION "${PSI_PLUGINS_DIR}/PsiVolume"
+  COMPONENT runtime)
+
+# ParaView 5.10 and later read bin/paraview.conf beside their executables (paraview, pvpython,
+# pvbatch, pvserver): each line a plugins XML whose plugins are listed in the plugin manager
+# and found by name. Kitware's binaries ship their own, which this must not replace; Debian's
+# ParaView ships none, so its package (scripts/build-deb.sh) turns this on.
+option(PSI_INSTALL_PARAVIEW_CONF
+  "Install bin/paraview.conf naming the plugin (only for a ParaView that has no such file)" OFF)
+if (PSI_INSTALL_PARAVIEW_CONF)
+  paraview_plugin_write_conf(
+    NAME                paraview
+    PLUGINS_TARGETS     PsiVolumePlugins
+    BUILD_DESTINATION   "${CMAKE_INSTALL_DATADIR}/psivolume"
+    INSTALL_DESTINATION "${CMAKE_INSTALL_BINDIR}"
+    COMPONENT           runtime)
+endif ()
