@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # What accuracy costs, for your own data: renders FILE (or the embedded default, the
 # tetrahedralized Wavelet of run.sh) with every integration method of 'Psi Volume' (adaptive
-# sampling off and on) and ParaView's own volume mappers, measures each image against the exact
-# CPU reference at the same view, prints the table and writes DIR/report.md, DIR/accuracy.png and
+# sampling off and on), its interactive image (the volume level of detail), ParaView's own volume
+# mappers and 'Resample To Image' at 64^3, 128^3 and 256^3 (its resampling and the level of
+# detail's build timed apart from the frames), measures each image against the exact CPU
+# reference at the same view, prints the table and writes DIR/report.md, DIR/accuracy.png and
 # DIR/methods.png.
 #   bash scripts/accuracy-report.sh [FILE|bluntfin|post|comb|spx] [--array NAME] [--out DIR]
-#                                   [--size 384] [--frames 3] [--no-paraview]
+#                                   [--size 384] [--frames 3] [--resample-dims 64 128 256]
+#                                   [--no-paraview]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 . "$root/scripts/lib/python-path.sh"

@@ -1,7 +1,10 @@
 """What accuracy costs, for the user's own data: every integration method of 'Psi Volume'
-(adaptive sampling off and on) and ParaView's own unstructured-volume mappers, timed at the same
-view and measured against the exact reference, the project's CPU ray caster
-(Testing/Support/PsiReferenceRaycaster, run by build/bin/psi_reference_render).
+(adaptive sampling off and on), its interactive image (the volume level of detail), ParaView's
+own unstructured-volume mappers and 'Resample To Image' at several sampling dimensions (the
+mapper users pick for speed), timed at the same view and measured against the exact reference,
+the project's CPU ray caster (Testing/Support/PsiReferenceRaycaster, run by
+build/bin/psi_reference_render). One-time costs are reported apart from the frame times: the
+resampling of 'Resample To Image' (its first frame) and the level of detail's build.
 
 From pvpython or the GUI's Python shell (the checkout's Python/ folder on sys.path or
 PYTHONPATH), on the active view and the active source's volume:
@@ -11,7 +14,7 @@ As a command (scripts/accuracy-report.sh wraps it under Xvfb), with PYTHONPATH=P
                                    [--size 384] [--frames 3] [--wavelet-half 20]
                                    [--unit-distance U] [--no-paraview] [--paraview-timeout 120]
                                    [--paraview-mappers 'Projected tetra' 'Z sweep' ...]
-                                   [--budget 300]
+                                   [--resample-dims 64 128 256] [--budget 300]
 Times come from interleaved rounds (psivolume.timing): every method and mapper once per round,
 medians over the rounds, ratios to Average taken round by round, until every ratio's spread is
 within 5% or the budget is spent. Prints the table and writes DIR/report.md, DIR/accuracy.png (error against time),
@@ -36,6 +39,10 @@ from vtkmodules.vtkRenderingCore import vtkColorTransferFunction
 from . import accuracy_plots, bench, data, testing, timing
 
 PARAVIEW_MAPPERS = ["Projected tetra", "Z sweep", "Bunyk ray cast"]
+RESAMPLE = "Resample To Image"
+RESAMPLE_DIMS = [64, 128, 256]  # sampling dimensions (cubed); ParaView's default is 128
+INTERACTIVE = "Psi Volume (interactive)"
+FIRST_PREFIX = "PSI_FIRST_FRAME "  # a child's first frame, in seconds, before it is ready
 REFERENCE = "Exact reference (CPU)"
 BASELINE = "Average"  # ratios to it, round by round: Moreland's Table 6.4 gives the same
 TF_SAMPLES = 512  # extra breakpoints where the color map or opacity is not linear between nodes
@@ -196,27 +203,60 @@ def psi_contenders(cap, methods):
     return contenders, images
 
 
-def paraview_contenders(cap, mappers, timeout=120):
-    """ParaView's mappers, each in a child pvpython that stays up for the rounds (a crash there is
-    a row of the table with its note): (contenders, images)."""
+def interactive_contender(cap, method):
+    """The interactive image of 'Psi Volume': InteractionMode 'Volume LOD' (a coarse probe of
+    the mesh drawn by VTK's GPU ray caster, whatever the method; `method` is set for the still
+    frame before it), timed with InteractiveRender. Returns (contender, image, the level of
+    detail's build seconds, note)."""
+    def prepare():
+        bench.set_mapper(cap.rep, "Psi Volume|" + method)
+        cap.rep.AdaptiveSampling = "Off"
+        cap.rep.InteractionMode = "Volume LOD"
+
+    prepare()
+    simple.Render(cap.view)
+    cap.view.InteractiveRender()
+    image = testing.grab(cap.view)  # the back buffer as drawn, not re-rendered
+    cap.rep.UpdatePropertyInformation()
+    drew = cap.rep.GetProperty("LastInteractiveImage").GetElement(0)
+    build = cap.rep.GetProperty("LODBuildSeconds").GetElement(0)
+    note = "" if drew == 1 else "drew %d, not the level of detail (1)" % drew
+    return timing.InProcess(INTERACTIVE, cap.view, prepare, interactive=True), image, build, note
+
+
+def resample_row(dims):
+    return "ParaView %s %d^3" % (RESAMPLE, dims)
+
+
+def paraview_contenders(cap, mappers, timeout=120, resample_dims=()):
+    """ParaView's mappers, and 'Resample To Image' at each of `resample_dims`, each in a child
+    pvpython that stays up for the rounds (a crash there is a row of the table with its note):
+    (contenders, images, once), `once` the first frame's seconds of each 'Resample To Image'
+    (its resampling), apart from its frame time."""
     scene = os.path.join(cap.work, "scene.json")
     cap.write_child_scene(scene)
-    contenders, images = [], {}
-    for name in mappers:
-        out = os.path.join(cap.work, "pv_%s.npy" % name.replace(" ", "_"))
-        proc = timing.ChildProcess(child_command(name, scene, out), env=timing.child_environment(),
-                                   timeout=timeout)
-        row = "ParaView " + name
+    runs = [("ParaView " + m, m, None) for m in mappers] + \
+        [(resample_row(d), RESAMPLE, d) for d in resample_dims]
+    contenders, images, once = [], {}, {}
+    for row, mapper, dims in runs:
+        out = os.path.join(cap.work, "pv_%d.npy" % len(contenders))
+        proc = timing.ChildProcess(child_command(mapper, scene, out, dims),
+                                   env=timing.child_environment(), timeout=timeout)
         images[row] = np.load(out) if proc.ready and os.path.exists(out) else None
+        first = proc.line(FIRST_PREFIX)
+        if dims and first:
+            once[row] = float(first)
         contenders.append(timing.Child(row, proc))
-    return contenders, images
+    return contenders, images, once
 
 
-def child_command(mapper, scene, out):
-    """The command of a child pvpython drawing `mapper` on the scene written by
-    Capture.write_child_scene to `scene` (child_main)."""
-    return [timing.pvpython(), "--force-offscreen-rendering", "-m", __spec__.name,
+def child_command(mapper, scene, out, dims=None):
+    """The command of a child pvpython drawing `mapper` (with sampling dimensions `dims` cubed,
+    for 'Resample To Image') on the scene written by Capture.write_child_scene to `scene`
+    (child_main)."""
+    argv = [timing.pvpython(), "--force-offscreen-rendering", "-m", __spec__.name,
             "--child-mapper", mapper, "--child-scene", scene, "--child-out", out]
+    return argv + (["--child-dims", str(dims)] if dims else [])
 
 
 def errors(img, ref):
@@ -227,15 +267,18 @@ def errors(img, ref):
 
 
 def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
-           paraview_mappers=PARAVIEW_MAPPERS, title=None, paraview_timeout=120, budget=300.0):
-    """Renders the active (or given) view's volume with every method and mapper, measures each
-    image against the exact reference at the same view, prints the table and writes
-    out_dir/report.md, accuracy.png and methods.png. Returns the rows as dicts."""
+           paraview_mappers=PARAVIEW_MAPPERS, title=None, paraview_timeout=120, budget=300.0,
+           resample_dims=RESAMPLE_DIMS):
+    """Renders the active (or given) view's volume with every method and mapper, the
+    interactive image of 'Psi Volume' and 'Resample To Image' at each of `resample_dims`,
+    measures each image against the exact reference at the same view, prints the table and
+    writes out_dir/report.md, accuracy.png and methods.png. Returns the rows as dicts."""
     view = view or simple.GetActiveView()
     src = src or simple.GetActiveSource()
     rep = rep or simple.GetDisplayProperties(src, view)
     os.makedirs(out_dir, exist_ok=True)
     saved_type = rep.GetProperty("Representation").GetData()
+    saved_mode = rep.GetProperty("InteractionMode").GetData()
     with tempfile.TemporaryDirectory(prefix="psi_accuracy_") as work:
         simple.Render(view)
         cap = Capture(view, rep, src, work)
@@ -244,19 +287,25 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
         simple.Render(view)
         refs, ref_seconds = reference_image(cap)
         ref = refs[0]
+        method = rep.GetProperty("IntegrationMethod").GetData()
         methods = list(rep.GetProperty("IntegrationMethod").Available)
         psi, images = psi_contenders(cap, methods)
-        pv, pv_images = paraview_contenders(cap, paraview_mappers, paraview_timeout)
+        live, images[INTERACTIVE], build, live_note = interactive_contender(cap, method)
+        pv, pv_images, once = paraview_contenders(cap, paraview_mappers, paraview_timeout,
+                                                  resample_dims)
         images.update(pv_images)
-        timed = timing.interleaved(psi + pv, BASELINE, frames=frames, budget=budget,
+        once[INTERACTIVE] = build
+        timed = timing.interleaved(psi + [live] + pv, BASELINE, frames=frames, budget=budget,
                                    min_rounds=5, log=lambda m: print("  " + m, flush=True))
         rows = []
-        for c in psi + pv:
-            rows.append(dict(name=c.name, image=images.get(c.name),
-                             note=timed.notes[c.name], **timed.row(c.name)))
-        rows.append(dict(name=REFERENCE, spf=ref_seconds, image=refs[-1], note="",
+        for c in psi + [live] + pv:
+            note = timed.notes[c.name] or (live_note if c is live else "")
+            rows.append(dict(name=c.name, image=images.get(c.name), once=once.get(c.name),
+                             note=note, **timed.row(c.name)))
+        rows.append(dict(name=REFERENCE, spf=ref_seconds, image=refs[-1], note="", once=None,
                          spf_min=ref_seconds, spf_max=ref_seconds, cpu=None, ratio=None,
                          ratio_spread=None, rounds=1))
+    rep.InteractionMode = saved_mode
     rep.SetRepresentationType(saved_type)
     simple.Render(view)
     for r in rows:
@@ -265,7 +314,7 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
     info = dict(title=title or "%s (%s)" % (src.GetXMLLabel(), cap.array), cells=cap.cells,
                 size=cap.size, frames=frames, timing=timed.summary(), baseline=BASELINE,
                 rounds=timed.rounds, converged=timed.converged,
-                threads=os.environ.get("LP_NUM_THREADS", "all"))
+                threads=os.environ.get("LP_NUM_THREADS", "all"), interactive_method=method)
     print(accuracy_plots.table_text(rows, info))
     accuracy_plots.write_all(rows, ref, info, out_dir)
     return [{k: v for k, v in r.items() if k != "image"} for r in rows]
@@ -295,6 +344,8 @@ def child_main(args):
     lut.VectorComponent = s["vector_component"]
     pwf.Points = s["opacity_points"]
     bench.set_mapper(d, args.child_mapper)
+    if args.child_dims:
+        d.SamplingDimensions = [args.child_dims] * 3
     d.ScalarOpacityUnitDistance = s["unit"]
     c = s["camera"]
     view.CameraPosition, view.CameraFocalPoint, view.CameraViewUp = (
@@ -302,7 +353,8 @@ def child_main(args):
     view.CameraViewAngle = c["angle"]
     view.CameraParallelProjection = c["parallel"]
     view.CameraParallelScale = c["scale"]
-    simple.Render(view)
+    # the first frame, apart: 'Resample To Image' resamples the mesh in it
+    print(FIRST_PREFIX + repr(timing.frame(view)[0]), flush=True)
     np.save(args.child_out, testing.grab(view))
     timing.serve_rounds(view, d)
     testing.exit_now(0)
@@ -333,9 +385,13 @@ def main():
     p.add_argument("--frames", type=int, default=3)
     p.add_argument("--wavelet-half", type=int, default=20)
     p.add_argument("--unit-distance", type=float)
-    p.add_argument("--no-paraview", action="store_true", help="skip ParaView's own mappers")
+    p.add_argument("--no-paraview", action="store_true",
+                   help="skip ParaView's own mappers ('Resample To Image' too)")
     p.add_argument("--paraview-mappers", nargs="*", default=PARAVIEW_MAPPERS,
                    help="which of ParaView's mappers (default: %s)" % ", ".join(PARAVIEW_MAPPERS))
+    p.add_argument("--resample-dims", type=int, nargs="*", default=RESAMPLE_DIMS,
+                   help="'Resample To Image' rows at these sampling dimensions, cubed (default: "
+                        "%s; none: no such row)" % " ".join(map(str, RESAMPLE_DIMS)))
     p.add_argument("--paraview-timeout", type=float, default=120,
                    help="seconds each ParaView mapper may take (Z sweep is slow on big meshes)")
     p.add_argument("--budget", type=float, default=300,
@@ -344,6 +400,7 @@ def main():
     p.add_argument("--child-mapper", help=argparse.SUPPRESS)
     p.add_argument("--child-scene", help=argparse.SUPPRESS)
     p.add_argument("--child-out", help=argparse.SUPPRESS)
+    p.add_argument("--child-dims", type=int, help=argparse.SUPPRESS)
     args = p.parse_args()
     if args.child_mapper:
         child_main(args)
@@ -351,7 +408,7 @@ def main():
     view, rep, src, title = command_scene(args)
     report(view, rep, src, args.out, args.frames,
            [] if args.no_paraview else args.paraview_mappers, title, args.paraview_timeout,
-           args.budget)
+           args.budget, [] if args.no_paraview else args.resample_dims)
     testing.exit_now(0)
 
 

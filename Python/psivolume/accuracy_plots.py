@@ -22,12 +22,16 @@ try:
 except ImportError:  # pragma: no cover - depends on the ParaView build
     HAVE_MATPLOTLIB = False
 
-HEADER = ("method", "s/frame", "min-max", "CPU s/frame", "time / Average", "mean err", "max err",
-          "mean err x s")
+HEADER = ("method", "s/frame", "min-max", "CPU s/frame", "once s", "time / Average", "mean err",
+          "max err", "mean err x s")
 EXPLAIN = ("Times are medians over interleaved rounds (every method and mapper once per round, "
            "the order rotating), with their minimum and maximum over the rounds; CPU s/frame is "
            "the CPU time of the drawing process (all its threads) per frame; 'time / Average' is "
            "the ratio to Average taken round by round, its median and interquartile spread. "
+           "'once s' is a one-time cost outside the frame times: the first frame of 'Resample To "
+           "Image' (the resampling of the mesh to its sampling dimensions), the build of the "
+           "level of detail for the interactive image of 'Psi Volume' (InteractionMode 'Volume "
+           "LOD', timed with interactive renders). "
            "Errors are absolute differences of 8-bit RGB channels (0..255) against the exact "
            "reference at the same view, mean over all pixels and channels, and the worst one. "
            "'mean err x s' is the mean error times the frame time: lower is better on both "
@@ -47,7 +51,8 @@ def _ratio(r):
 def table_rows(rows):
     return [(r["name"], _fmt(r["spf"], "%.3f"),
              "-" if r.get("spf_min") is None else "%.3f-%.3f" % (r["spf_min"], r["spf_max"]),
-             _fmt(r.get("cpu"), "%.3f"), _ratio(r), _fmt(r["mean"], "%.3f"),
+             _fmt(r.get("cpu"), "%.3f"), _fmt(r.get("once"), "%.3f"), _ratio(r),
+             _fmt(r["mean"], "%.3f"),
              _fmt(r["max"], "%.0f"), _fmt(r["err_s"], "%.3f"), r["note"]) for r in rows]
 
 
@@ -56,9 +61,9 @@ def table_text(rows, info):
         info["title"], info["cells"], info["size"][0], info["size"][1], info["frames"])]
     if info.get("timing"):
         lines.append(info["timing"])
-    lines.append("%-44s %8s %13s %11s %15s %9s %7s %12s" % HEADER)
+    lines.append("%-44s %8s %13s %11s %8s %15s %9s %7s %12s" % HEADER)
     for row in table_rows(rows):
-        lines.append("%-44s %8s %13s %11s %15s %9s %7s %12s %s" % row)
+        lines.append("%-44s %8s %13s %11s %8s %15s %9s %7s %12s %s" % row)
     return "\n".join(lines)
 
 
@@ -112,8 +117,12 @@ def _spread(targets, gap):
 
 
 def _style(name):
+    if name.startswith("ParaView Resample"):
+        return dict(marker="D", color="dimgray")
     if name.startswith("ParaView"):
         return dict(marker="s", color="black")
+    if name.endswith("(interactive)"):
+        return dict(marker="P", color="darkorange", s=70)
     if name.startswith("Exact"):
         return dict(marker="*", color="crimson", s=120)
     base = name.replace(" + adaptive", "")

@@ -40,12 +40,16 @@ def wait(view):
     view.GetRenderWindow().WaitForCompletion()
 
 
-def frame(view):
-    """(wall, cpu) seconds of one frame of `view`: its Render and the GL work it started."""
+def frame(view, interactive=False):
+    """(wall, cpu) seconds of one frame of `view`: its Render (InteractiveRender with
+    `interactive`, the frame drawn while the camera moves) and the GL work it started."""
     from paraview import simple
 
     wall0, cpu0 = time.perf_counter(), time.process_time()
-    simple.Render(view)
+    if interactive:
+        view.InteractiveRender()
+    else:
+        simple.Render(view)
     wait(view)
     return time.perf_counter() - wall0, time.process_time() - cpu0
 
@@ -57,19 +61,20 @@ def frame_time(seconds):
     return float(np.median(seconds))
 
 
-def time_frames(view, frames, warmup=1, jitter=0.5, orbit=False):
+def time_frames(view, frames, warmup=1, jitter=0.5, orbit=False, interactive=False):
     """(wall, cpu) seconds per frame of `view`: `warmup` frames untimed, then the frame_time of
-    `frames` timed ones. The camera turns by +-`jitter` degrees between frames, or with `orbit`
-    by 360/`frames` degrees before each (an orbit), and is put back."""
+    `frames` timed ones (interactive frames with `interactive`). The camera turns by +-`jitter`
+    degrees between frames, or with `orbit` by 360/`frames` degrees before each (an orbit), and
+    is put back."""
     cam = view.GetActiveCamera()
     saved = (list(view.CameraPosition), list(view.CameraFocalPoint), list(view.CameraViewUp))
     for _ in range(warmup):
-        frame(view)
+        frame(view, interactive)
     frames = max(frames, 1)
     walls, cpus = [], []
     for k in range(frames):
         cam.Azimuth(360.0 / frames if orbit else (jitter if k % 2 == 0 else -jitter))
-        wall, cpu = frame(view)
+        wall, cpu = frame(view, interactive)
         walls.append(wall)
         cpus.append(cpu)
     view.CameraPosition, view.CameraFocalPoint, view.CameraViewUp = saved
@@ -79,15 +84,16 @@ def time_frames(view, frames, warmup=1, jitter=0.5, orbit=False):
 class InProcess:
     """A contender drawn in this process: `prepare()` puts the view in its state (a
     representation, a method), then its frames are timed (time_frames; over an orbit with
-    `orbit`)."""
+    `orbit`; interactive frames with `interactive`)."""
 
-    def __init__(self, name, view, prepare=None, orbit=False):
+    def __init__(self, name, view, prepare=None, orbit=False, interactive=False):
         self.name, self.view, self.prepare, self.orbit, self.note = name, view, prepare, orbit, ""
+        self.interactive = interactive
 
     def measure(self, frames, warmup, jitter):
         if self.prepare:
             self.prepare()
-        return time_frames(self.view, frames, warmup, jitter, self.orbit)
+        return time_frames(self.view, frames, warmup, jitter, self.orbit, self.interactive)
 
     def close(self):
         pass
