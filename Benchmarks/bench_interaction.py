@@ -85,10 +85,16 @@ def plot(rows, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(6, 4))
-    tets = [r["tets"] for _, r in rows]
+    wavelet = [r for name, r in rows if name.startswith("Wavelet")]
+    others = [(name, r) for name, r in rows if not name.startswith("Wavelet")]
     for key, label in (("still", "still frame"), ("drag", "interactive frame"),
                        ("outline", "'Outline' frame"), ("rti", "'Resample To Image' frame")):
-        ax.loglog(tets, [r[key] for _, r in rows], "o-", label=label)
+        line = ax.loglog([r["tets"] for r in wavelet], [r[key] for r in wavelet], "o-",
+                         label=label + " (Wavelet)")
+        for name, r in others:  # other meshes as points of the same color
+            ax.loglog([r["tets"]], [r[key]], "s", color=line[0].get_color())
+    if others:
+        ax.set_title("squares: " + ", ".join(name for name, _ in others))
     ax.set_xlabel("tetrahedra")
     ax.set_ylabel("seconds per frame")
     ax.legend()

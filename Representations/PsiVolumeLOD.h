@@ -33,7 +33,7 @@ public:
   PsiVolumeLOD();
   ~PsiVolumeLOD();
 
-  /// Samples along the longest side of the piece's bounds (the others in proportion).
+  /// Samples along each side of the lattice's box (64^3: ParaView's smallest 'Resample To Image').
   static constexpr int DefaultResolution = 64;
 
   /// The array the level of detail draws: a point or cell array of the piece (cell arrays become

@@ -17,10 +17,9 @@ psi_add_python_test(isosurfaces
   ENVIRONMENT "PSI_TEST_OUTPUT=${CMAKE_BINARY_DIR}/Testing/Images")
 
 # The accuracy report (psivolume.accuracy) on a small scene: outputs, one row per method,
-# finite errors, the reference against itself. Its 'Resample To Image' 256^3 row resamples 16.7M
-# points at its start, most of the test's time: 4 minutes on 2 cores at load average 10, 14 at
-# load 15; the timeout allows for a loaded machine (it starts child pvpythons).
-psi_add_python_test(accuracy_report TIMEOUT 1800
+# finite errors, the reference against itself, the 'Resample To Image' and interactive rows (at
+# small resampling sizes); the timeout allows for a loaded machine (it starts child pvpythons).
+psi_add_python_test(accuracy_report TIMEOUT 600
   ENVIRONMENT "PSI_REFERENCE_RENDER=$<TARGET_FILE:psi_reference_render>")
 
 # Constant fields and scalar ranges that float cannot hold (denormal widths, far from 0):

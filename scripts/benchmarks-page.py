@@ -18,6 +18,7 @@ DOCS = ROOT / "docs" / "benchmarks"
 # The sections in page order: benchmark (as records name it) and the section's title.
 SECTIONS = [
     ("Benchmarks/bench_scale.py", "against 'Projected tetra' as the mesh grows"),
+    ("Benchmarks/bench_interaction.py", "while the camera moves: the level of detail"),
     ("Benchmarks/bench_moreland_table.py", "Moreland's Table 6.4 side by side"),
     ("scripts/accuracy-report.sh", "accuracy against time, every method and ParaView's mappers"),
     ("Benchmarks/bench_integration.py", "what accuracy costs in time, per method"),
