@@ -186,6 +186,8 @@ for name, function in (("empty", None), ("one", None), ("nan", "nan")):
         arr = "holes"
     simple.Hide(src, view)
     r = data.show_volume(shown, arr, view, unit_distance=2.0)
+    if name == "one":  # opaque at every value: lattice points outside the cell would show
+        simple.GetOpacityTransferFunction(arr).Points = [0.0, 0.5, 0.5, 0.0, 3.0, 0.5, 0.5, 0.0]
     r.InteractionMode = "Volume LOD"
     full_one = still()
     img, used = interactive(r)
