@@ -69,6 +69,12 @@ const SettingInfo& GetSettingInfo(Setting id)
   return SettingTable()[static_cast<size_t>(id)];
 }
 
+double ValueOf(const Settings& s, Setting id)
+{
+  const SettingInfo& info = GetSettingInfo(id);
+  return info.Int ? s.*info.Int : s.*info.Double;
+}
+
 std::string SetClamped(Settings& s, Setting id, double value)
 {
   const SettingInfo& info = GetSettingInfo(id);
@@ -88,7 +94,7 @@ std::string SetClamped(Settings& s, Setting id, double value)
   }
   return std::string("'Psi Volume' ") + info.Name + " = " + Number(value) +
     (info.Int ? " is not one of its values (" : " is outside its range (") + Number(info.Min) +
-    " to " + Number(info.Max) + "): " + Number(info.Int ? s.*info.Int : used) + " is used.";
+    " to " + Number(info.Max) + "): " + Number(ValueOf(s, id)) + " is used.";
 }
 
 const std::vector<BoolSettingInfo>& BoolSettingTable()

@@ -186,6 +186,8 @@ struct SettingInfo
 /// The table of ranged settings, one row per Setting, in its order.
 PSIVOLUMECORE_EXPORT const std::vector<SettingInfo>& SettingTable();
 PSIVOLUMECORE_EXPORT const SettingInfo& GetSettingInfo(Setting id);
+/// The value of ranged setting `id` in `s` (an integer setting's as a double).
+PSIVOLUMECORE_EXPORT double ValueOf(const Settings& s, Setting id);
 
 /// Sets `id` in `s` to `value`, clamped to its range. Returns the warning for a value out of
 /// range ("" otherwise), which names the setting, the value, the range and the value used.

@@ -81,9 +81,9 @@ void BlankNonFinite(vtkImageData* image, const PsiVolumeLOD::Arrays& arrays)
   }
 }
 
-// The lattice: `resolution` samples along the longest side of `bounds`, the others in
-// proportion, at least 2 each, spanning the bounds. In parallel every process computes it from the
-// same global bounds, so that the processes' samples are points of one lattice.
+// The lattice: `resolution` samples (at least 2) along each side of `bounds`, spanning them. In
+// parallel every process computes it from the same global bounds, so that the processes' samples
+// are points of one lattice.
 struct Lattice
 {
   int Dims[3];

@@ -65,7 +65,7 @@ void vtkPsiVolumeMapper::SetSettings(const psi::Settings& settings)
 {
   for (const psi::SettingInfo& info : psi::SettingTable())
   {
-    this->SetRanged(info.Id, info.Int ? settings.*info.Int : settings.*info.Double);
+    this->SetRanged(info.Id, psi::ValueOf(settings, info.Id));
   }
   for (const psi::BoolSettingInfo& info : psi::BoolSettingTable())
   {
@@ -80,17 +80,14 @@ void vtkPsiVolumeMapper::SetSettings(const psi::Settings& settings)
 // The one clamp of a ranged setting, with its one warning (psi::SetClamped).
 void vtkPsiVolumeMapper::SetRanged(psi::Setting id, double value)
 {
-  psi::Settings s = this->Settings;
-  const std::string warning = psi::SetClamped(s, id, value);
+  const double before = psi::ValueOf(this->Settings, id);
+  const std::string warning = psi::SetClamped(this->Settings, id, value);
   if (!warning.empty())
   {
     vtkWarningMacro(<< warning);
   }
-  const psi::SettingInfo& info = psi::GetSettingInfo(id);
-  if (info.Int ? s.*info.Int != this->Settings.*info.Int
-               : s.*info.Double != this->Settings.*info.Double)
+  if (psi::ValueOf(this->Settings, id) != before)
   {
-    this->Settings = std::move(s);
     if (id == psi::Setting::IsosurfaceOpacity)
     {
       this->UpdateIsosurfaceList();
@@ -244,9 +241,7 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
       }
       if (compute)
       {
-        const long long maxBlock =
-          PsiDriverLimits::Query().LoweredTo(I.TestingLimits).MaxStorageBlockBytes;
-        I.Compute.Draw(renWin, I.Order, pixels, maxBlock, drawError);
+        I.Compute.Draw(renWin, I.Order, pixels, I.Limits().MaxStorageBlockBytes, drawError);
       }
       else
       {
@@ -301,9 +296,8 @@ bool vtkPsiVolumeMapper::UpdateMesh(
   }
   vtkVLogScopeF(PARAVIEW_LOG_RENDERING_VERBOSITY(), "Psi Volume: mesh");
   std::string error;
-  const long long maxTexels =
-    PsiDriverLimits::Query().LoweredTo(I.TestingLimits).MaxTextureBufferTexels;
-  if (!I.Mesh.Update(renWin, input, scalars, cellFlag == 1, component, arrayKey, maxTexels, error))
+  if (!I.Mesh.Update(renWin, input, scalars, cellFlag == 1, component, arrayKey,
+        I.Limits().MaxTextureBufferTexels, error))
   {
     vtkErrorMacro("Psi Volume: " << error);
   }
@@ -405,8 +399,7 @@ void vtkPsiVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   for (const psi::SettingInfo& info : psi::SettingTable())
   {
-    os << indent << info.Name << ": "
-       << (info.Int ? this->Settings.*info.Int : this->Settings.*info.Double) << "\n";
+    os << indent << info.Name << ": " << psi::ValueOf(this->Settings, info.Id) << "\n";
   }
   for (const psi::BoolSettingInfo& info : psi::BoolSettingTable())
   {

@@ -31,6 +31,8 @@ struct vtkPsiVolumeMapper::Internals
   PsiAdaptiveNodes AdaptiveNodes;
 
   PsiDriverLimits TestingLimits; // lowered limits for tests (SetDriverLimitsForTesting)
+  /// The current context's buffer limits, lowered for tests.
+  PsiDriverLimits Limits() const { return PsiDriverLimits::Query().LoweredTo(this->TestingLimits); }
   std::string LastWarning;
   std::string LastDrawError; // said once per new text
   std::string LastFeatureNote; // what a separate opacity array changed, said once

@@ -24,6 +24,7 @@
 class vtkPsiConformingTetrahedralize;
 class vtkPsiVolumeMapper;
 class PsiVolumeLOD;
+class vtkPVRenderView;
 
 class PSIVOLUMEREPRESENTATIONS_EXPORT vtkPsiVolumeRepresentation
   : public vtkUnstructuredGridVolumeRepresentation
@@ -136,7 +137,7 @@ protected:
   /// it is stale (vtkPsiVolumeRepresentationInteraction.cxx).
   void ChooseInteractiveImage(vtkInformation* inInfo);
   int UpdateUnusedSurfaceLOD(vtkInformation* inInfo, vtkInformation* outInfo);
-  bool UpdateVolumeLOD(vtkInformation* inInfo);
+  bool UpdateVolumeLOD(vtkInformation* inInfo, vtkPVRenderView* view);
   void InstallLODMapper(bool volume);
 
   vtkNew<vtkPsiVolumeMapper> PsiMapper;

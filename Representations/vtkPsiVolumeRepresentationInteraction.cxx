@@ -118,7 +118,7 @@ void vtkPsiVolumeRepresentation::ChooseInteractiveImage(vtkInformation* inInfo)
   else
   {
     lod = interactive && psi::UsesVolumeLOD(s, this->PsiMapper->GetLastStillSeconds()) &&
-      this->UpdateVolumeLOD(inInfo);
+      this->UpdateVolumeLOD(inInfo, view);
     this->Actor->SetEnableLOD(lod ? 1 : 0);
   }
   if (interactive)
@@ -150,7 +150,7 @@ void vtkPsiVolumeRepresentation::InstallLODMapper(bool volume)
 // Builds the level of detail from the piece this process draws, when the piece or its array
 // changed, and gives its mapper the array and vector mode the full frame uses. False: nothing
 // to draw (no piece, an empty one, or no array).
-bool vtkPsiVolumeRepresentation::UpdateVolumeLOD(vtkInformation* inInfo)
+bool vtkPsiVolumeRepresentation::UpdateVolumeLOD(vtkInformation* inInfo, vtkPVRenderView* view)
 {
   vtkAlgorithmOutput* port = vtkPVRenderView::GetPieceProducer(inInfo, this);
   vtkDataSet* piece = port && port->GetProducer()
@@ -158,17 +158,12 @@ bool vtkPsiVolumeRepresentation::UpdateVolumeLOD(vtkInformation* inInfo)
     : nullptr;
   PsiVolumeLOD::Arrays arrays;
   arrays.Color = this->PsiMapper->GetArrayName() ? this->PsiMapper->GetArrayName() : "";
-  const PsiVolumeLOD::Region region =
-    LatticeRegion(vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW())));
-  const bool stale = !this->LOD->IsCurrent(piece, arrays, region);
-  if (stale)
+  const PsiVolumeLOD::Region region = LatticeRegion(view);
+  if (!this->LOD->IsCurrent(piece, arrays, region))
   {
     this->SetProgressText("Psi Volume: interactive level of detail");
     this->UpdateProgress(0.0);
-  }
-  this->LOD->Update(piece, arrays, region);
-  if (stale)
-  {
+    this->LOD->Update(piece, arrays, region);
     this->UpdateProgress(1.0);
   }
   // as the superclass gives a vtkSmartVolumeMapper its vector mode (UpdateMapperParameters)
