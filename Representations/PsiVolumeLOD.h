@@ -6,8 +6,8 @@
 // would be ParaView's collective vtkPResampleToImage, and a level of detail chosen by each
 // process's own frame time must not wait for the others). In parallel (ordered compositing) every
 // process probes its piece on one lattice, spanned over the whole mesh's bounds, and draws only its
-// own region of it (ParaView's cut, through the mapper's cropping): its ray samples are then the
-// serial ray's samples inside its cut, and the composited image is the serial one up to the 8-bit
+// own region of it (its piece's box, through the mapper's cropping): its ray samples are then the
+// serial ray's samples inside that box, and the composited image is the serial one up to the 8-bit
 // compositing of the processes' images (docs/decisions.md, "Interaction").
 //
 // Built once per piece, array and resolution, not per camera move nor per transfer-function edit
@@ -46,8 +46,8 @@ public:
   };
 
   /// Where the lattice lies: spanned over `Global` (the whole mesh's bounds), and this process's
-  /// share of it, `Cut` (its ordered-compositing region), when `Parallel`. Serially the lattice
-  /// spans the piece's own bounds and no region is given.
+  /// share of it, `Cut` (the box it draws: its piece's bounds), when `Parallel`. Serially the
+  /// lattice spans the piece's own bounds and no region is given.
   struct Region
   {
     bool Parallel = false;
