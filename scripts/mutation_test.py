@@ -157,9 +157,11 @@ def configure(work, log):
 
 
 def build(work, targets, jobs, log):
+    """Builds `targets` in the scratch build; no target (a test that runs no executable of the
+    build, as `PsiPython.installed` installs the build with cmake --install): the whole build."""
     bld = work / "build"
-    return run(NICE + ["cmake", "--build", str(bld), f"-j{jobs}", "--target"] + sorted(targets),
-               log) == 0
+    chosen = ["--target"] + sorted(targets) if targets else []
+    return run(NICE + ["cmake", "--build", str(bld), f"-j{jobs}"] + chosen, log) == 0
 
 
 def run_test(work, name, timeout, log):
