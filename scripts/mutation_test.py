@@ -4,7 +4,8 @@
 Each mutation of scripts/mutations.py is applied, alone, to a scratch copy of the source tree
 (WORKDIR/src, synchronized file by file so that unchanged files keep their time stamps), which has
 its own build directory (WORKDIR/build): configured and built once, then rebuilt incrementally,
-only the test executables the mutation names. The named tests then run (under xvfb-run, niced,
+only the test executables the mutation names (the whole build for a test that runs none of
+them, as PsiPython.installed installs the build). The named tests then run (under xvfb-run, niced,
 each with a timeout: a hang counts as caught). The mutated file is restored after each mutation.
 
 Prints a table (mutation | caught by | seconds) and the score, and exits 1 when the score is below
