@@ -132,6 +132,7 @@ void PsiVolumeLOD::Request(
   // background work before its thread starts, so that psi::Parallel leaves vtkSMPTools' backend
   // alone from now until the build ends (PsiParallel.h).
   vtkSmartPointer<vtkDataSet> source = psi::LODSource(piece, arrays);
+  source->GetBounds(); // computed and cached here (with the shared points'): the build only reads
   auto mark = std::make_unique<psi::BackgroundWork>();
   this->Job = std::make_unique<Build>();
   this->Job->Inputs = KeyOf(piece, arrays, region, resolution);
