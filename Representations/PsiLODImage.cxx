@@ -140,11 +140,14 @@ void BlankOutside(vtkImageData* image, const char* maskName)
   {
     return;
   }
-  vtkUnsignedCharArray* points = image->AllocatePointGhostArray();
+  // The ghost array only where a point is hidden: with one, the ray caster tests 7 lattice points
+  // of it per sample, which a mesh filling its box (every point valid) need not pay.
+  vtkUnsignedCharArray* points = nullptr;
   for (vtkIdType i = 0; i < mask->GetNumberOfTuples(); ++i)
   {
     if (mask->GetTuple1(i) == 0)
     {
+      points = points ? points : image->AllocatePointGhostArray();
       points->SetValue(i, points->GetValue(i) | vtkDataSetAttributes::HIDDENPOINT);
     }
   }
