@@ -47,6 +47,24 @@ def footprint(img):
     return np.abs(img - np.array(BG) * 255).sum(axis=2) > 2
 
 
+def dilate(mask, px):
+    """`mask` grown by `px` pixels (a square neighbourhood)."""
+    out = mask.copy()
+    for dy in range(-px, px + 1):
+        for dx in range(-px, px + 1):
+            out |= np.roll(np.roll(mask, dy, axis=0), dx, axis=1)
+    return out
+
+
+def footprint_misses(img, ref, px=2):
+    """Pixels of `img`'s footprint farther than `px` pixels from `ref`'s, and pixels of `ref`'s
+    farther than `px` from the edge of `img`'s, as fractions of `ref`'s footprint: the level of
+    detail draws one ray per 1.5 x 1.5 pixels, so its edges may blur by a pixel or two."""
+    a, b = footprint(img), footprint(ref)
+    n = max(b.sum(), 1)
+    return (a & ~dilate(b, px)).sum() / n, (b & ~dilate(a, px)).sum() / n
+
+
 # --- Which image an interactive render draws, by mode and budget.
 full = still()
 d.InteractionMode = "Full frame"
@@ -112,9 +130,9 @@ print("mean error against the full frame: level of detail %.4f, 'Projected tetra
       "'Resample To Image' %.4f" % (lod_err, pt_err, rti_err))
 t.check(lod_err <= bound, "the level of detail within ParaView's cheaper images' error "
         "(%.4f; 'Projected tetra' %.4f, 'Resample To Image' %.4f)" % (lod_err, pt_err, rti_err))
-a, b = footprint(lod), footprint(full)
-iou = (a & b).sum() / max((a | b).sum(), 1)
-t.check(iou > 0.9, "the level of detail covers the volume's footprint (IoU %.3f)" % iou)
+outside, uncovered = footprint_misses(lod, full)
+t.check(outside < 0.01 and uncovered < 0.01, "the level of detail covers the volume's footprint "
+        "up to 2 pixels (%.4f of it outside, %.4f not covered)" % (outside, uncovered))
 
 # --- Still renders and screenshots never show it.
 t.check(testing.mean_error(still(), full) < 1e-6, "a still render after moving is the full frame")
@@ -250,16 +268,18 @@ for name, function in (("empty", None), ("one", None), ("nan", "nan")):
     r = data.show_volume(shown, arr, view, unit_distance=2.0)
     if name == "one":  # opaque at every value: lattice points outside the cell would show
         simple.GetOpacityTransferFunction(arr).Points = [0.0, 0.5, 0.5, 0.0, 3.0, 0.5, 0.5, 0.0]
+        view.ResetCamera()  # the cell filling the view
     r.InteractionMode = "Volume LOD"
     full_one = still()
     img, used = interactive(r)
     t.check(np.isfinite(img).all(), "%s: a finite image" % name)
     if name == "one":
-        a, b = footprint(img), footprint(full_one)
-        iou = (a & b).sum() / max((a | b).sum(), 1)
-        t.check(used == LOD and iou > 0.7,
-                "one tetrahedron: the level of detail is its footprint, transparent outside "
-                "(IoU %.3f)" % iou)
+        outside, uncovered = footprint_misses(img, full_one)
+        t.check(used == LOD and footprint(full_one).sum() > SIZE * SIZE / 20 and
+                outside < 0.01 and uncovered < 0.01,
+                "one tetrahedron: the level of detail is its footprint up to 2 pixels, "
+                "transparent outside (%.4f of it drawn outside, %.4f not covered; %d pixels)"
+                % (outside, uncovered, footprint(full_one).sum()))
     if name == "nan":
         t.check(used == LOD, "NaN scalars: the level of detail is drawn")
     simple.Hide(shown, view)
