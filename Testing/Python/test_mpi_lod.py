@@ -18,10 +18,10 @@ point before a cut and the cut a rank interpolates towards a value it may not ho
 neighbour's cells), then the nearest one inside its cut; and at the silhouette, a ray that
 grazes the lattice's box takes one sample more or fewer where the parallel box (spanned over the
 union of the cuts) differs from the serial one by a rounding, one sample per lattice spacing
-being up to about 14/255 there. Measured: mean |diff| 0.063/255, max 10/255 (the pixels above
-4/255 all on the box's silhouette edges), for both data distributions; through pvserver
-(test_pvserver.py) mean 0.098/255, max 14/255. Before the common lattice (each rank on its own lattice
-over its piece's bounds): mean BASELINE, the seam visible.
+being up to about 14/255 there. Measured: mean |diff| 0.071/255, max 7/255 (the pixels above
+4/255 on the box's silhouette edges), for both data distributions; through pvserver
+(test_pvserver.py) mean 0.11/255, max 10-14/255. Before the common lattice (each rank on its own
+lattice over its piece's bounds): mean BASELINE, the seam visible.
 
 Tolerance: mean |diff| <= MEAN_TOL and no pixel differing by more than MAX_TOL."""
 import os
