@@ -1,10 +1,13 @@
 /**
  * What the plugin does for ParaView's Python when it is loaded (an INITIALIZERS function of
- * paraview_add_plugin, Plugin/CMakeLists.txt): from a build tree, it puts the checkout's Python/
- * folder on sys.path, so that `import psivolume` works after LoadPlugin in pvpython, pvbatch
- * and the GUI's Python shell as it does with an installed plugin (whose package is installed
- * beside ParaView's own Python modules, cmake/PsiVolumeInstall.cmake). The installed plugin adds
- * nothing: it is not at the build tree's plugin path.
+ * paraview_add_plugin, Plugin/CMakeLists.txt): it puts the folder holding the package psivolume
+ * on sys.path, so that `import psivolume` works after LoadPlugin in pvpython, pvbatch and the
+ * GUI's Python shell with no PYTHONPATH:
+ *  - loaded from the build tree (the plugin is where the build put it): the checkout's Python/;
+ *  - installed: the package's install folder, found relative to the plugin's own (both
+ *    relative to the prefix, PSI_PYTHON_DESTINATION and PSI_PLUGINS_DIR), when it holds the
+ *    package. By default that is ParaView's own Python folder, already on sys.path: nothing
+ *    changes then (a folder already on sys.path is not added again).
  */
 #ifndef PsiPluginPython_h
 #define PsiPluginPython_h

@@ -68,6 +68,17 @@ endif ()
 # renders or screenshots, close to the full frame; rebuilt for new arrays and data; hard inputs.
 psi_add_python_test(interaction TIMEOUT 300)
 
+# The accuracy report as the GUI runs it (psivolume.gui), after `import psivolume` by the
+# package's name once the plugin is loaded: no PYTHONPATH, nor any PSI_* override (the report
+# finds the plugin ParaView loaded, and its reference renderer beside the build's).
+add_test(NAME PsiPython.gui_report
+  COMMAND "${PVPYTHON_EXECUTABLE}" --force-offscreen-rendering
+          "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_gui_report.py"
+          --plugin "$<TARGET_FILE:PsiVolume>" --package-dir "${PROJECT_SOURCE_DIR}/Python")
+set_tests_properties(PsiPython.gui_report PROPERTIES
+  ENVIRONMENT "PYTHONPATH=;PSI_PLUGIN=;PSI_REFERENCE_RENDER=;PSI_BUILD_DIR="
+  TIMEOUT 120)
+
 # The install tree: `cmake --install` into a temporary prefix, then pvpython loads the plugin from
 # it by path, draws the embedded default with 'Psi Volume' and imports psivolume from it, with the
 # checkout's Python/ off its path (Testing/Install/run_installed.py).
