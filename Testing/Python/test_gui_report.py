@@ -4,11 +4,11 @@ runs it (psivolume.gui.run_report) on a small mesh: under ParaView's progress, i
 layout as a table (a spreadsheet view) whose 'method' column names them in the report's order,
 and as error against time (a point chart, one series per row, named as the report's plot).
 
-    pvpython test_gui_report.py --plugin PLUGIN --package-dir DIR [--import-only]
+    pvpython test_gui_report.py [--plugin PLUGIN] --package-dir DIR [--import-only]
 
-DIR is the folder psivolume must come from: the checkout's Python/ for the build tree
-(PsiPython.gui_report), the install's for an install (Testing/Install/run_installed.py, with
---import-only)."""
+PLUGIN (default: $PSI_TEST_PLUGIN) is loaded by path; DIR is the folder psivolume must come
+from: the checkout's Python/ for the build tree (PsiPython.gui_report), the install's for an
+install (Testing/Install/run_installed.py, with --import-only)."""
 import argparse
 import builtins
 import importlib.util
@@ -19,7 +19,7 @@ import sys
 from paraview import servermanager, simple
 
 ap = argparse.ArgumentParser()
-ap.add_argument("--plugin", required=True)
+ap.add_argument("--plugin", default=os.environ.get("PSI_TEST_PLUGIN"))
 ap.add_argument("--package-dir", required=True)
 ap.add_argument("--import-only", action="store_true")
 args = ap.parse_args()
