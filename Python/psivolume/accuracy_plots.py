@@ -127,9 +127,10 @@ NAMED_COLORS = dict(black=(0.0, 0.0, 0.0), dimgray=(0.412, 0.412, 0.412),
 
 def point_style(name):
     """How a row's point is drawn (here and in the GUI's chart, psivolume.gui): (marker, RGB,
-    area in square points, matplotlib's scatter size). ParaView's mappers in black and gray squares and diamonds, the
-    interactive image an orange cross, the reference a red star, each method of 'Psi Volume' a
-    color of its own, a circle without adaptive sampling and a triangle with it."""
+    area in square points, matplotlib's scatter size). ParaView's mappers in black and gray
+    squares and diamonds, the interactive image an orange cross, the reference a red star, each
+    method of 'Psi Volume' a color of its own, a circle without adaptive sampling and a triangle
+    with it."""
     if name.startswith("ParaView Resample"):
         return "diamond", NAMED_COLORS["dimgray"], 36
     if name.startswith("ParaView"):

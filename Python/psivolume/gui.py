@@ -2,7 +2,7 @@
 under ParaView's progress, its rows shown in a layout of their own, as a table (a spreadsheet
 view) and as error against time (a point chart, one series per row, named as in the report).
 
-The plugin's toolbar button 'Accuracy report' and Tools > Accuracy Report call run_report().
+The plugin's toolbar button 'Accuracy report' and Tools > Accuracy report call run_report().
 From pvpython or the GUI's Python shell, once the plugin is loaded:
 
     import psivolume.gui
@@ -67,7 +67,8 @@ def check_scene(view, src):
         raise RuntimeError("%s: make a render view active (the report renders its volume)" % TITLE)
     if src is None:
         raise RuntimeError("%s: select the source whose volume to measure" % TITLE)
-    if servermanager.GetRepresentation(src, view) is None:
+    rep = servermanager.GetRepresentation(src, view)
+    if rep is None or not rep.Visibility:
         raise RuntimeError("%s: show %s in the active view first" % (TITLE, source_name(src)))
 
 
@@ -158,7 +159,8 @@ def show_chart(points, chart, series, title):
     d.SeriesVisibility = series
     styles = {name: accuracy_plots.point_style(name.replace(" (error 0)", "")) for name in series}
     d.SeriesMarkerStyle = [v for n in series for v in (n, str(VTK_MARKERS[styles[n][0]]))]
-    d.SeriesMarkerSize = [v for n in series for v in (n, str(int(round(1.4 * styles[n][2] ** 0.5))))]
+    d.SeriesMarkerSize = [v for n in series
+                          for v in (n, str(int(round(1.4 * styles[n][2] ** 0.5))))]
     d.SeriesColor = [v for n in series for v in (n,) + tuple("%.3f" % c for c in styles[n][1])]
     chart.ChartTitle = title
     chart.BottomAxisTitle = "seconds per frame"

@@ -92,7 +92,8 @@ column = table.GetColumnByName(gui.NAME)
 names = [column.GetValue(i) for i in range(column.GetNumberOfValues())]
 check(names == expected, "the table's 'method' column names the rows in order")
 errors = table.GetColumnByName(gui.Y)
-check(errors is not None and builtins.all(math.isfinite(errors.GetValue(i)) for i in range(len(names))),
+check(errors is not None and
+      builtins.all(math.isfinite(errors.GetValue(i)) for i in range(len(names))),
       "the table's mean errors are numbers")
 layout = simple.GetLayoutByName(name)
 check(layout is not None and layout.GetViewLocation(sheet) != -1

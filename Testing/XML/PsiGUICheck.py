@@ -114,10 +114,10 @@ def check_interaction(expected):
 
 def check_report(source):
     """Whether the accuracy report (the plugin's 'Accuracy report' action) on the source named
-    `source` showed its rows: a layout 'Accuracy report: <source>' holding a spreadsheet view of the table whose 'method'
-    column names every method of 'Psi Volume' (adaptive sampling off and on), the interactive
-    image and the exact reference, in the report's order, and a point chart with a series per
-    row. Prints "PsiGUICheck passed:" or "PsiGUICheck FAILED", as check does."""
+    `source` showed its rows: a layout 'Accuracy report: <source>' holding a spreadsheet view of
+    the table whose 'method' column names every method of 'Psi Volume' (adaptive sampling off
+    and on), the interactive image and the exact reference, in the report's order, and a point
+    chart with a series per row. Prints "PsiGUICheck passed:" or "PsiGUICheck FAILED", as check does."""
     try:
         from paraview import servermanager, simple
 
@@ -143,7 +143,8 @@ def check_report(source):
             simple.FindSource(name + " (error against time)"), chart[0]).SeriesVisibility)
         if len(series) != len(expected):
             raise RuntimeError("the chart shows the series %s" % series)
-        _say(sys.__stdout__, "PsiGUICheck passed: the report's table names its %d rows" % len(names))
+        _say(sys.__stdout__,
+             "PsiGUICheck passed: the report's table names its %d rows" % len(names))
         return True
     except Exception as e:  # noqa: BLE001 - any error is a failed check, said as such
         _say(sys.__stderr__, "PsiGUICheck FAILED: accuracy report: %r" % (e,))
