@@ -1,7 +1,7 @@
 """`import psivolume` after LoadPlugin, with no PYTHONPATH (the plugin puts the package's folder on
 sys.path, Plugin/PsiPluginPython.h), then the accuracy report as the GUI's 'Accuracy report'
 runs it (psivolume.gui.run_report) on a small mesh: under ParaView's progress, its rows in a new
-layout as a table (a spreadsheet view) whose 'method' column names them in the report's order,
+layout as a table (a spreadsheet view) whose first column names them in the report's order,
 and as error against time (a point chart, one series per row, named as the report's plot).
 
     pvpython test_gui_report.py [--plugin PLUGIN] --package-dir DIR [--import-only]
@@ -90,8 +90,15 @@ name = gui.TITLE + ": Tetrahedralize1"
 table = servermanager.Fetch(simple.FindSource(name))
 column = table.GetColumnByName(gui.NAME)
 names = [column.GetValue(i) for i in range(column.GetNumberOfValues())]
-check(names == expected, "the table's 'method' column names the rows in order")
-errors = table.GetColumnByName(gui.Y)
+check(names == expected, "the table's first column names the rows in order")
+shown_sheet = sheet.GetClientSideObject()  # its columns after 'Row ID' (vtkOriginalIndices)
+sheet_columns = [c for c in (shown_sheet.GetColumnName(i)
+                             for i in range(shown_sheet.GetNumberOfColumns()))
+                 if shown_sheet.GetColumnVisibility(shown_sheet.GetColumnByName(c))
+                 and c != "vtkOriginalIndices"]
+check(sheet_columns[:3] == [gui.NAME, "2 s/frame", "3 CPU s/frame"],
+      "the spreadsheet shows the report's columns in its order: %s" % sheet_columns)
+errors = table.GetColumnByName("6 mean err")
 check(errors is not None and
       builtins.all(math.isfinite(errors.GetValue(i)) for i in range(len(names))),
       "the table's mean errors are numbers")

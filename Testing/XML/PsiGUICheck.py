@@ -115,7 +115,7 @@ def check_interaction(expected):
 def check_report(source):
     """Whether the accuracy report (the plugin's 'Accuracy report' action) on the source named
     `source` showed its rows: a layout 'Accuracy report: <source>' holding a spreadsheet view of
-    the table whose 'method' column names every method of 'Psi Volume' (adaptive sampling off
+    the table whose first column ('1 method') names every method of 'Psi Volume' (adaptive sampling off
     and on), the interactive image and the exact reference, in the report's order, and a point
     chart with a series per row. Prints "PsiGUICheck passed:" or "PsiGUICheck FAILED", as check does."""
     try:
@@ -131,7 +131,7 @@ def check_report(source):
         table = simple.FindSource(name)
         if layout is None or table is None:
             raise RuntimeError("no layout or table '%s'" % name)
-        column = servermanager.Fetch(table).GetColumnByName("method")
+        column = servermanager.Fetch(table).GetColumnByName("1 method")
         names = [column.GetValue(i) for i in range(column.GetNumberOfValues())]
         if names != expected or len(expected) != 16:
             raise RuntimeError("the table's rows are %s, not %s" % (names, expected))
