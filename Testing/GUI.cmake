@@ -123,3 +123,7 @@ foreach (name IN LISTS psi_gui_tests)
     FAIL_REGULAR_EXPRESSION "Couldn't find object|Failed to parse|The following event FAILED|PsiGUICheck FAILED|Unhandled error"
     RESOURCE_LOCK PsiGUI)
 endforeach ()
+# The accuracy report finds its reference renderer beside the plugin loaded; named here, it is a
+# target of the test (scripts/mutation_test.py builds the targets a test's environment names).
+set_tests_properties(PsiGUI.PsiVolumeGUIAccuracyReport PROPERTIES
+  ENVIRONMENT "${PSI_PYTHONPATH};PSI_TEST_REFERENCE=$<TARGET_FILE:psi_reference_render>")

@@ -75,9 +75,10 @@ add_test(NAME PsiPython.gui_report
   COMMAND "${PVPYTHON_EXECUTABLE}" --force-offscreen-rendering
           "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_gui_report.py"
           --package-dir "${PROJECT_SOURCE_DIR}/Python")
-# (the plugin to load in a variable of its own, which the report does not read)
+# (the plugin to load, and the reference renderer the report must find, in variables of their
+# own, which the report does not read)
 set_tests_properties(PsiPython.gui_report PROPERTIES
-  ENVIRONMENT "PSI_TEST_PLUGIN=$<TARGET_FILE:PsiVolume>;PYTHONPATH=;PSI_PLUGIN=;PSI_REFERENCE_RENDER=;PSI_BUILD_DIR="
+  ENVIRONMENT "PSI_TEST_PLUGIN=$<TARGET_FILE:PsiVolume>;PSI_TEST_REFERENCE=$<TARGET_FILE:psi_reference_render>;PYTHONPATH=;PSI_PLUGIN=;PSI_REFERENCE_RENDER=;PSI_BUILD_DIR="
   TIMEOUT 120)
 
 # The install tree: `cmake --install` into a temporary prefix, then pvpython loads the plugin from

@@ -80,6 +80,11 @@ reported = [s for s in steps if s and s.startswith(gui.TITLE + ": ")]
 check(len(set(reported)) >= 3 and reported[0].endswith("the mesh and the scene"),
       "ParaView's progress told the report's steps: %s" % reported)
 # the outline or the axes in the images would differ from the reference by ~200 at their pixels
+if os.environ.get("PSI_TEST_REFERENCE"):
+    check(os.path.realpath(accuracy.find_reference_renderer()) ==
+          os.path.realpath(os.environ["PSI_TEST_REFERENCE"]),
+          "the report found the reference renderer of the plugin loaded: %s"
+          % accuracy.find_reference_renderer())
 average = rows[0]
 check(average["max"] < 100, "Average's largest error %.0f: the outline and the axes hidden "
       "meanwhile" % average["max"])
