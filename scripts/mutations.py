@@ -464,6 +464,15 @@ MUTATIONS = [
              "if (n[1] > 0 && x >= 0 && x <= table.Size - 1)",
              "if (n[1] > 1 && x >= 0 && x <= table.Size - 1)",
              ["PsiCore.TransferFunctionNodes"]),
+    # --- The accuracy report from the GUI (Python/psivolume/gui.py, Plugin/PsiPluginPython.cxx).
+    Mutation("plugin_leaves_sys_path_alone", "Plugin/PsiPluginPython.cxx",
+             "  if (!folder.empty())\n", "  if (folder.empty())\n", ["PsiPython.gui_report"]),
+    Mutation("report_draws_beside_other_sources", "Python/psivolume/gui.py",
+             "        r.Visibility = 0\n", "        pass\n", ["PsiPython.gui_report"]),
+    Mutation("report_table_loses_its_first_row", "Python/psivolume/gui.py",
+             '[[NAME, "string", [r["name"] for r in rows]]]',
+             '[[NAME, "string", [r["name"] for r in rows[1:]]]]',
+             ["PsiPython.gui_report", "PsiGUI.PsiVolumeGUIAccuracyReport"]),
     # --- The install tree (cmake/PsiVolumeInstall.cmake, docs/install.md).
     Mutation("installed_package_misses_its_plugin", "Python/psivolume/data.py",
              "        from . import installed_paths\n", "        from . import installed_path\n",
