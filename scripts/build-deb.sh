@@ -28,7 +28,8 @@ fi
 # Inside a system of in-system.sh, beside its build of the checkout (kept between runs).
 build=${PSI_DEB_BUILD_DIR:-${PSI_BUILD_DIR:-$root/build}-deb}
 out=${PSI_DEB_OUT:-$root/dist}
-maintainer=${PSI_DEB_MAINTAINER:-"PsiVolume maintainers <psivolume@localhost>"}
+# The maintainer as Debian's own tools take it (dch, debmake): DEBFULLNAME and DEBEMAIL.
+maintainer=${PSI_DEB_MAINTAINER:-"${DEBFULLNAME:-PsiVolume maintainers} <${DEBEMAIL:-psivolume@localhost}>"}
 
 bash "$root/scripts/setup-deps.sh" >&2
 pv_version=$(dpkg-query -W -f='${Version}' paraview)
@@ -67,6 +68,9 @@ if [ -n "$shared_plugins" ]; then
     "$stage$shared_plugins/PsiVolume"
 fi
 
+source "$root/scripts/lib/deb-docs.sh"
+psi_deb_docs "$stage" "$version" "$maintainer" "$pv_version"
+
 # Shared-library dependencies by dpkg-shlibdeps (it reads debian/control). ParaView's libraries
 # carry no shlibs information before 5.13 and a range from then on: the exact paraview
 # dependency below covers them, so its range is dropped.
@@ -87,12 +91,12 @@ Maintainer: $maintainer
 Section: science
 Priority: optional
 Installed-Size: $(du -sk --exclude=DEBIAN "$stage" | cut -f1)
-Depends: paraview (= $pv_version), python3-paraview (= $pv_version), python3-numpy${shlibs:+, $shlibs}
+Depends: paraview (= $pv_version), python3-paraview (= $pv_version), python3:any, python3-numpy${shlibs:+, $shlibs}
 Description: 'Psi Volume' representation for tetrahedral meshes in ParaView
- Projected tetrahedra whose fragments integrate their own ray segment, by one of seven
- methods, with isosurfaces, adaptive sampling and depth peeling; a conforming
- tetrahedralization filter and a reader of tetrahedral .off files. Built for
- ParaView $pv_version only.
+ Projected tetrahedra whose fragments integrate their own ray segment, by
+ one of seven methods, with isosurfaces, adaptive sampling and depth
+ peeling; a conforming tetrahedralization filter and a reader of
+ tetrahedral .off files. Built for ParaView $pv_version only.
 EOF
 # pvpython may write byte code into the package's directory: remove it with the package.
 package_dir=$(cd "$stage" && find . -type d -name psivolume | sed 's|^\.||')

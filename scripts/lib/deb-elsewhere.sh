@@ -12,11 +12,15 @@ psi_deb_suite() {
   suite_of "$1"
 }
 
-# psi_deb_in_system SUITE SCRIPT [ARG...]: runs scripts/SCRIPT in SUITE's throwaway system.
+# psi_deb_in_system SUITE SCRIPT [ARG...]: runs scripts/SCRIPT in SUITE's throwaway system, with
+# the maintainer's name and the build date, when given, passed on.
 psi_deb_in_system() {
-  local suite=$1 script=$2
+  local suite=$1 script=$2 v pass=()
   shift 2
-  bash "$root/scripts/in-system.sh" --throwaway "$suite" bash "scripts/$script" "$@"
+  for v in DEBFULLNAME DEBEMAIL PSI_DEB_MAINTAINER SOURCE_DATE_EPOCH; do
+    [ -z "${!v:-}" ] || pass+=("$v=${!v}")
+  done
+  bash "$root/scripts/in-system.sh" --throwaway "$suite" env "${pass[@]}" bash "scripts/$script" "$@"
 }
 
 # psi_deb_relative PATH: PATH relative to the checkout (the system sees only the checkout).
