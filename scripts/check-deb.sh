@@ -24,18 +24,19 @@ if [ "${1:-}" = --paraview ]; then
   fi
 fi
 deb=$(realpath "${1:?usage: check-deb.sh [--paraview X] DEB}")
+source "$root/scripts/lib/apt.sh"  # psi_apt: one apt-get at a time, waiting for dpkg's lock
 # pvpython 5.13 and later lose buffered output when a script leaves through os._exit into a pipe.
 export PYTHONUNBUFFERED=1 DEBIAN_FRONTEND=noninteractive
 xvfb=(xvfb-run -a -n "${PSI_XVFB_DISPLAY:-99}" -s "-screen 0 1280x1024x24 -noreset")
 script="$root/Testing/Python/test_installed.py"
 work=$(mktemp -d)
-trap 'apt-get remove -y -qq paraview-psivolume >/dev/null 2>&1 || true; rm -rf "$work"' EXIT
+trap 'psi_apt "" remove -y -qq paraview-psivolume >/dev/null 2>&1 || true; rm -rf "$work"' EXIT
 cd "$work"
 # Every file under /usr and /etc but byte code (pvpython run as root writes it beside the modules).
 system_files() { find /usr /etc -xdev ! -name '*.pyc' ! -name __pycache__ | sort; }
 system_files > before.txt
 
-apt-get install -y -qq "$deb" >/dev/null
+psi_apt "" install -y -qq "$deb" >/dev/null
 # its own files and folders (not the shared ones: /usr, /usr/lib, ParaView's plugins/)
 files=$(dpkg -L paraview-psivolume | grep -i 'psivolume\|paraview.conf')
 env -u PYTHONPATH "${xvfb[@]}" pvpython --force-offscreen-rendering "$script" --by-name --prefix /usr
@@ -52,7 +53,7 @@ env -u PYTHONPATH "${xvfb[@]}" paraview --script="$work/gui.py" --exit >/dev/nul
 grep -q '^PsiVolume .*/PsiVolume.so loaded=0$' plugins.txt || { cat plugins.txt; echo "FAILED: not in the GUI's plugin list"; exit 1; }
 echo "ok      the GUI's plugin manager lists: $(grep '^PsiVolume' plugins.txt)"
 
-apt-get remove -y -qq paraview-psivolume >/dev/null
+psi_apt "" remove -y -qq paraview-psivolume >/dev/null
 left=$(for f in $files; do [ -e "$f" ] || [ -L "$f" ] && echo "$f"; done || true)
 [ -z "$left" ] || { echo "FAILED: left after removal: $left"; exit 1; }
 dpkg -V paraview python3-paraview || { echo "FAILED: paraview's files changed"; exit 1; }
