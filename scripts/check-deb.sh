@@ -5,6 +5,8 @@
 #   bash scripts/check-deb.sh --paraview 6.1 dist/paraview-psivolume_0.1-1_amd64.deb
 # (--paraview: in the Debian system that ships that ParaView, seen through a throwaway overlay,
 # as scripts/build-deb.sh --paraview builds it; the cached system is left as it was.)
+# - a fresh system: apt resolves every dependency from the archive with nothing installed
+#   (simulated with an empty dpkg status);
 # - pvpython: LoadDistributedPlugin('PsiVolume') with no path, the embedded default drawn,
 #   psivolume imported from /usr (Testing/Python/test_installed.py --by-name);
 # - pvbatch: the same script;
@@ -35,6 +37,11 @@ cd "$work"
 # Every file under /usr and /etc but byte code (pvpython run as root writes it beside the modules).
 system_files() { find /usr /etc -xdev ! -name '*.pyc' ! -name __pycache__ | sort; }
 system_files > before.txt
+: > empty-status
+apt-get -s -o Dir::State::status="$work/empty-status" install "$deb" > fresh.txt \
+  || { tail -n 20 fresh.txt; echo "FAILED: not installable on a fresh system"; exit 1; }
+echo "ok      on a fresh system apt would install it with $(grep -c '^Inst' fresh.txt) packages," \
+  "paraview $(sed -n 's/^Inst paraview (\([^ ]*\).*/\1/p' fresh.txt) among them"
 
 psi_apt "" install -y -qq "$deb" >/dev/null
 # its own files and folders (not the shared ones: /usr, /usr/lib, ParaView's plugins/)
