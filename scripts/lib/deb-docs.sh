@@ -24,9 +24,11 @@ psi_deb_docs() {
     echo "License: BSD-3-clause"
     sed -n '/^Copyright/,$p' "$root/LICENSE" | tail -n +2 | sed -e '1{/^$/d}' -e 's/^$/./' -e 's/^/ /'
   } > "$doc/copyright"
+  # A package built here, not uploaded to Debian: no bug (ITP) for its changelog to close.
+  local overrides="$stage/usr/share/lintian/overrides/paraview-psivolume"
+  echo "paraview-psivolume: initial-upload-closes-no-bugs" > "$overrides"
   # Debian 12's ParaView reads its plugin list from /usr/bin/paraview.conf, not a command.
   if [ -e "$stage/usr/bin/paraview.conf" ]; then
-    echo "paraview-psivolume: no-manual-page [usr/bin/paraview.conf]" \
-      > "$stage/usr/share/lintian/overrides/paraview-psivolume"
+    echo "paraview-psivolume: no-manual-page [usr/bin/paraview.conf]" >> "$overrides"
   fi
 }
