@@ -1,29 +1,39 @@
 """Benchmark (not a test): what a camera move costs with 'Psi Volume', beside ParaView's fixed
 cost per frame ('Outline') and the mapper users pick for speed ('Resample To Image', 128^3).
 
-pvpython Benchmarks/bench_interaction.py [--sizes 8 20 40] [--bluntfin] [--size 512]
+pvpython Benchmarks/bench_interaction.py [--sizes 10 20 30 40] [--bluntfin] [--size 512]
                                          [--orbit 12] [--plot interaction.png]
 
---sizes are half-extents of ParaView's Wavelet, tetrahedralized (5 tets per voxel: 8 gives
-20,480 tets, 20 gives 320,000, 40 gives 2,560,000). For each mesh, in one process, it prints
-seconds (wall, the GL work waited for):
-  - still: a still frame of 'Psi Volume' (the median of 3, each after a small camera turn);
-  - first drag: the first interactive frame after it, the level of detail's build included;
-  - drag: the median interactive frame over an orbit of --orbit frames, and what drew them
-    (LastInteractiveImage: 0 the full frame, 1 the volume level of detail);
+--sizes are half-extents of ParaView's Wavelet, tetrahedralized (5 tets per voxel: 10 gives
+40,000 tets, 20 gives 320,000, 30 gives 1,080,000, 40 gives 2,560,000, 60 gives 8,640,000).
+For each mesh, in one process, 'Psi Volume' with its defaults (InteractionMode 'Auto', budget
+0.1 s), it prints seconds (wall, the GL work waited for):
+  - still: a still frame (the median of 3, each after a small camera turn);
+  - first drag: the first interactive frame after it. Past the budget 'Auto' starts building
+    the level of detail on a thread of its own and draws the full frame meanwhile;
+  - LOD after: the interactive frames (and the seconds from the first) until the level of detail
+    drew one, and its build's own seconds;
+  - drag: the median interactive frame over an orbit of --orbit frames after that, and what drew
+    them (LOD: the volume level of detail, full: the full frame);
   - outline: a still frame of the 'Outline' representation, ParaView's fixed cost per frame;
   - RTI first / RTI: 'Volume' with 'Resample To Image' (128^3): its first frame (the resampling)
     and the median of its later frames;
-  - peak RSS of the process after the 'Psi Volume' frames (MB);
-and the ratios drag / outline and drag / still. Absolute times vary with the machine; the ratios
-are taken within one run. --plot draws still and drag against tetrahedra."""
+  - memory: the process's resident memory after the still frames and its peak after the orbit
+    (MB; the peak includes the level of detail's build);
+and the ratios drag / outline and drag / still. With --bluntfin, on the Blunt Fin, the mean
+error (/255) against the exact reference at the bench's view of the level of detail, of
+'Projected tetra''s still frame and of 'Resample To Image' 128^3's. Absolute times vary with
+the machine; the ratios are taken within one run. --plot draws still and drag against tets."""
 import argparse
-import resource
+import tempfile
 import time
 
+import numpy as np
 from paraview import simple
 
-from psivolume import bench, data, timing
+from psivolume import accuracy, bench, data, testing, timing
+
+LOD = 1
 
 
 def interactive_frame(view):
@@ -33,7 +43,47 @@ def interactive_frame(view):
     return time.perf_counter() - t0
 
 
-def measure(src, array, size, orbit):
+def memory_mb():
+    """(resident, peak resident) memory of this process, MB."""
+    fields = {}
+    with open("/proc/self/status") as f:
+        for line in f:
+            key, _, value = line.partition(":")
+            fields[key] = value
+    return tuple(float(fields[k].split()[0]) / 1024.0 for k in ("VmRSS", "VmHWM"))
+
+
+def drew(rep):
+    rep.UpdatePropertyInformation()
+    return rep.GetProperty("LastInteractiveImage").GetElement(0)
+
+
+def until_lod(view, rep, timeout=600):
+    """Interactive frames, the camera turning a little, until the level of detail draws one or
+    `timeout` seconds pass: (frames, seconds)."""
+    t0, frames = time.perf_counter(), 0
+    while drew(rep) != LOD and time.perf_counter() - t0 < timeout:
+        view.GetActiveCamera().Azimuth(1)
+        interactive_frame(view)
+        frames += 1
+    return frames, time.perf_counter() - t0
+
+
+def errors(view, rep, src, lod_image):
+    """Mean errors (/255) against the exact reference at this view: of `lod_image`, of
+    'Projected tetra''s still frame and of 'Resample To Image' 128^3's."""
+    with tempfile.TemporaryDirectory(prefix="psi_bench_") as work:
+        cap = accuracy.Capture(view, rep, src, work)
+        ref = accuracy.reference_image(cap, runs=1)[0][0]
+    out = {"err_lod": accuracy.errors(lod_image, ref)[0]}
+    for key, mapper in (("err_pt", "Projected tetra"), ("err_rti", "Resample To Image")):
+        bench.set_mapper(rep, mapper)
+        simple.Render(view)
+        out[key] = accuracy.errors(testing.grab(view), ref)[0]
+    return out
+
+
+def measure(src, array, size, orbit, with_errors=False):
     """One mesh: the row of the table, as a dict."""
     src.UpdatePipeline()
     tets = src.GetDataInformation().GetNumberOfCells()
@@ -46,38 +96,58 @@ def measure(src, array, size, orbit):
     view.ResetCamera()
     timing.frame(view)  # first frame: upload and first sort, not a still frame of the orbit
     still = timing.time_frames(view, 3, warmup=0)[0]
+    rss_still = memory_mb()[0]
     cam = view.GetActiveCamera()
     cam.Azimuth(5)
     first = interactive_frame(view)
-    drags = []
+    first_drew = drew(rep)
+    to_lod = until_lod(view, rep) if first_drew != LOD and still > rep.InteractiveBudget else (0, 0)
+    drags, kinds = [], []
     for _ in range(orbit):
         cam.Azimuth(360.0 / orbit)
         drags.append(interactive_frame(view))
+        kinds.append(drew(rep))
+    lod_image = testing.grab(view)
     rep.UpdatePropertyInformation()
-    drew = rep.GetProperty("LastInteractiveImage").GetElement(0)
     build = rep.GetProperty("LODBuildSeconds").GetElement(0)
-    rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+    peak = memory_mb()[1]
+    row = {"tets": tets, "still": still, "first": first, "first_drew": first_drew,
+           "to_lod": to_lod, "drag": timing.frame_time(drags), "drew": kinds, "build": build,
+           "rss_still": rss_still, "peak": peak}
+    if with_errors:
+        row.update(errors(view, rep, src, lod_image) if set(kinds) == {LOD} else {})
     rep.SetRepresentationType("Outline")
-    outline = timing.time_frames(view, 5)[0]
-    rep.SetRepresentationType("Volume")
-    rep.SelectMapper = "Resample To Image"
-    rti_first = timing.frame(view)[0]
-    rti = timing.time_frames(view, 3, warmup=0)[0]
+    row["outline"] = timing.time_frames(view, 5)[0]
+    bench.set_mapper(rep, "Resample To Image")
+    row["rti_first"] = timing.frame(view)[0]
+    row["rti"] = timing.time_frames(view, 3, warmup=0)[0]
     simple.Delete(view)
-    drag = timing.frame_time(drags)
-    return {"tets": tets, "still": still, "first": first, "drag": drag, "drew": drew,
-            "build": build, "outline": outline, "rti_first": rti_first, "rti": rti, "rss": rss}
+    return row
+
+
+def kind(codes):
+    names = {0: "full", LOD: "LOD"}
+    return "/".join(sorted({names.get(c, str(c)) for c in codes}))
 
 
 def print_table(rows):
-    print("| mesh | tets | still s | first drag s (LOD build) | drag s (drew) | outline s | "
-          "RTI first s | RTI s | peak RSS MB | drag/outline | drag/still |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    print("| mesh | tets | still s | first drag s (drew) | LOD after: frames, s (build s) | "
+          "drag s (drew) | outline s | RTI first s | RTI s | RSS MB still / peak | "
+          "drag/outline | drag/still |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for name, r in rows:
-        print("| %s | %d | %.3f | %.3f (%.3f) | %.3f (%s) | %.3f | %.3f | %.3f | %.0f | %.2f | %.3f |"
-              % (name, r["tets"], r["still"], r["first"], r["build"], r["drag"],
-                 "LOD" if r["drew"] == 1 else "full", r["outline"], r["rti_first"], r["rti"],
-                 r["rss"], r["drag"] / r["outline"], r["drag"] / r["still"]))
+        frames, secs = r["to_lod"]
+        print("| %s | %d | %.3f | %.3f (%s) | %s | %.3f (%s) | %.3f | %.3f | %.3f | %.0f / %.0f "
+              "| %.1f | %.3f |"
+              % (name, r["tets"], r["still"], r["first"], kind([r["first_drew"]]),
+                 "%d, %.2f (%.2f)" % (frames, secs, r["build"]) if frames else "–",
+                 r["drag"], kind(r["drew"]), r["outline"], r["rti_first"], r["rti"],
+                 r["rss_still"], r["peak"], r["drag"] / r["outline"], r["drag"] / r["still"]))
+    for name, r in rows:
+        if "err_lod" in r:
+            print("\n%s, mean error against the exact reference (/255): level of detail %.3f, "
+                  "'Projected tetra' still frame %.3f, 'Resample To Image' 128^3 %.3f"
+                  % (name, r["err_lod"], r["err_pt"], r["err_rti"]))
 
 
 def plot(rows, path):
@@ -104,7 +174,7 @@ def plot(rows, path):
 
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("--sizes", type=int, nargs="*", default=[8, 20, 40])
+    p.add_argument("--sizes", type=int, nargs="*", default=[10, 20, 30, 40])
     p.add_argument("--bluntfin", action="store_true")
     p.add_argument("--size", type=int, default=512)
     p.add_argument("--orbit", type=int, default=12)
@@ -115,9 +185,10 @@ def main():
     for half in args.sizes:
         src, array = data.wavelet(half)
         rows.append(("Wavelet %d" % half, measure(src, array, args.size, args.orbit)))
+        simple.Delete(src)
     if args.bluntfin:
         src, array = bench.load("bluntfin")
-        rows.append(("Blunt Fin", measure(src, array, args.size, args.orbit)))
+        rows.append(("Blunt Fin", measure(src, array, args.size, args.orbit, with_errors=True)))
     print_table(rows)
     if args.plot:
         plot(rows, args.plot)

@@ -2,21 +2,11 @@
 
 #include "PsiParallel.h"
 
-#include "vtkCellData.h"
-#include "vtkDataArray.h"
-#include "vtkDataSetAttributes.h"
-#include "vtkImageData.h"
-#include "vtkPointData.h"
-#include "vtkProbeFilter.h"
-#include "vtkSmartVolumeMapper.h"
-#include "vtkIdList.h"
-#include "vtkNew.h"
+#include "vtkDataSet.h"
+#include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkObjectFactory.h"
-#include "vtkUnsignedCharArray.h"
 
-#include <algorithm>
-#include <chrono>
-#include <cmath>
+#include <utility>
 
 namespace
 {
@@ -26,6 +16,19 @@ class PsiTimedVolumeMapper : public vtkSmartVolumeMapper
 public:
   static PsiTimedVolumeMapper* New();
   vtkTypeMacro(PsiTimedVolumeMapper, vtkSmartVolumeMapper);
+  PsiTimedVolumeMapper()
+  {
+    // The sample distance given (SetSampleDistance), not one the GPU ray caster derives from the
+    // image's size: the smart mapper locks its GPU mapper to the input's spacing, which for a
+    // 64^3 image samples every 0.32 spacing, three times the samples of one spacing for no
+    // gain in accuracy (docs/decisions.md "Interaction").
+    this->GPUMapper->LockSampleDistanceToInputSpacingOff();
+    // One ray per 1.5 x 1.5 pixels, the image then magnified: on llvmpipe the ray caster's cost
+    // goes with its rays, and at 512^2 this halves the frame on the Blunt Fin with the same
+    // error against the exact image (0.668/255 against 0.674 for a ray per pixel; edges blur by
+    // about a pixel, docs/decisions.md "Interaction").
+    this->GPUMapper->SetImageSampleDistance(1.5f);
+  }
   void Render(vtkRenderer* ren, vtkVolume* vol) override
   {
     const auto t0 = std::chrono::steady_clock::now();
@@ -36,161 +39,6 @@ public:
 };
 vtkStandardNewMacro(PsiTimedVolumeMapper);
 
-// A copy of `piece`'s structure with only the arrays the level of detail draws, so that the
-// image holds those alone (the probe resamples every array it is given).
-vtkSmartPointer<vtkDataSet> WithArrays(vtkDataSet* piece, const PsiVolumeLOD::Arrays& arrays)
-{
-  vtkSmartPointer<vtkDataSet> copy;
-  copy.TakeReference(piece->NewInstance());
-  copy->CopyStructure(piece);
-  for (const std::string& name : { arrays.Color, arrays.Opacity })
-  {
-    if (vtkDataArray* a = piece->GetPointData()->GetArray(name.c_str()))
-    {
-      copy->GetPointData()->AddArray(a);
-    }
-    else if (vtkDataArray* c = piece->GetCellData()->GetArray(name.c_str()))
-    {
-      copy->GetCellData()->AddArray(c);
-    }
-  }
-  return copy;
-}
-
-// Samples whose value is not finite are hidden (as 'Psi Volume' skips their cells) and given a
-// finite value, so that no NaN reaches the ray caster's scalar range.
-void BlankNonFinite(vtkImageData* image, const PsiVolumeLOD::Arrays& arrays)
-{
-  vtkPointData* pd = image->GetPointData();
-  vtkUnsignedCharArray* ghosts = image->GetPointGhostArray();
-  for (const std::string& name : { arrays.Color, arrays.Opacity })
-  {
-    vtkDataArray* a = name.empty() ? nullptr : pd->GetArray(name.c_str());
-    for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i)
-    {
-      for (int c = 0; c < a->GetNumberOfComponents(); ++c)
-      {
-        if (!std::isfinite(a->GetComponent(i, c)))
-        {
-          ghosts = ghosts ? ghosts : image->AllocatePointGhostArray();
-          ghosts->SetValue(i, ghosts->GetValue(i) | vtkDataSetAttributes::HIDDENPOINT);
-          a->SetComponent(i, c, 0);
-        }
-      }
-    }
-  }
-}
-
-// The lattice: `resolution` samples (at least 2) along each side of `bounds`, spanning them. In
-// parallel every process computes it from the same global bounds, so that the processes' samples
-// are points of one lattice.
-struct Lattice
-{
-  int Dims[3];
-  double Spacing[3];
-  double Origin[3];
-};
-
-Lattice GlobalLattice(const double bounds[6], int resolution)
-{
-  Lattice l;
-  const double sides[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
-  for (int k = 0; k < 3; ++k)
-  {
-    // `resolution` samples along every side, as ParaView's 'Resample To Image' samples: along
-    // the longest side only (the others in proportion), the Blunt Fin's level of detail was 1.84
-    // from the exact image against 0.83 for 64^3 (/255, docs/decisions.md "Interaction")
-    l.Dims[k] = std::max(2, resolution);
-    l.Spacing[k] = sides[k] > 0 ? sides[k] / (l.Dims[k] - 1) : 1;
-    l.Origin[k] = bounds[2 * k];
-  }
-  return l;
-}
-
-vtkSmartPointer<vtkImageData> LatticeImage(const Lattice& l)
-{
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetOrigin(l.Origin);
-  image->SetSpacing(l.Spacing);
-  image->SetDimensions(l.Dims);
-  return image;
-}
-
-// In parallel, the lattice points beyond this process's cut that its piece does not cover (the
-// neighbour holds their cells) take the value of the nearest point inside the cut, instead of
-// hiding the last lattice cell before the cut (a seam); the cropping draws nothing beyond the
-// cut, so these values only shape the interpolation between the last point and the cut.
-void FillBeyondCut(vtkImageData* image, const char* maskName, const double cut[6])
-{
-  vtkPointData* pd = image->GetPointData();
-  vtkDataArray* mask = pd->GetArray(maskName);
-  const int* ext = image->GetExtent();
-  const double* o = image->GetOrigin();
-  const double* h = image->GetSpacing();
-  int in[6]; // the extent of the points inside the cut
-  for (int k = 0; k < 3; ++k)
-  {
-    in[2 * k] = std::max(ext[2 * k], static_cast<int>(std::ceil((cut[2 * k] - o[k]) / h[k])));
-    in[2 * k + 1] =
-      std::min(ext[2 * k + 1], static_cast<int>(std::floor((cut[2 * k + 1] - o[k]) / h[k])));
-    if (!mask || in[2 * k] > in[2 * k + 1])
-    {
-      return;
-    }
-  }
-  for (int z = ext[4]; z <= ext[5]; ++z)
-  {
-    for (int y = ext[2]; y <= ext[3]; ++y)
-    {
-      for (int x = ext[0]; x <= ext[1]; ++x)
-      {
-        int p[3] = { x, y, z };
-        int q[3] = { std::clamp(x, in[0], in[1]), std::clamp(y, in[2], in[3]),
-          std::clamp(z, in[4], in[5]) };
-        const vtkIdType pid = image->ComputePointId(p), qid = image->ComputePointId(q);
-        if (pid == qid || mask->GetTuple1(pid) != 0 || mask->GetTuple1(qid) == 0)
-        {
-          continue;
-        }
-        for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
-        {
-          if (vtkDataArray* array = pd->GetArray(a))
-          {
-            array->SetTuple(pid, qid, array);
-          }
-        }
-      }
-    }
-  }
-}
-
-// Samples outside the mesh are hidden, and so are the lattice cells that touch one, as VTK's
-// vtkResampleToImage does (the ray caster skips hidden samples: transparent outside the mesh).
-void BlankOutside(vtkImageData* image, const char* maskName)
-{
-  vtkDataArray* mask = image->GetPointData()->GetArray(maskName);
-  if (!mask)
-  {
-    return;
-  }
-  vtkUnsignedCharArray* points = image->AllocatePointGhostArray();
-  vtkUnsignedCharArray* cells = image->AllocateCellGhostArray();
-  vtkNew<vtkIdList> cellIds;
-  for (vtkIdType i = 0; i < mask->GetNumberOfTuples(); ++i)
-  {
-    if (mask->GetTuple1(i) == 0)
-    {
-      points->SetValue(i, points->GetValue(i) | vtkDataSetAttributes::HIDDENPOINT);
-      image->GetPointCells(i, cellIds);
-      for (vtkIdType c = 0; c < cellIds->GetNumberOfIds(); ++c)
-      {
-        const vtkIdType id = cellIds->GetId(c);
-        cells->SetValue(id, cells->GetValue(id) | vtkDataSetAttributes::HIDDENCELL);
-      }
-    }
-  }
-  image->GetPointData()->RemoveArray(maskName);
-}
 } // namespace
 
 PsiVolumeLOD::PsiVolumeLOD()
@@ -213,35 +61,50 @@ double PsiVolumeLOD::GetLastDrawSeconds() const
   return static_cast<PsiTimedVolumeMapper*>(this->Mapper.Get())->LastSeconds;
 }
 
+// A build still running is waited for (the future's destructor): it holds only its own copy of
+// the piece's structure and arrays.
 PsiVolumeLOD::~PsiVolumeLOD() = default;
 
 void PsiVolumeLOD::Reset()
 {
   this->Image = nullptr;
-  this->Piece = nullptr;
-  this->PieceTime = 0;
-  this->BuiltResolution = 0;
+  this->Built = Key();
   this->Mapper->RemoveAllInputs();
 }
 
-bool PsiVolumeLOD::Region::operator==(const Region& o) const
+bool PsiVolumeLOD::Key::operator==(const Key& o) const
 {
-  return Parallel == o.Parallel && std::equal(Global, Global + 6, o.Global) &&
-    std::equal(Cut, Cut + 6, o.Cut);
+  return Piece == o.Piece && PieceTime == o.PieceTime && BuiltArrays == o.BuiltArrays &&
+    BuiltRegion == o.BuiltRegion && Resolution == o.Resolution;
+}
+
+PsiVolumeLOD::Key PsiVolumeLOD::KeyOf(
+  vtkDataSet* piece, const Arrays& arrays, const Region& region, int resolution)
+{
+  Key key;
+  key.Piece = piece;
+  key.PieceTime = piece ? piece->GetMTime() : 0;
+  key.BuiltArrays = arrays;
+  key.BuiltRegion = region;
+  key.Resolution = resolution;
+  return key;
+}
+
+bool PsiVolumeLOD::Drawable(vtkDataSet* piece, const Arrays& arrays)
+{
+  return piece && piece->GetNumberOfCells() > 0 && !arrays.Color.empty();
 }
 
 bool PsiVolumeLOD::IsCurrent(
   vtkDataSet* piece, const Arrays& arrays, const Region& region, int resolution) const
 {
-  return this->Image && piece == this->Piece && piece->GetMTime() == this->PieceTime &&
-    arrays == this->BuiltArrays && region == this->BuiltRegion &&
-    resolution == this->BuiltResolution;
+  return this->Image && piece && KeyOf(piece, arrays, region, resolution) == this->Built;
 }
 
 bool PsiVolumeLOD::Update(
   vtkDataSet* piece, const Arrays& arrays, const Region& region, int resolution)
 {
-  if (!piece || piece->GetNumberOfCells() == 0 || arrays.Color.empty())
+  if (!Drawable(piece, arrays))
   {
     this->Reset();
     return false;
@@ -251,33 +114,68 @@ bool PsiVolumeLOD::Update(
     return false;
   }
   const auto t0 = std::chrono::steady_clock::now();
-  const double* bounds = piece->GetBounds();
-  const Lattice lattice = GlobalLattice(region.Parallel ? region.Global : bounds, resolution);
-  vtkNew<vtkProbeFilter> probe;
-  probe->SetInputData(LatticeImage(lattice));
-  probe->SetSourceData(WithArrays(piece, arrays));
-  psi::Parallel([&] { probe->Update(); });
-  this->Image = vtkSmartPointer<vtkImageData>::New();
-  this->Image->ShallowCopy(probe->GetOutput());
-  if (region.Parallel)
-  {
-    FillBeyondCut(this->Image, probe->GetValidPointMaskArrayName(), region.Cut);
-  }
-  BlankOutside(this->Image, probe->GetValidPointMaskArrayName());
-  BlankNonFinite(this->Image, arrays);
-  this->Crop(region);
-  this->Mapper->SetSampleDistance(static_cast<float>(
-    0.5 * std::min({ lattice.Spacing[0], lattice.Spacing[1], lattice.Spacing[2] })));
-  this->Mapper->SetInputData(this->Image);
-  this->Mapper->SelectScalarArray(arrays.Color.c_str());
-  this->Piece = piece;
-  this->PieceTime = piece->GetMTime();
-  this->BuiltArrays = arrays;
-  this->BuiltRegion = region;
-  this->BuiltResolution = resolution;
-  this->LastBuildSeconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const psi::LODImage lod =
+    psi::ResampleForLOD(psi::LODSource(piece, arrays), arrays, region, resolution, true);
+  this->Install(lod, KeyOf(piece, arrays, region, resolution),
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   return true;
+}
+
+void PsiVolumeLOD::Request(
+  vtkDataSet* piece, const Arrays& arrays, const Region& region, int resolution)
+{
+  if (!Drawable(piece, arrays))
+  {
+    this->Reset();
+    return;
+  }
+  if (this->Job || this->IsCurrent(piece, arrays, region, resolution))
+  {
+    return;
+  }
+  // The copy is made here, on the main thread; the build reads only the copy. It is marked as
+  // background work before its thread starts, so that psi::Parallel leaves vtkSMPTools' backend
+  // alone from now until the build ends (PsiParallel.h).
+  vtkSmartPointer<vtkDataSet> source = psi::LODSource(piece, arrays);
+  source->GetBounds(); // computed and cached here (with the shared points'): the build only reads
+  auto mark = std::make_unique<psi::BackgroundWork>();
+  this->Job = std::make_unique<Build>();
+  this->Job->Inputs = KeyOf(piece, arrays, region, resolution);
+  this->Job->Result = std::async(std::launch::async,
+    [source, arrays, region, resolution, mark = std::move(mark)]() mutable {
+      const auto t0 = std::chrono::steady_clock::now();
+      psi::LODImage lod = psi::ResampleForLOD(source, arrays, region, resolution, false);
+      const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      source = nullptr;
+      mark.reset();
+      return std::make_pair(std::move(lod), seconds);
+    });
+}
+
+bool PsiVolumeLOD::Poll()
+{
+  if (!this->Job ||
+    this->Job->Result.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+  {
+    return false;
+  }
+  const std::pair<psi::LODImage, double> done = this->Job->Result.get();
+  const Key inputs = this->Job->Inputs;
+  this->Job.reset();
+  this->Install(done.first, inputs, done.second);
+  return true;
+}
+
+void PsiVolumeLOD::Install(const psi::LODImage& lod, const Key& key, double seconds)
+{
+  this->Image = lod.Image;
+  this->Crop(key.BuiltRegion);
+  this->Mapper->SetSampleDistance(static_cast<float>(lod.SampleDistance));
+  this->Mapper->SetInputData(this->Image);
+  this->Mapper->SelectScalarArray(key.BuiltArrays.Color.c_str());
+  this->Built = key;
+  this->LastBuildSeconds = seconds;
 }
 
 // In parallel each process draws only its cut: the neighbours' images abut there, as ordered

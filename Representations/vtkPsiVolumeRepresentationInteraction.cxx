@@ -156,7 +156,12 @@ void vtkPsiVolumeRepresentation::InstallLODMapper(bool volume)
 
 // Builds the level of detail from the piece this process draws, when the piece or its array
 // changed, and gives its mapper the array and vector mode the full frame uses. False: nothing
-// to draw (no piece, an empty one, or no array).
+// to draw (no piece, an empty one, or no array), or its build still runs.
+//
+// In 'Auto' the build runs on a thread of its own (serially): the frames until it is done are
+// full frames, so that the first move after a slow still frame costs a full frame, not the
+// build. 'Volume LOD' (the level of detail asked for) and parallel renders build it now: in
+// ordered compositing every process must draw the same kind of image in one frame.
 bool vtkPsiVolumeRepresentation::UpdateVolumeLOD(vtkInformation* inInfo, vtkPVRenderView* view)
 {
   vtkAlgorithmOutput* port = vtkPVRenderView::GetPieceProducer(inInfo, this);
@@ -166,6 +171,14 @@ bool vtkPsiVolumeRepresentation::UpdateVolumeLOD(vtkInformation* inInfo, vtkPVRe
   PsiVolumeLOD::Arrays arrays;
   arrays.Color = this->PsiMapper->GetArrayName() ? this->PsiMapper->GetArrayName() : "";
   const PsiVolumeLOD::Region region = LatticeRegion(view, piece);
+  this->LOD->Poll();
+  const bool background = !region.Parallel &&
+    this->PsiMapper->GetSettings().InteractionMode == psi::InteractionModes::Auto;
+  if (background && !this->LOD->IsCurrent(piece, arrays, region))
+  {
+    this->LOD->Request(piece, arrays, region);
+    return false;
+  }
   if (!this->LOD->IsCurrent(piece, arrays, region))
   {
     this->SetProgressText("Psi Volume: interactive level of detail");

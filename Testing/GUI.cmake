@@ -33,8 +33,8 @@ if (CMAKE_SCRIPT_MODE_FILE)
     file(WRITE "${SCRIPT}" "${_script}")
   endif ()
   # the strict checks the script calls: <pqevent ... arguments="psi['check'](...)" /> and
-  # psi['check_interaction'](...)
-  string(REGEX MATCHALL "arguments=\"psi\\['check(_interaction)?'\\]" _calls "${_script}")
+  # psi['check_interaction'](...) and psi['check_report']()
+  string(REGEX MATCHALL "arguments=\"psi\\['check(_interaction|_report)?'\\]" _calls "${_script}")
   list(LENGTH _calls _expected)
   # a script whose checks are all its own has no final image to compare (BASELINE empty)
   set(_final)
@@ -86,8 +86,10 @@ endif ()
 #     with 'Psi Volume'.
 #   PsiVolumeGUIInteraction: a recorded drag in the view, drawn by the volume level of detail
 #     ('Volume LOD') and by the full frame ('Full frame'), as the read-out says; no final image.
+#   PsiVolumeGUIAccuracyReport: Tools > Accuracy report (the plugin's action) on a small mesh;
+#     the table it shows names every row of the report; no final image.
 set(psi_gui_tests PsiVolumeGUI PsiVolumeGUIOpacityState PsiVolumeGUIOpenFile
-  PsiVolumeGUIInteraction)
+  PsiVolumeGUIInteraction PsiVolumeGUIAccuracyReport)
 set(PsiVolumeGUIOpenFile_baseline PsiVolumeGUIOpenFile.png)
 set(PsiVolumeGUI_baseline PsiVolumeGUI.png)
 set(PsiVolumeGUIOpacityState_baseline PsiVolumeGUI_Average.png)
@@ -121,3 +123,7 @@ foreach (name IN LISTS psi_gui_tests)
     FAIL_REGULAR_EXPRESSION "Couldn't find object|Failed to parse|The following event FAILED|PsiGUICheck FAILED|Unhandled error"
     RESOURCE_LOCK PsiGUI)
 endforeach ()
+# The accuracy report finds its reference renderer beside the plugin loaded; named here, it is a
+# target of the test (scripts/mutation_test.py builds the targets a test's environment names).
+set_tests_properties(PsiGUI.PsiVolumeGUIAccuracyReport PROPERTIES
+  ENVIRONMENT "${PSI_PYTHONPATH};PSI_TEST_REFERENCE=$<TARGET_FILE:psi_reference_render>")

@@ -68,6 +68,19 @@ endif ()
 # renders or screenshots, close to the full frame; rebuilt for new arrays and data; hard inputs.
 psi_add_python_test(interaction TIMEOUT 300)
 
+# The accuracy report as the GUI runs it (psivolume.gui), after `import psivolume` by the
+# package's name once the plugin is loaded: no PYTHONPATH, nor any PSI_* override (the report
+# finds the plugin ParaView loaded, and its reference renderer beside the build's).
+add_test(NAME PsiPython.gui_report
+  COMMAND "${PVPYTHON_EXECUTABLE}" --force-offscreen-rendering
+          "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_gui_report.py"
+          --package-dir "${PROJECT_SOURCE_DIR}/Python")
+# (the plugin to load, and the reference renderer the report must find, in variables of their
+# own, which the report does not read)
+set_tests_properties(PsiPython.gui_report PROPERTIES
+  ENVIRONMENT "PSI_TEST_PLUGIN=$<TARGET_FILE:PsiVolume>;PSI_TEST_REFERENCE=$<TARGET_FILE:psi_reference_render>;PYTHONPATH=;PSI_PLUGIN=;PSI_REFERENCE_RENDER=;PSI_BUILD_DIR="
+  TIMEOUT 120)
+
 # The install tree: `cmake --install` into a temporary prefix, then pvpython loads the plugin from
 # it by path, draws the embedded default with 'Psi Volume' and imports psivolume from it, with the
 # checkout's Python/ off its path (Testing/Install/run_installed.py).

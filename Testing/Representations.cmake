@@ -89,6 +89,11 @@ add_executable(TestFramePlan Cxx/TestFramePlan.cxx)
 target_link_libraries(TestFramePlan PRIVATE PsiVolume::Representations PsiTestSupport)
 add_test(NAME PsiRepresentations.FramePlan COMMAND TestFramePlan)
 
+# The interactive level of detail's image: which lattice points it hides (GL-free).
+add_executable(TestLODImage Cxx/TestLODImage.cxx)
+target_link_libraries(TestLODImage PRIVATE PsiVolume::Representations)
+add_test(NAME PsiRepresentations.LODImage COMMAND TestLODImage)
+
 # The mapper holds the one settings type: the integration method clamped to the method table
 # (through psi::SetClamped), named from it, its default the settings' (GL-free).
 add_executable(TestMapperSettings Cxx/TestMapperSettings.cxx)

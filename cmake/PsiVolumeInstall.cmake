@@ -3,15 +3,7 @@
 # plugin's directory, and, for a packaged ParaView that has none, bin/paraview.conf.
 # paraview_plugin_build (CMakeLists.txt) installs the plugin, its modules and PsiVolume.plugins.xml.
 
-# The Python package (Python/psivolume): beside ParaView's `paraview` package, so that pvpython,
-# pvbatch and the GUI's Python shell import it with no PYTHONPATH.
-if (DEFINED PARAVIEW_PYTHONPATH)
-  set(_psi_python_default "${PARAVIEW_PYTHONPATH}")
-else ()
-  set(_psi_python_default "${CMAKE_INSTALL_LIBDIR}/python3/site-packages")
-endif ()
-set(PSI_PYTHON_DESTINATION "${_psi_python_default}" CACHE STRING
-  "Where the Python package psivolume is installed, relative to the prefix")
+# The Python package (Python/psivolume) at PSI_PYTHON_DESTINATION (CMakeLists.txt).
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/Python/psivolume"
   DESTINATION "${PSI_PYTHON_DESTINATION}"
   COMPONENT   runtime

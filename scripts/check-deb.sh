@@ -1,22 +1,49 @@
 #!/usr/bin/env bash
 # Installs a package of scripts/build-deb.sh, checks it as a user meets it and removes it again
 # (root; changes the system while it runs):
-#   bash scripts/check-deb.sh dist/paraview-psivolume_0.1-1_amd64.deb
+#   bash scripts/check-deb.sh dist/paraview-psivolume_0.1-1~deb12_amd64.deb
+#   bash scripts/check-deb.sh --paraview 6.1 dist/paraview-psivolume_0.1-1_amd64.deb
+# (--paraview: in the Debian system that ships that ParaView, seen through a throwaway overlay,
+# as scripts/build-deb.sh --paraview builds it; the cached system is left as it was.)
+# - a fresh system: apt resolves every dependency from the archive with nothing installed
+#   (simulated with an empty dpkg status);
 # - pvpython: LoadDistributedPlugin('PsiVolume') with no path, the embedded default drawn,
 #   psivolume imported from /usr (Testing/Python/test_installed.py --by-name);
 # - pvbatch: the same script;
 # - paraview (the GUI): 'PsiVolume' in the plugin manager's list, not loaded until asked;
-# - after `apt-get remove`: none of the package's files left, paraview's files as installed.
+# - after `apt-get remove`: none of the package's files left, paraview's files as installed, and
+#   the files under /usr and /etc the same as before the installation.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-deb=$(realpath "$1")
-xvfb=(xvfb-run -a -s "-screen 0 1280x1024x24 -noreset")
+if [ "${1:-}" = --paraview ]; then
+  source "$root/scripts/lib/deb-elsewhere.sh"
+  suite=$(psi_deb_suite "${2:?--paraview takes 5.11, 5.13 or 6.1}")
+  shift 2
+  if [ -n "$suite" ]; then
+    rel=$(psi_deb_relative "${1:?usage: check-deb.sh [--paraview X] DEB}")
+    psi_deb_in_system "$suite" check-deb.sh "$rel"
+    exit 0
+  fi
+fi
+deb=$(realpath "${1:?usage: check-deb.sh [--paraview X] DEB}")
+source "$root/scripts/lib/apt.sh"  # psi_apt: one apt-get at a time, waiting for dpkg's lock
+# pvpython 5.13 and later lose buffered output when a script leaves through os._exit into a pipe.
+export PYTHONUNBUFFERED=1 DEBIAN_FRONTEND=noninteractive
+xvfb=(xvfb-run -a -n "${PSI_XVFB_DISPLAY:-99}" -s "-screen 0 1280x1024x24 -noreset")
 script="$root/Testing/Python/test_installed.py"
 work=$(mktemp -d)
-trap 'apt-get remove -y -qq paraview-psivolume >/dev/null 2>&1 || true; rm -rf "$work"' EXIT
+trap 'psi_apt "" remove -y -qq paraview-psivolume >/dev/null 2>&1 || true; rm -rf "$work"' EXIT
 cd "$work"
+# Every file under /usr and /etc but byte code (pvpython run as root writes it beside the modules).
+system_files() { find /usr /etc -xdev ! -name '*.pyc' ! -name __pycache__ | sort; }
+system_files > before.txt
+: > empty-status
+apt-get -s -o Dir::State::status="$work/empty-status" install "$deb" > fresh.txt \
+  || { tail -n 20 fresh.txt; echo "FAILED: not installable on a fresh system"; exit 1; }
+echo "ok      on a fresh system apt would install it with $(grep -c '^Inst' fresh.txt) packages," \
+  "paraview $(sed -n 's/^Inst paraview (\([^ ]*\).*/\1/p' fresh.txt) among them"
 
-apt-get install -y -qq "$deb" >/dev/null
+psi_apt "" install -y -qq "$deb" >/dev/null
 # its own files and folders (not the shared ones: /usr, /usr/lib, ParaView's plugins/)
 files=$(dpkg -L paraview-psivolume | grep -i 'psivolume\|paraview.conf')
 env -u PYTHONPATH "${xvfb[@]}" pvpython --force-offscreen-rendering "$script" --by-name --prefix /usr
@@ -33,9 +60,11 @@ env -u PYTHONPATH "${xvfb[@]}" paraview --script="$work/gui.py" --exit >/dev/nul
 grep -q '^PsiVolume .*/PsiVolume.so loaded=0$' plugins.txt || { cat plugins.txt; echo "FAILED: not in the GUI's plugin list"; exit 1; }
 echo "ok      the GUI's plugin manager lists: $(grep '^PsiVolume' plugins.txt)"
 
-apt-get remove -y -qq paraview-psivolume >/dev/null
-left=$(for f in $files; do [ -e "$f" ] && echo "$f"; done || true)
+psi_apt "" remove -y -qq paraview-psivolume >/dev/null
+left=$(for f in $files; do [ -e "$f" ] || [ -L "$f" ] && echo "$f"; done || true)
 [ -z "$left" ] || { echo "FAILED: left after removal: $left"; exit 1; }
 dpkg -V paraview python3-paraview || { echo "FAILED: paraview's files changed"; exit 1; }
-echo "ok      removed: none of its files left, paraview's files as installed"
+system_files > after.txt
+diff before.txt after.txt || { echo "FAILED: files under /usr or /etc differ from before"; exit 1; }
+echo "ok      removed: none of its files left, paraview's files as installed, /usr and /etc as before"
 echo "check-deb: passed"

@@ -7,11 +7,17 @@
 # stamps cannot tell one checkout's older sources from another's: objects of a newer checkout
 # were taken as up to date), kept between runs and never mixed with the host's build/.
 #   bash scripts/in-system.sh trixie bash scripts/test.sh
+#   bash scripts/in-system.sh --throwaway trixie bash scripts/check-deb.sh dist/...deb
+# --throwaway: the system is seen through an overlay whose changes are discarded when the command
+# ends (packages installed, files written), except /root/psi-build, which is the system's own:
+# the cached system stays exactly as it was, the builds are kept.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-suite=${1:?usage: in-system.sh SUITE COMMAND [ARG...]}
+throwaway=0
+if [ "${1:-}" = --throwaway ]; then throwaway=1; shift; fi
+suite=${1:?usage: in-system.sh [--throwaway] SUITE COMMAND [ARG...]}
 shift
-[ "$#" -gt 0 ] || { echo "usage: in-system.sh SUITE COMMAND [ARG...]" >&2; exit 2; }
+[ "$#" -gt 0 ] || { echo "usage: in-system.sh [--throwaway] SUITE COMMAND [ARG...]" >&2; exit 2; }
 sys=$(bash "$root/scripts/debian-system.sh" "$suite")
 shared=$(cd "$root/.." && pwd)/shared
 # The system's resolver and host names are the machine's: apt inside needs the resolver, and a
@@ -19,14 +25,26 @@ shared=$(cd "$root/.." && pwd)/shared
 # client/server test (a Debian installed on a machine lists its own name in /etc/hosts).
 cp -L /etc/resolv.conf "$sys/etc/resolv.conf"
 cp -L /etc/hosts "$sys/etc/hosts"
-mkdir -p "$sys/psi/src" "$sys/psi/shared"
+mkdir -p "$sys/psi/src" "$sys/psi/shared" "$sys/root/psi-build"
 args=$(printf '%q ' "$@")
 # X display numbers of this system's Xvfb servers: apart from the host's (99 up) and the other
 # systems', since X's abstract sockets are shared across chroots.
 checkout=$(printf '%s' "$root" | md5sum | cut -c1-12)
 case "$suite" in bookworm) xvfb=200 ;; trixie) xvfb=300 ;; sid) xvfb=400 ;; *) xvfb=500 ;; esac
-exec unshare --mount --propagation private -- bash -euo pipefail -c '
-  sys=$1 root=$2 shared=$3 args=$4 xvfb=$5 checkout=$6
+overlay=""
+if [ "$throwaway" = 1 ]; then
+  overlay=$(mktemp -d "${TMPDIR:-/var/tmp}/psi-overlay.XXXXXX")
+  trap 'rm -rf "$overlay"' EXIT
+fi
+unshare --mount --propagation private -- bash -euo pipefail -c '
+  sys=$1 root=$2 shared=$3 args=$4 xvfb=$5 checkout=$6 overlay=$7
+  if [ -n "$overlay" ]; then
+    mkdir "$overlay/upper" "$overlay/work" "$overlay/root"
+    mount -t overlay overlay \
+      -o "lowerdir=$sys,upperdir=$overlay/upper,workdir=$overlay/work" "$overlay/root"
+    mount --bind "$sys/root/psi-build" "$overlay/root/root/psi-build"
+    sys=$overlay/root
+  fi
   mount -t proc proc "$sys/proc"
   mount -t tmpfs -o mode=1777 shm "$sys/dev/shm"
   mount --bind "$root" "$sys/psi/src"
@@ -38,4 +56,4 @@ exec unshare --mount --propagation private -- bash -euo pipefail -c '
     PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin CI="${CI:-}" \
     PSI_BUILD_DIR="/root/psi-build/$checkout" PSI_XVFB_DISPLAY="$xvfb" \
     bash -c "cd /psi/src && exec $args"
-' in-system "$sys" "$root" "$shared" "$args" "$xvfb" "$checkout"
+' in-system "$sys" "$root" "$shared" "$args" "$xvfb" "$checkout" "$overlay"

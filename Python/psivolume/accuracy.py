@@ -268,11 +268,13 @@ def errors(img, ref):
 
 def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
            paraview_mappers=PARAVIEW_MAPPERS, title=None, paraview_timeout=120, budget=300.0,
-           resample_dims=RESAMPLE_DIMS):
+           resample_dims=RESAMPLE_DIMS, progress=None):
     """Renders the active (or given) view's volume with every method and mapper, the
     interactive image of 'Psi Volume' and 'Resample To Image' at each of `resample_dims`,
     measures each image against the exact reference at the same view, prints the table and
-    writes out_dir/report.md, accuracy.png and methods.png. Returns the rows as dicts."""
+    writes out_dir/report.md, accuracy.png and methods.png. Returns the rows as dicts.
+    `progress(fraction, step)`, when given, is told each step (psivolume.progress.Progress)."""
+    step = progress or (lambda fraction, text: None)
     view = view or simple.GetActiveView()
     src = src or simple.GetActiveSource()
     rep = rep or simple.GetDisplayProperties(src, view)
@@ -281,22 +283,34 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
     saved_mode = rep.GetProperty("InteractionMode").GetData()
     with tempfile.TemporaryDirectory(prefix="psi_accuracy_") as work:
         simple.Render(view)
+        step(0.0, "the mesh and the scene")
         cap = Capture(view, rep, src, work)
         if rep.Representation != "Psi Volume":
             rep.SetRepresentationType("Psi Volume")
         simple.Render(view)
+        step(0.05, "the exact reference")
         refs, ref_seconds = reference_image(cap)
         ref = refs[0]
         method = rep.GetProperty("IntegrationMethod").GetData()
         methods = list(rep.GetProperty("IntegrationMethod").Available)
+        step(0.2, "the images of 'Psi Volume'")
         psi, images = psi_contenders(cap, methods)
         live, images[INTERACTIVE], build, live_note = interactive_contender(cap, method)
+        step(0.3, "ParaView's mappers")
         pv, pv_images, once = paraview_contenders(cap, paraview_mappers, paraview_timeout,
                                                   resample_dims)
         images.update(pv_images)
         once[INTERACTIVE] = build
+        step(0.4, "timing rounds")
+        started = time.perf_counter()
+
+        def log(message):
+            print("  " + message, flush=True)
+            spent = (time.perf_counter() - started) / max(budget, 1e-3)
+            step(0.4 + 0.55 * min(spent, 1.0), "timing rounds")
+
         timed = timing.interleaved(psi + [live] + pv, BASELINE, frames=frames, budget=budget,
-                                   min_rounds=5, log=lambda m: print("  " + m, flush=True))
+                                   min_rounds=5, log=log)
         rows = []
         for c in psi + [live] + pv:
             note = timed.notes[c.name] or (live_note if c is live else "")
@@ -316,7 +330,9 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
                 rounds=timed.rounds, converged=timed.converged,
                 threads=os.environ.get("LP_NUM_THREADS", "all"), interactive_method=method)
     print(accuracy_plots.table_text(rows, info))
+    step(0.95, "the plots")
     accuracy_plots.write_all(rows, ref, info, out_dir)
+    step(1.0, "done")
     return [{k: v for k, v in r.items() if k != "image"} for r in rows]
 
 

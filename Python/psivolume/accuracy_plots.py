@@ -116,29 +116,66 @@ def _spread(targets, gap):
     return pos
 
 
-def _style(name):
+# matplotlib's "tab10" colors (RGB 0..1), for the methods of 'Psi Volume'.
+TAB10 = [(0.122, 0.467, 0.706), (1.0, 0.498, 0.055), (0.173, 0.627, 0.173),
+         (0.839, 0.153, 0.157), (0.580, 0.404, 0.741), (0.549, 0.337, 0.294),
+         (0.890, 0.467, 0.761), (0.498, 0.498, 0.498), (0.737, 0.741, 0.133),
+         (0.090, 0.745, 0.812)]
+NAMED_COLORS = dict(black=(0.0, 0.0, 0.0), dimgray=(0.412, 0.412, 0.412),
+                    darkorange=(1.0, 0.549, 0.0), crimson=(0.863, 0.078, 0.235))
+
+
+def point_style(name):
+    """How a row's point is drawn (here and in the GUI's chart, psivolume.gui): (marker, RGB,
+    area in square points, matplotlib's scatter size). ParaView's mappers in black and gray
+    squares and diamonds, the interactive image an orange cross, the reference a red star, each
+    method of 'Psi Volume' a color of its own, a circle without adaptive sampling and a triangle
+    with it."""
     if name.startswith("ParaView Resample"):
-        return dict(marker="D", color="dimgray")
+        return "diamond", NAMED_COLORS["dimgray"], 36
     if name.startswith("ParaView"):
-        return dict(marker="s", color="black")
+        return "square", NAMED_COLORS["black"], 36
     if name.endswith("(interactive)"):
-        return dict(marker="P", color="darkorange", s=70)
+        return "cross", NAMED_COLORS["darkorange"], 70
     if name.startswith("Exact"):
-        return dict(marker="*", color="crimson", s=120)
+        return "star", NAMED_COLORS["crimson"], 120
     base = name.replace(" + adaptive", "")
-    palette = plt.get_cmap("tab10")
-    color = palette(sum(map(ord, base)) % 10)
-    return dict(marker="^" if "adaptive" in name else "o", color=color)
+    color = TAB10[sum(map(ord, base)) % 10]
+    return ("triangle" if "adaptive" in name else "circle"), color, 36
+
+
+MPL_MARKERS = dict(diamond="D", square="s", cross="P", star="*", triangle="^", circle="o")
+
+
+def _style(name):
+    marker, color, area = point_style(name)
+    return dict(marker=MPL_MARKERS[marker], color=color, s=area)
+
+
+def plotted(rows):
+    """The rows of the error-against-time plot: those with a frame time and an error."""
+    return [r for r in rows if r["spf"] is not None and not math.isnan(r["spf"])
+            and not math.isnan(r["mean"])]
+
+
+def error_floor(pts):
+    """Where an error of 0 (the reference against itself) is drawn on the logarithmic axis: a
+    third of the smallest other error."""
+    positive = [r["mean"] for r in pts if r["mean"] > 0] or [1.0]
+    return min(positive) / 3.0
+
+
+def point_label(r):
+    return r["name"] + (" (error 0)" if r["mean"] == 0 else "")
 
 
 def plot_accuracy(rows, info, path):
     """Mean error against seconds per frame, both logarithmic; labels in a column to the right of
     the axes, in the order of their points and joined to them, so that none overlap."""
-    pts = [r for r in rows if r["spf"] is not None and not math.isnan(r["mean"])]
+    pts = plotted(rows)
     if not HAVE_MATPLOTLIB:
         return _fallback_scatter(pts, path)
-    positive = [r["mean"] for r in pts if r["mean"] > 0] or [1.0]
-    floor = min(positive) / 3.0
+    floor = error_floor(pts)
     fig, ax = plt.subplots(figsize=(8.6, 0.26 * len(pts) + 2.2))
     fig.subplots_adjust(left=0.1, right=0.56, top=0.9, bottom=0.12)
     for r in pts:
@@ -166,8 +203,7 @@ def plot_accuracy(rows, info, path):
                for r in order]
     slots = _spread(targets, min(0.9 / max(len(order), 1), 0.07))
     for r, y in zip(order, slots):
-        label = r["name"] + (" (error 0)" if r["mean"] == 0 else "")
-        ax.annotate(label, xy=(r["spf"], max(r["mean"], floor)), xycoords="data",
+        ax.annotate(point_label(r), xy=(r["spf"], max(r["mean"], floor)), xycoords="data",
                     xytext=(1.04, y), textcoords="axes fraction", fontsize=8, va="center",
                     arrowprops=dict(arrowstyle="-", color="0.6", lw=0.6, shrinkA=0, shrinkB=3))
     fig.savefig(path, dpi=90)

@@ -22,11 +22,24 @@ PLOT3D = {
 NAMED_FILES = {"spx": ("spx.vtk", "scalars")}
 
 
+def loaded_plugin():
+    """The file of the PsiVolume plugin this process has loaded, or None."""
+    info = servermanager.vtkSMProxyManager.GetProxyManager().GetPluginManager() \
+        .GetLocalInformation()
+    for i in range(info.GetNumberOfPlugins() if info else 0):
+        if info.GetPluginName(i) == "PsiVolume" and info.GetPluginLoaded(i):
+            return info.GetPluginFileName(i)
+    return None
+
+
 def find_plugin():
-    """Path of the plugin (PSI_PLUGIN overrides): the installed one when this package is installed
-    (`cmake --install` adds installed_paths.py), else the checkout's build."""
+    """Path of the plugin (PSI_PLUGIN overrides): the one this process has loaded (the GUI's, say),
+    else the installed one when this package is installed (`cmake --install` adds
+    installed_paths.py), else the checkout's build."""
     if os.environ.get("PSI_PLUGIN"):
         return os.environ["PSI_PLUGIN"]
+    if loaded_plugin():
+        return loaded_plugin()
     try:
         from . import installed_paths
         return os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),

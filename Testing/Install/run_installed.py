@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """PsiPython.installed: `cmake --install BUILD --prefix TMP` into a temporary prefix, the files a
-packager gets checked, then Testing/Python/test_installed.py run by pvpython against that tree
-with PYTHONPATH naming only the installed package (no checkout, no PSI_* overrides)."""
+packager gets checked; then `import psivolume` after loading the installed plugin with no
+PYTHONPATH (Testing/Python/test_gui_report.py --import-only), and Testing/Python/test_installed.py
+run by pvpython against that tree with PYTHONPATH naming only the installed package (no checkout,
+no PSI_* overrides)."""
 import argparse
 import os
 import shutil
@@ -42,10 +44,18 @@ def run(args, prefix):
         return 1
     env = {k: v for k, v in os.environ.items()
            if not k.startswith("PSI_") and k != "PYTHONPATH"}
-    env["PYTHONPATH"] = os.path.join(prefix, args.python_dir)
+    package_dir = os.path.join(prefix, args.python_dir)
+    # `import psivolume` after LoadPlugin with no PYTHONPATH: the installed plugin puts the
+    # installed package's folder on sys.path (this prefix's is not ParaView's)
+    script = os.path.join(HERE, "..", "Python", "test_gui_report.py")
+    plugin = os.path.join(prefix, args.plugins_dir, "PsiVolume", "PsiVolume.so")
+    imported = subprocess.run([args.pvpython, "--force-offscreen-rendering", script, "--plugin",
+                               plugin, "--package-dir", package_dir, "--import-only"],
+                              env=env, cwd=prefix).returncode
+    env["PYTHONPATH"] = package_dir
     script = os.path.join(HERE, "..", "Python", "test_installed.py")
     return subprocess.run([args.pvpython, "--force-offscreen-rendering", script,
-                           "--prefix", prefix], env=env, cwd=prefix).returncode
+                           "--prefix", prefix], env=env, cwd=prefix).returncode or imported
 
 
 if __name__ == "__main__":

@@ -110,3 +110,42 @@ def check_interaction(expected):
     except Exception as e:  # noqa: BLE001 - any error is a failed check, said as such
         _say(sys.__stderr__, "PsiGUICheck FAILED: interaction: %r" % (e,))
         return False
+
+
+def check_report(source):
+    """Whether the accuracy report (the plugin's 'Accuracy report' action) on the source named
+    `source` showed its rows: a layout 'Accuracy report: <source>' holding a spreadsheet view of
+    the table whose first column ('1 method') names every method of 'Psi Volume' (adaptive sampling off
+    and on), the interactive image and the exact reference, in the report's order, and a point
+    chart with a series per row. Prints "PsiGUICheck passed:" or "PsiGUICheck FAILED", as check does."""
+    try:
+        from paraview import servermanager, simple
+
+        src = simple.FindSource(source)
+        rep = [servermanager.GetRepresentation(src, v) for v in simple.GetRenderViews()][0]
+        methods = list(rep.GetProperty("IntegrationMethod").Available)
+        expected = [n for m in methods for n in (m, m + " + adaptive")] + [
+            "Psi Volume (interactive)", "Exact reference (CPU)"]
+        name = "Accuracy report: " + source
+        layout = simple.GetLayoutByName(name)
+        table = simple.FindSource(name)
+        if layout is None or table is None:
+            raise RuntimeError("no layout or table '%s'" % name)
+        column = servermanager.Fetch(table).GetColumnByName("1 method")
+        names = [column.GetValue(i) for i in range(column.GetNumberOfValues())]
+        if names != expected or len(expected) != 16:
+            raise RuntimeError("the table's rows are %s, not %s" % (names, expected))
+        kinds = sorted(v.GetXMLName() for v in simple.GetViewsInLayout(layout))
+        if kinds != ["SpreadSheetView", "XYPointChartView"]:
+            raise RuntimeError("the layout holds %s" % kinds)
+        chart = [v for v in simple.GetViewsInLayout(layout) if v.GetXMLName() != "SpreadSheetView"]
+        series = list(simple.GetDisplayProperties(
+            simple.FindSource(name + " (error against time)"), chart[0]).SeriesVisibility)
+        if len(series) != len(expected):
+            raise RuntimeError("the chart shows the series %s" % series)
+        _say(sys.__stdout__,
+             "PsiGUICheck passed: the report's table names its %d rows" % len(names))
+        return True
+    except Exception as e:  # noqa: BLE001 - any error is a failed check, said as such
+        _say(sys.__stderr__, "PsiGUICheck FAILED: accuracy report: %r" % (e,))
+        return False
