@@ -9,19 +9,19 @@ pieces and after RedistributeDataSet. The interactive image is read from the ren
 screenshot would be a still render); ParaView's interactive image reduction is set to 1 so that
 both images have the full resolution.
 
-Each rank probes its piece on ONE lattice spanned over the whole mesh (ParaView's ordered-
-compositing cuts give its box to every rank) and draws only its piece's box (cropping): its ray
-samples are then exactly the serial ray's samples that fall in that box. The pieces need not end at
-the cuts: on ParaView 6.1 the slab, cut at x = 0, comes as [-16, -1] and [-1, 16] (cropped to the
-cuts instead: mean 0.767/255, max 70/255, a slab a cell wide missing). Residual differences against
-the serial image: the partial images are composited as 8-bit premultiplied colors (as for the still
-frame, test_mpi.py: measured there 0.08/255 mean), and between the last lattice point before the
-seam and the seam a rank interpolates towards a value it may not hold (the neighbour's cells), then
-the nearest one inside its box; and at the silhouette, a ray that grazes the lattice's box takes
-one sample more or fewer where the parallel box (spanned over the union of the cuts) differs from
-the serial one by a rounding, one sample per lattice spacing being up to about 14/255 there.
-Measured: mean |diff| 0.071/255, max 7/255 on ParaView 5.11 (the pixels above 4/255 on the box's
-silhouette edges), 0.075/255 and 9/255 on 6.1, for both data distributions; through pvserver
+Each rank probes its piece on ONE lattice spanned over the whole mesh (ParaView's
+ordered-compositing cuts give its box to every rank) and draws only its piece's box (cropping): its
+ray samples are then exactly the serial ray's samples that fall in that box. The pieces need not
+end at the cuts: on ParaView 6.1 the slab, cut at x = 0, comes as [-16, -1] and [-1, 16] (cropped
+to the cuts instead: mean 0.767/255, max 70/255, a slab a cell wide missing). Residual differences
+against the serial image: the partial images are composited as 8-bit premultiplied colors (as for
+the still frame, test_mpi.py: measured there 0.08/255 mean), and between the last lattice point
+before the seam and the seam a rank interpolates towards a value it may not hold (the neighbour's
+cells), then the nearest one inside its box; and at the silhouette, a ray that grazes the lattice's
+box takes one sample more or fewer where the parallel box (spanned over the union of the cuts)
+differs from the serial one by a rounding, one sample per lattice spacing being up to about 14/255
+there. Measured: mean |diff| 0.071/255, max 7/255 on ParaView 5.11 (the pixels above 4/255 on the
+box's silhouette edges), 0.075/255 and 9/255 on 6.1, for both data distributions; through pvserver
 (test_pvserver.py) mean 0.11/255, max 10-14/255. Before the common lattice (each rank on its own
 lattice over its piece's bounds): mean 0.196/255, the seam visible.
 
