@@ -80,23 +80,23 @@ vtkSmartPointer<vtkImageData> LatticeImage(const Lattice& l)
   return image;
 }
 
-// In parallel, the lattice points beyond this process's cut that its piece does not cover (the
-// neighbour holds their cells) take the value of the nearest point inside the cut, instead of
-// hiding the last lattice cell before the cut (a seam); the cropping draws nothing beyond the
-// cut, so these values only shape the interpolation between the last point and the cut.
-void FillBeyondCut(vtkImageData* image, const char* maskName, const double cut[6])
+// In parallel, the lattice points beyond this process's box that its piece does not cover (the
+// neighbour holds their cells) take the value of the nearest point inside the box, instead of
+// hiding the last lattice cell before the box's face (a seam); the cropping draws nothing beyond
+// the box, so these values only shape the interpolation between the last point and the face.
+void FillBeyondBox(vtkImageData* image, const char* maskName, const double box[6])
 {
   vtkPointData* pd = image->GetPointData();
   vtkDataArray* mask = pd->GetArray(maskName);
   const int* ext = image->GetExtent();
   const double* o = image->GetOrigin();
   const double* h = image->GetSpacing();
-  int in[6]; // the extent of the points inside the cut
+  int in[6]; // the extent of the points inside the box
   for (int k = 0; k < 3; ++k)
   {
-    in[2 * k] = std::max(ext[2 * k], static_cast<int>(std::ceil((cut[2 * k] - o[k]) / h[k])));
+    in[2 * k] = std::max(ext[2 * k], static_cast<int>(std::ceil((box[2 * k] - o[k]) / h[k])));
     in[2 * k + 1] =
-      std::min(ext[2 * k + 1], static_cast<int>(std::floor((cut[2 * k + 1] - o[k]) / h[k])));
+      std::min(ext[2 * k + 1], static_cast<int>(std::floor((box[2 * k + 1] - o[k]) / h[k])));
     if (!mask || in[2 * k] > in[2 * k + 1])
     {
       return;
@@ -180,7 +180,7 @@ vtkSmartPointer<vtkDataSet> LODSource(vtkDataSet* piece, const LODArrays& arrays
 bool LODRegion::operator==(const LODRegion& o) const
 {
   return Parallel == o.Parallel && std::equal(Global, Global + 6, o.Global) &&
-    std::equal(Cut, Cut + 6, o.Cut);
+    std::equal(Box, Box + 6, o.Box);
 }
 
 LODImage ResampleForLOD(vtkDataSet* source, const LODArrays& arrays, const LODRegion& region,
@@ -204,7 +204,7 @@ LODImage ResampleForLOD(vtkDataSet* source, const LODArrays& arrays, const LODRe
   lod.Image->ShallowCopy(probe->GetOutput());
   if (region.Parallel)
   {
-    FillBeyondCut(lod.Image, probe->GetValidPointMaskArrayName(), region.Cut);
+    FillBeyondBox(lod.Image, probe->GetValidPointMaskArrayName(), region.Box);
   }
   BlankOutside(lod.Image, probe->GetValidPointMaskArrayName());
   BlankNonFinite(lod.Image, arrays);

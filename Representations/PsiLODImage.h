@@ -5,8 +5,8 @@
 // Samples whose scalar is not finite are hidden, as 'Psi Volume' skips the cells that hold one.
 //
 // In parallel (ordered compositing) every process probes its piece on one lattice, spanned over
-// the whole mesh's bounds, and draws only its own region of it (PsiVolumeLOD crops the ray
-// caster to ParaView's cut): its ray samples are then the serial ray's samples inside its cut
+// the whole mesh's bounds, and draws only its piece's box of it (PsiVolumeLOD crops the ray
+// caster to it): its ray samples are then the serial ray's samples inside that box
 // (docs/decisions.md, "Interaction").
 //
 // ResampleForLOD reads only the source it is given, so it may run on a thread of its own.
@@ -37,13 +37,13 @@ struct LODArrays
 };
 
 /// Where the lattice lies: spanned over `Global` (the whole mesh's bounds), and this process's
-/// share of it, `Cut` (the box it draws: its piece's bounds), when `Parallel`. Serially the
+/// share of it, `Box` (the box it draws: its piece's bounds), when `Parallel`. Serially the
 /// lattice spans the piece's own bounds and no region is given.
 struct LODRegion
 {
   bool Parallel = false;
   double Global[6] = { 0, 0, 0, 0, 0, 0 };
-  double Cut[6] = { 0, 0, 0, 0, 0, 0 };
+  double Box[6] = { 0, 0, 0, 0, 0, 0 };
   bool operator==(const LODRegion& o) const;
 };
 

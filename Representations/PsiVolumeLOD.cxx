@@ -178,14 +178,14 @@ void PsiVolumeLOD::Install(const psi::LODImage& lod, const Key& key, double seco
   this->LastBuildSeconds = seconds;
 }
 
-// In parallel each process draws only its cut: the neighbours' images abut there, as ordered
-// compositing requires, and no lattice cell is drawn twice.
+// In parallel each process draws only its piece's box: the neighbours' images abut there, as
+// ordered compositing requires.
 void PsiVolumeLOD::Crop(const Region& region)
 {
   this->Mapper->SetCropping(region.Parallel ? 1 : 0);
   if (region.Parallel)
   {
-    this->Mapper->SetCroppingRegionPlanes(const_cast<double*>(region.Cut));
+    this->Mapper->SetCroppingRegionPlanes(const_cast<double*>(region.Box));
     this->Mapper->SetCroppingRegionFlagsToSubVolume();
   }
 }

@@ -51,8 +51,6 @@ public:
     int resolution = DefaultResolution);
   /// Takes the image of a finished Request; true when the image changed.
   bool Poll();
-  /// Whether a Request's build runs.
-  bool IsBuilding() const { return this->Job != nullptr; }
   /// The mapper that draws the image (its input set by Update or Poll).
   vtkSmartVolumeMapper* GetMapper() const { return this->Mapper; }
   /// Whether there is an image to draw.

@@ -57,7 +57,7 @@ PsiVolumeLOD::Region LatticeRegion(vtkPVRenderView* view, vtkDataSet* piece)
   region.Parallel = own.IsValid() && all.IsValid() && piece;
   if (region.Parallel)
   {
-    piece->GetBounds(region.Cut);
+    piece->GetBounds(region.Box);
   }
   all.GetBounds(region.Global);
   return region;
@@ -174,13 +174,13 @@ bool vtkPsiVolumeRepresentation::UpdateVolumeLOD(vtkInformation* inInfo, vtkPVRe
   this->LOD->Poll();
   const bool background = !region.Parallel &&
     this->PsiMapper->GetSettings().InteractionMode == psi::InteractionModes::Auto;
-  if (background && !this->LOD->IsCurrent(piece, arrays, region))
-  {
-    this->LOD->Request(piece, arrays, region);
-    return false;
-  }
   if (!this->LOD->IsCurrent(piece, arrays, region))
   {
+    if (background)
+    {
+      this->LOD->Request(piece, arrays, region);
+      return false;
+    }
     this->SetProgressText("Psi Volume: interactive level of detail");
     this->UpdateProgress(0.0);
     this->LOD->Update(piece, arrays, region);

@@ -235,8 +235,8 @@ MUTATIONS = [
              "  this->Mapper->SetCropping(region.Parallel ? 1 : 0);",
              "  this->Mapper->SetCropping(0);", ["PsiPython.mpi_lod"]),
     Mutation("lod_rank_beyond_cut_hidden", "Representations/PsiLODImage.cxx",
-             "  if (region.Parallel)\n  {\n    FillBeyondCut(",
-             "  if (false)\n  {\n    FillBeyondCut(", ["PsiPython.mpi_lod"]),
+             "  if (region.Parallel)\n  {\n    FillBeyondBox(",
+             "  if (false)\n  {\n    FillBeyondBox(", ["PsiPython.mpi_lod"]),
     # --- The driver's buffer limits (Representations/PsiMeshBuffers.cxx, PsiComputeProjector.cxx).
     Mutation("texture_buffer_limit_unchecked", "Representations/PsiMeshBuffers.cxx",
              "if (static_cast<long long>(this->Mesh.NumberOfPoints()) > maxTexels ||",
