@@ -23,12 +23,14 @@ NAMED_FILES = {"spx": ("spx.vtk", "scalars")}
 
 
 def loaded_plugin():
-    """The file of the PsiVolume plugin this process has loaded, or None."""
+    """The file of the PsiVolume plugin this process has loaded, or None. Resolved: ParaView
+    reports the path as its plugin list spelled it (/usr/bin/../lib/..., or a link of the
+    directory of other packages' plugins)."""
     info = servermanager.vtkSMProxyManager.GetProxyManager().GetPluginManager() \
         .GetLocalInformation()
     for i in range(info.GetNumberOfPlugins() if info else 0):
         if info.GetPluginName(i) == "PsiVolume" and info.GetPluginLoaded(i):
-            return info.GetPluginFileName(i)
+            return os.path.realpath(info.GetPluginFileName(i))
     return None
 
 
