@@ -10,7 +10,8 @@
 # - pvpython: LoadDistributedPlugin('PsiVolume') with no path, the embedded default drawn,
 #   psivolume imported from /usr (Testing/Python/test_installed.py --by-name);
 # - pvbatch: the same script;
-# - paraview (the GUI): 'PsiVolume' in the plugin manager's list, not loaded until asked;
+# - paraview (the GUI): 'PsiVolume' in the plugin manager's list, not loaded until asked; its
+#   'Auto Load' ticked in Tools > Manage Plugins loads it at the next start;
 # - after `apt-get remove`: none of the package's files left, paraview's files as installed, and
 #   the files under /usr and /etc the same as before the installation.
 set -euo pipefail
@@ -48,17 +49,28 @@ psi_apt "" install -y -qq "$deb" >/dev/null
 files=$(dpkg -L paraview-psivolume | grep -i 'psivolume\|paraview.conf')
 env -u PYTHONPATH "${xvfb[@]}" pvpython --force-offscreen-rendering "$script" --by-name --prefix /usr
 env -u PYTHONPATH "${xvfb[@]}" pvbatch --force-offscreen-rendering "$script" --by-name --prefix /usr
-cat > gui.py <<'PY'
-from paraview import servermanager
-info = servermanager.vtkSMProxyManager.GetProxyManager().GetPluginManager().GetLocalInformation()
-with open("plugins.txt", "w") as out:
-    for i in range(info.GetNumberOfPlugins()):
-        out.write("%s %s loaded=%d\n" % (info.GetPluginName(i), info.GetPluginFileName(i),
-                                         info.GetPluginLoaded(i)))
-PY
-env -u PYTHONPATH "${xvfb[@]}" paraview --script="$work/gui.py" --exit >/dev/null 2>&1 || true
-grep -q '^PsiVolume .*/PsiVolume.so loaded=0$' plugins.txt || { cat plugins.txt; echo "FAILED: not in the GUI's plugin list"; exit 1; }
+# The GUI, in a throwaway home (root's ParaView settings stay as they were): the plugin
+# manager's list has PsiVolume, not loaded; Tools > Manage Plugins, its 'Auto Load' ticked in the
+# dialog by a test script (scripts/lib/autoload-plugin.xml), then at the next start it is loaded
+# and 'Psi Volume' is a representation. A client left in a dialog by a failed event is killed.
+mkdir home
+gui() { env -u PYTHONPATH HOME="$work/home" XDG_CONFIG_HOME="$work/home/.config" "${xvfb[@]}" \
+  timeout 90 paraview "$@" --exit > gui.log 2>&1; }
+gui_list() {  # loaded=$1, 'Psi Volume' a representation: $2, or fails saying $3
+  rm -f plugins.txt; gui --script="$root/scripts/lib/gui_plugins.py" || true
+  grep -q "^PsiVolume .*/PsiVolume.so loaded=$1$" plugins.txt \
+    && grep -q "^representation 'Psi Volume': $2$" plugins.txt \
+    || { cat plugins.txt gui.log; echo "FAILED: $3"; exit 1; }
+}
+gui_list 0 no "not in the GUI's plugin list, or loaded before it is asked"
 echo "ok      the GUI's plugin manager lists: $(grep '^PsiVolume' plugins.txt)"
+read -r row child < tree.txt
+sed "s/@ROW@/$row/g; s/@CHILD@/$child/g" "$root/scripts/lib/autoload-plugin.xml" > autoload.xml
+gui --test-script="$work/autoload.xml" && ! grep -E "Couldn't find|Failed to|FAILED|Unhandled" gui.log \
+  || { cat gui.log; echo "FAILED: Tools > Manage Plugins could not tick PsiVolume's Auto Load"; exit 1; }
+gui_list 1 yes "not loaded at the start after Auto Load was ticked in Tools > Manage Plugins"
+echo "ok      Auto Load ticked in Tools > Manage Plugins: at the next start $(grep '^PsiVolume' plugins.txt)," \
+  "'Psi Volume' a representation"
 
 psi_apt "" remove -y -qq paraview-psivolume >/dev/null
 left=$(for f in $files; do [ -e "$f" ] || [ -L "$f" ] && echo "$f"; done || true)
