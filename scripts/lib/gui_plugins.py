@@ -3,11 +3,11 @@ plugins.txt, one line per plugin of the client's plugin list ("NAME FILE loaded=
 line saying whether 'Psi Volume' is among the representations of a tetrahedral mesh, and
 tree.txt: where the PsiVolume entry and its 'Auto Load' row are in the tree of Tools > Manage
 Plugins, as "ROW CHILD" (QtTesting's indices, for scripts/lib/autoload-plugin.xml).
-Where the rows are is ParaView's pqPluginDialog (populatePluginTree, addInfoNodes): one
-top-level row per plugin, in the list's order up to 5.11 and sorted by name from 5.13; under it
-Version, Description (when not empty), Location, Required Plugins, Status, then Auto Load. The
-test script checks both labels before it ticks, so a wrong guess fails rather than ticks
-another row."""
+Where the rows are is ParaView's pqPluginDialog (setupTreeWidget, populatePluginTree,
+addInfoNodes): one row per plugin; under it Version, Description (when not empty), Location,
+Required Plugins, Status, Auto Load (and Delayed Load from 5.13); in the order they were added
+up to 5.11, sorted by name at both levels from 5.13. The test script checks both labels before
+it ticks, so a wrong guess fails rather than ticks another row."""
 from paraview import simple
 from paraview.servermanager import vtkSMProxyManager as pxm
 
@@ -20,10 +20,12 @@ with open("plugins.txt", "w") as out:
     domain = rep.GetProperty("Representation").SMProperty.GetDomain("list")
     names = [domain.GetString(k) for k in range(domain.GetNumberOfStrings())]
     out.write("representation 'Psi Volume': %s\n" % ("yes" if "Psi Volume" in names else "no"))
-if (pxm.GetVersionMajor(), pxm.GetVersionMinor()) >= (5, 13):
-    plugins.sort()
-rows = [i for _, i in plugins]
 psi = [i for name, i in plugins if name == "PsiVolume"]
 if psi:
+    rows = ["Version"] + (["Description"] if info.GetDescription(psi[0]) else []) + \
+        ["Location", "Required Plugins", "Status", "Auto Load"]
+    if (pxm.GetVersionMajor(), pxm.GetVersionMinor()) >= (5, 13):
+        plugins.sort()
+        rows = sorted(rows + ["Delayed Load"])
     with open("tree.txt", "w") as out:
-        out.write("%d %d\n" % (rows.index(psi[0]), 5 if info.GetDescription(psi[0]) else 4))
+        out.write("%d %d\n" % ([i for _, i in plugins].index(psi[0]), rows.index("Auto Load")))
