@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Makes (once) and prints the directory of a minimal Debian system of SUITE (bookworm: ParaView
-# 5.11; trixie: 5.13; sid: 6.1), with git, in which scripts/in-system.sh runs the project's commands.
+# 5.11; trixie: 5.13; sid: 6.1), with git, in which scripts/in-system.sh runs the project's
+# commands.
 # The archive is the one this machine's apt uses. Systems are cached under $PSI_SYSTEMS_DIR
 # (default /var/cache/psivolume/systems) and reused; delete a directory there to make it anew.
 #   bash scripts/debian-system.sh trixie

@@ -5,9 +5,10 @@
 # with PSI_SYSTEMS_DIR there), the check's own tools installed (xvfb, xauth: only those), then
 # check-deb.sh inside it (scripts/in-system.sh), whose `apt-get install ./DEB` fetches ParaView
 # and all it depends on from the archive. The system is deleted at the end, also on failure or
-# when killed. The archives are kept in /var/cache/psivolume/debs/SUITE for the
-# next run: debootstrap's --cache-dir, linked into the system's apt cache and back.
-# Takes 4 to 6 minutes with the archives cached (2 cores), a few more the first time.
+# when killed. The archives are kept in /var/cache/psivolume/debs/SUITE for the next run:
+# debootstrap's --cache-dir, linked into the system's apt cache and back.
+# Takes 4 to 7 minutes on two busy cores (debootstrap 1, the check 3 to 5½), the archives cached
+# or not (the first run of a suite downloads 450 to 650 MiB).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 source "$root/scripts/lib/deb-elsewhere.sh"  # psi_deb_relative, suite_of (paraview-versions.sh)
@@ -24,9 +25,9 @@ cache=/var/cache/psivolume/debs/$suite
 in_system() { bash "$root/scripts/in-system.sh" "$suite" env DEBIAN_FRONTEND=noninteractive "$@"; }
 # The installed packages, as their archives are named, with their installed sizes (KiB).
 packages() {
-  dpkg-query --admindir="$sys/var/lib/dpkg" -W \
-    -f='${db:Status-Abbrev}|${Package}_${Version}_${Architecture}.deb ${Installed-Size}\n' |
-    sed -n 's/^ii *|//p' | sed 's/:/%3a/' | sort
+  local f='${db:Status-Abbrev}|${Package}_${Version}_${Architecture}.deb ${Installed-Size}\n'
+  dpkg-query --admindir="$sys/var/lib/dpkg" -W -f="$f" | sed -n 's/^ii *|//p' | sed 's/:/%3a/' |
+    sort
 }
 # link FROM TO: the archives of one directory into another, hard links (the cache and the
 # temporary directory on one disk; otherwise nothing is cached).
@@ -58,9 +59,11 @@ in_system bash scripts/check-deb.sh "$rel"
 link "$archives" "$cache"  # now, for the figure below
 # What the installation brought: all but the package itself stays after its removal.
 comm -13 "$tmp/tools.txt" <(packages) > "$tmp/new.txt"
-size=$(cut -d' ' -f1 "$tmp/new.txt" | (cd "$archives" && xargs stat -c %s) | awk '{s += $1} END {print s}')
+size=$(cut -d' ' -f1 "$tmp/new.txt" | (cd "$archives" && xargs stat -c %s) |
+  awk '{s += $1} END {print s}')
+installed=$(awk '{s += $2} END {print int(s / 1024)}' "$tmp/new.txt")
+paraview=$(dpkg-query --admindir="$sys/var/lib/dpkg" -W -f='${Version}' paraview)
 echo "fresh   the installation brought $(($(wc -l < "$tmp/new.txt") + 1)) packages, paraview" \
-  "$(dpkg-query --admindir="$sys/var/lib/dpkg" -W -f='${Version}' paraview) among them:" \
-  "$(mib "$size") MiB of archives, $(($(awk '{s += $2} END {print s}' "$tmp/new.txt") / 1024))" \
-  "MiB installed; check $((SECONDS - check)) s, in all $((SECONDS - start)) s, $(mib \
-  $(($(cached) - cache_before))) MiB downloaded (the rest from $cache)"
+  "$paraview among them: $(mib "$size") MiB of archives, $installed MiB installed;" \
+  "check $((SECONDS - check)) s, in all $((SECONDS - start)) s; archives downloaded now" \
+  "(minbase and tools too): $(mib $(($(cached) - cache_before))) MiB, the rest from $cache"
