@@ -5,6 +5,9 @@
 #   bash scripts/check-deb.sh --paraview 6.1 dist/paraview-psivolume_0.1-1_amd64.deb
 # (--paraview: in the Debian system that ships that ParaView, seen through a throwaway overlay,
 # as scripts/build-deb.sh --paraview builds it; the cached system is left as it was.)
+#   bash scripts/check-deb.sh --fresh --paraview 6.1 dist/paraview-psivolume_0.1-1_amd64.deb
+# (--fresh: in a brand-new minimal Debian system made for the check and deleted after it, apt
+# installing ParaView and all it needs from the archive: scripts/lib/check-deb-fresh.sh.)
 # - a fresh system: apt resolves every dependency from the archive with nothing installed
 #   (simulated with an empty dpkg status);
 # - pvpython: LoadDistributedPlugin('PsiVolume') with no path, the embedded default drawn,
@@ -16,6 +19,10 @@
 #   the files under /usr and /etc the same as before the installation.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+if [ "${1:-}" = --fresh ]; then
+  shift
+  exec bash "$root/scripts/lib/check-deb-fresh.sh" "$@"
+fi
 if [ "${1:-}" = --paraview ]; then
   source "$root/scripts/lib/deb-elsewhere.sh"
   suite=$(psi_deb_suite "${2:?--paraview takes 5.11, 5.13 or 6.1}")
@@ -38,6 +45,8 @@ cd "$work"
 # Every file under /usr and /etc but byte code (pvpython run as root writes it beside the modules).
 system_files() { find /usr /etc -xdev ! -name '*.pyc' ! -name __pycache__ | sort; }
 system_files > before.txt
+packages() { dpkg-query -W -f='${db:Status-Abbrev}${Package}\n' | sed -n 's/^ii *//p' | sort; }
+packages > packages-before.txt
 : > empty-status
 apt-get -s -o Dir::State::status="$work/empty-status" install "$deb" > fresh.txt \
   || { tail -n 20 fresh.txt; echo "FAILED: not installable on a fresh system"; exit 1; }
@@ -45,6 +54,8 @@ echo "ok      on a fresh system apt would install it with $(grep -c '^Inst' fres
   "paraview $(sed -n 's/^Inst paraview (\([^ ]*\).*/\1/p' fresh.txt) among them"
 
 psi_apt "" install -y -qq "$deb" >/dev/null
+system_files > installed.txt
+dpkg -L paraview-psivolume | sort > listed.txt
 # its own files and folders (not the shared ones: /usr, /usr/lib, ParaView's plugins/)
 files=$(dpkg -L paraview-psivolume | grep -i 'psivolume\|paraview.conf')
 env -u PYTHONPATH "${xvfb[@]}" pvpython --force-offscreen-rendering "$script" --by-name --prefix /usr
@@ -77,6 +88,16 @@ left=$(for f in $files; do [ -e "$f" ] || [ -L "$f" ] && echo "$f"; done || true
 [ -z "$left" ] || { echo "FAILED: left after removal: $left"; exit 1; }
 dpkg -V paraview python3-paraview || { echo "FAILED: paraview's files changed"; exit 1; }
 system_files > after.txt
-diff before.txt after.txt || { echo "FAILED: files under /usr or /etc differ from before"; exit 1; }
-echo "ok      removed: none of its files left, paraview's files as installed, /usr and /etc as before"
+# Nothing new, nothing gone but what the package listed (its folders too, when no other package
+# has them); and, when it brought no other package, all as before the installation.
+comm -23 installed.txt after.txt | comm -23 - listed.txt > changed.txt
+comm -13 installed.txt after.txt >> changed.txt
+[ ! -s changed.txt ] || { cat changed.txt; echo "FAILED: the removal changed more"; exit 1; }
+brought=$(packages | comm -13 packages-before.txt - | wc -l)
+as="as installed less its own files (the $brought packages it brought stay)"
+if [ "$brought" = 0 ]; then
+  diff before.txt after.txt || { echo "FAILED: /usr or /etc differ from before"; exit 1; }
+  as="as before"
+fi
+echo "ok      removed: none of its files left, paraview's files as installed, /usr and /etc $as"
 echo "check-deb: passed"

@@ -1,15 +1,21 @@
 #!/usr/bin/env bash
-# Makes (once) and prints the directory of a minimal Debian system of SUITE (trixie: ParaView
-# 5.13; sid: ParaView 6.1), with git, in which scripts/in-system.sh runs the project's commands.
+# Makes (once) and prints the directory of a minimal Debian system of SUITE (bookworm: ParaView
+# 5.11; trixie: 5.13; sid: 6.1), with git, in which scripts/in-system.sh runs the project's
+# commands.
 # The archive is the one this machine's apt uses. Systems are cached under $PSI_SYSTEMS_DIR
 # (default /var/cache/psivolume/systems) and reused; delete a directory there to make it anew.
 #   bash scripts/debian-system.sh trixie
+# PSI_SYSTEM_INCLUDE: the packages added to minbase, comma-separated (default git,ca-certificates;
+# empty: the bare minbase, as scripts/check-deb.sh --fresh makes it). PSI_DEB_CACHE: a directory
+# debootstrap takes the packages from and keeps those it downloads in (its --cache-dir).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 suite=${1:?usage: debian-system.sh SUITE}
 base=${PSI_SYSTEMS_DIR:-/var/cache/psivolume/systems}
 dir="$base/$suite"
-if [ -x "$dir/usr/bin/git" ]; then
+include=${PSI_SYSTEM_INCLUDE-git,ca-certificates}
+# Made in $dir.partial and renamed when complete.
+if [ -d "$dir" ]; then
   echo "$dir"
   exit 0
 fi
@@ -22,9 +28,14 @@ fi
 mirror=$(bash "$here/lib/debian-mirror.sh")
 mkdir -p "$base"
 rm -rf "$dir.partial"
-echo "[system] debootstrap --variant=minbase --include=git $suite (from this machine's apt archive)" >&2
+options=(--variant=minbase ${include:+--include="$include"})
+if [ -n "${PSI_DEB_CACHE:-}" ]; then
+  mkdir -p "$PSI_DEB_CACHE"
+  options+=(--cache-dir="$PSI_DEB_CACHE")
+fi
+echo "[system] debootstrap ${options[*]} $suite (from this machine's apt archive)" >&2
 start=$SECONDS
-if ! debootstrap --variant=minbase --include=git,ca-certificates "$suite" "$dir.partial" "$mirror" \
+if ! debootstrap "${options[@]}" "$suite" "$dir.partial" "$mirror" \
     >"$base/$suite.debootstrap.log" 2>&1; then
   tail -n 20 "$base/$suite.debootstrap.log" >&2
   echo "debian-system: debootstrap of $suite failed (log: $base/$suite.debootstrap.log)" >&2

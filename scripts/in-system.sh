@@ -28,9 +28,11 @@ cp -L /etc/hosts "$sys/etc/hosts"
 mkdir -p "$sys/psi/src" "$sys/psi/shared" "$sys/root/psi-build"
 args=$(printf '%q ' "$@")
 # X display numbers of this system's Xvfb servers: apart from the host's (99 up) and the other
-# systems', since X's abstract sockets are shared across chroots.
+# systems', since X's abstract sockets are shared across chroots; a system outside the cache
+# (check-deb.sh --fresh) 50 further on, apart from the cached one of its suite.
 checkout=$(printf '%s' "$root" | md5sum | cut -c1-12)
 case "$suite" in bookworm) xvfb=200 ;; trixie) xvfb=300 ;; sid) xvfb=400 ;; *) xvfb=500 ;; esac
+[ -z "${PSI_SYSTEMS_DIR:-}" ] || xvfb=$((xvfb + 50))
 overlay=""
 if [ "$throwaway" = 1 ]; then
   overlay=$(mktemp -d "${TMPDIR:-/var/tmp}/psi-overlay.XXXXXX")
