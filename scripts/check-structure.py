@@ -6,13 +6,17 @@
     one named function per check, and a test file past 600 lines holds more than one concept
     (its mesh builders or checkers belong in a header of their own);
   - no shader file (Shaders/*.glsl) longer than 300 lines;
-  - Filters/vtk.module does not depend on the Representations module.
+  - Filters/vtk.module does not depend on the Representations module;
+  - every XML file of the source (server-manager XML, GUI test scripts, templates) is well-formed:
+    ParaView's readers of test scripts stop, or crash, where Python's parser reports the error.
 Function bodies are found by brace matching on the source with comments and strings removed:
 a body is the braces that follow a line ending a signature `)` (or `) const`, `override`).
 Prints every violation and exits 1 when there is one."""
 import pathlib
 import re
 import sys
+import xml.dom.minidom
+from xml.parsers.expat import ExpatError
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 FOLDERS = ["Core", "Representations", "Filters", "Readers",
@@ -68,8 +72,22 @@ def functions(path):
     return found
 
 
-def main():
+def malformed_xml():
+    """The XML files of the source tree (not of build trees) that do not parse."""
     errors = []
+    for path in sorted(ROOT.rglob("*.xml")):
+        rel = path.relative_to(ROOT)
+        if rel.parts[0].startswith(("build", ".", "dist")):
+            continue
+        try:
+            xml.dom.minidom.parse(str(path))
+        except ExpatError as e:
+            errors.append("%s: not well-formed XML: %s" % (rel, e))
+    return errors
+
+
+def main():
+    errors = malformed_xml()
     for folder in FOLDERS:
         for path in sorted((ROOT / folder).glob("*.[ch]xx")) + sorted((ROOT / folder).glob("*.h")):
             rel = path.relative_to(ROOT)

@@ -479,4 +479,8 @@ MUTATIONS = [
              ["PsiPython.installed"]),
     Mutation("no_plugins_xml_installed", "CMakeLists.txt",
              '  PLUGINS_FILE_NAME "PsiVolume.plugins.xml")', "  )", ["PsiPython.installed"]),
+    # --- The project's own checks (scripts/check-structure.py).
+    Mutation("xml_comment_not_well_formed", "scripts/lib/autoload-plugin.xml",
+             "finds PsiVolume in 'Local Plugins'", "finds PsiVolume -- in 'Local Plugins'",
+             ["PsiProject.Structure"]),
 ]
