@@ -3,7 +3,8 @@
 
 # Properties, parity with 'Volume', coloring, mixed cells, narrow spikes, the benchmark's
 # reference, separate opacity, translucent geometry, the timing harness (GL-free).
-foreach (name IN ITEMS plugin_basics properties render_command vector_coloring mixed_cells
+psi_add_python_test(plugin_basics INSTALLED)
+foreach (name IN ITEMS properties render_command vector_coloring mixed_cells
     narrow_spikes isosurface_coverage benchmark_reference parity separate_opacity
     translucent_geometry timing)
   psi_add_python_test(${name})
@@ -19,7 +20,7 @@ psi_add_python_test(isosurfaces
 # The accuracy report (psivolume.accuracy) on a small scene: outputs, one row per method,
 # finite errors, the reference against itself, the 'Resample To Image' and interactive rows (at
 # small resampling sizes); the timeout allows for a loaded machine (it starts child pvpythons).
-psi_add_python_test(accuracy_report TIMEOUT 600
+psi_add_python_test(accuracy_report TIMEOUT 600 INSTALLED
   ENVIRONMENT "PSI_REFERENCE_RENDER=$<TARGET_FILE:psi_reference_render>")
 
 # Constant fields and scalar ranges that float cannot hold (denormal widths, far from 0):
@@ -31,7 +32,11 @@ psi_add_python_test(scalar_ranges TIMEOUT 300
 # so that a crash or a hang names its case.
 foreach (case IN ITEMS nontet surface cellscalars nonfinite empty degenerate quadratic multiblock
     large reader unitdistance outofrange)
-  psi_add_python_test(bad_input.${case} SCRIPT bad_input ARGS ${case} TIMEOUT 240
+  set(installed "")
+  if (case STREQUAL "reader")  # ParaView's reader factory offers the installed readers
+    set(installed INSTALLED)
+  endif ()
+  psi_add_python_test(bad_input.${case} SCRIPT bad_input ARGS ${case} TIMEOUT 240 ${installed}
     ENVIRONMENT "PSI_DATA_DIR=${PSI_DATA_DIR}")
 endforeach ()
 # More than one draw call (5.1M tetrahedra, ~15-20 s here): run alone, it is the heaviest.
@@ -40,15 +45,17 @@ set_tests_properties(PsiPython.bad_input.large PROPERTIES RUN_SERIAL ON)
 # MPI ordered compositing: 2 pvbatch ranks against a serial render, the still frame (mpi) and
 # the interactive level of detail (mpi_lod).
 if (PVBATCH_EXECUTABLE AND MPIEXEC_EXECUTABLE)
+  set(environment "PSI_PVBATCH=${PVBATCH_EXECUTABLE}" "OMPI_MCA_rmaps_base_oversubscribe=1")
   foreach (name IN ITEMS mpi mpi_lod)
-    add_test(NAME PsiPython.${name}
-      COMMAND "${MPIEXEC_EXECUTABLE}" --allow-run-as-root -n 2 "${PVBATCH_EXECUTABLE}"
-              --force-offscreen-rendering "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_${name}.py")
+    set(command "${MPIEXEC_EXECUTABLE}" --allow-run-as-root -n 2 "${PVBATCH_EXECUTABLE}"
+      --force-offscreen-rendering "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_${name}.py")
+    add_test(NAME PsiPython.${name} COMMAND ${command})
     set_tests_properties(PsiPython.${name} PROPERTIES
-      ENVIRONMENT "PSI_PLUGIN=$<TARGET_FILE:PsiVolume>;${PSI_PYTHONPATH};PSI_PVBATCH=${PVBATCH_EXECUTABLE};OMPI_MCA_rmaps_base_oversubscribe=1"
+      ENVIRONMENT "PSI_PLUGIN=$<TARGET_FILE:PsiVolume>;${PSI_PYTHONPATH};${environment}"
       SKIP_RETURN_CODE 77
-      TIMEOUT 240
-      RUN_SERIAL ON)
+      TIMEOUT 240)
+    psi_add_installed_test(${name} TIMEOUT 240 ENVIRONMENT ${environment} COMMAND ${command})
+    set_tests_properties(PsiPython.${name} PsiInstalled.${name} PROPERTIES RUN_SERIAL ON)
   endforeach ()
 else ()
   message(STATUS "pvbatch or mpiexec not found: PsiPython.mpi and PsiPython.mpi_lod are not registered")
@@ -57,16 +64,16 @@ endif ()
 # Client-server: a pvpython client renders through `mpiexec -n 2 pvserver` (remote rendering,
 # ordered compositing on the server) and compares with a serial render.
 if (PVSERVER_EXECUTABLE AND MPIEXEC_EXECUTABLE)
-  psi_add_python_test(pvserver TIMEOUT 240
+  psi_add_python_test(pvserver TIMEOUT 240 INSTALLED
     ENVIRONMENT "PSI_PVSERVER=${PVSERVER_EXECUTABLE};PSI_MPIEXEC=${MPIEXEC_EXECUTABLE};OMPI_MCA_rmaps_base_oversubscribe=1")
-  set_tests_properties(PsiPython.pvserver PROPERTIES RUN_SERIAL ON)
+  set_tests_properties(PsiPython.pvserver PsiInstalled.pvserver PROPERTIES RUN_SERIAL ON)
 else ()
   message(STATUS "pvserver or mpiexec not found: PsiPython.pvserver is not registered")
 endif ()
 
 # While the camera moves: the volume level of detail chosen by mode and budget, never in still
 # renders or screenshots, close to the full frame; rebuilt for new arrays and data; hard inputs.
-psi_add_python_test(interaction TIMEOUT 300)
+psi_add_python_test(interaction TIMEOUT 300 INSTALLED)
 
 # The accuracy report as the GUI runs it (psivolume.gui), after `import psivolume` by the
 # package's name once the plugin is loaded: no PYTHONPATH, nor any PSI_* override (the report
