@@ -15,8 +15,9 @@
 # - pvbatch: the same script;
 # - paraview (the GUI): 'PsiVolume' in the plugin manager's list, not loaded until asked; its
 #   'Auto Load' ticked in Tools > Manage Plugins loads it at the next start;
-# - after `apt-get remove`: none of the package's files left, paraview's files as installed, and
-#   the files under /usr and /etc the same as before the installation.
+# - after `apt-get remove`: none of the package's files left, paraview's files as installed,
+#   nothing else under /usr and /etc changed by the removal, and, where the installation brought
+#   no other package, all of it as before the installation.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 if [ "${1:-}" = --fresh ]; then
@@ -57,7 +58,7 @@ psi_apt "" install -y -qq "$deb" >/dev/null
 system_files > installed.txt
 dpkg -L paraview-psivolume | sort > listed.txt
 # its own files and folders (not the shared ones: /usr, /usr/lib, ParaView's plugins/)
-files=$(dpkg -L paraview-psivolume | grep -i 'psivolume\|paraview.conf')
+files=$(grep -i 'psivolume\|paraview.conf' listed.txt)
 env -u PYTHONPATH "${xvfb[@]}" pvpython --force-offscreen-rendering "$script" --by-name --prefix /usr
 env -u PYTHONPATH "${xvfb[@]}" pvbatch --force-offscreen-rendering "$script" --by-name --prefix /usr
 # The GUI, in a throwaway home (root's ParaView settings stay as they were): the plugin
