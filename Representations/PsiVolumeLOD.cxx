@@ -10,6 +10,22 @@
 
 namespace
 {
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point t0)
+{
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// psi::ResampleForLOD and the seconds it took (the build's read-out, LODBuildSeconds).
+std::pair<psi::LODImage, double> TimedResample(vtkDataSet* source, const psi::LODArrays& arrays,
+  const psi::LODRegion& region, int resolution, bool threaded)
+{
+  const Clock::time_point t0 = Clock::now();
+  psi::LODImage lod = psi::ResampleForLOD(source, arrays, region, resolution, threaded);
+  return { std::move(lod), SecondsSince(t0) };
+}
+
 // VTK's smart volume mapper (the GPU ray caster where there is one), timed.
 class PsiTimedVolumeMapper : public vtkSmartVolumeMapper
 {
@@ -31,9 +47,9 @@ public:
   }
   void Render(vtkRenderer* ren, vtkVolume* vol) override
   {
-    const auto t0 = std::chrono::steady_clock::now();
+    const Clock::time_point t0 = Clock::now();
     this->Superclass::Render(ren, vol);
-    this->LastSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    this->LastSeconds = SecondsSince(t0);
   }
   double LastSeconds = 0;
 };
@@ -113,11 +129,9 @@ bool PsiVolumeLOD::Update(
   {
     return false;
   }
-  const auto t0 = std::chrono::steady_clock::now();
-  const psi::LODImage lod =
-    psi::ResampleForLOD(psi::LODSource(piece, arrays), arrays, region, resolution, true);
-  this->Install(lod, KeyOf(piece, arrays, region, resolution),
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  const auto built =
+    TimedResample(psi::LODSource(piece, arrays), arrays, region, resolution, true);
+  this->Install(built.first, KeyOf(piece, arrays, region, resolution), built.second);
   return true;
 }
 
@@ -143,13 +157,10 @@ void PsiVolumeLOD::Request(
   this->Job->Inputs = KeyOf(piece, arrays, region, resolution);
   this->Job->Result = std::async(std::launch::async,
     [source, arrays, region, resolution, mark = std::move(mark)]() mutable {
-      const auto t0 = std::chrono::steady_clock::now();
-      psi::LODImage lod = psi::ResampleForLOD(source, arrays, region, resolution, false);
-      const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      auto built = TimedResample(source, arrays, region, resolution, false);
       source = nullptr;
       mark.reset();
-      return std::make_pair(std::move(lod), seconds);
+      return built;
     });
 }
 
