@@ -14,7 +14,7 @@ struct FrameStats
   int64_t NumberOfTetrahedra = 0;   ///< drawn (summed over processes)
   int64_t NumberOfSkippedCells = 0; ///< non-tetrahedra, non-finite scalars (summed)
   int64_t LastSortCycles = 0;       ///< cycles MPVONC had to break (summed)
-  double LastRenderSeconds = 0;     ///< CPU seconds of the Render call (largest)
+  double LastRenderSeconds = 0;     ///< CPU seconds of the frame's Render calls (largest)
   double LastSortSeconds = 0;       ///< of the visibility sort (largest)
   double LastPreIntegrationSeconds = 0; ///< of the last full pre-integration rebuild (largest)
 
@@ -28,6 +28,22 @@ struct FrameStats
     this->LastSortSeconds = std::max(this->LastSortSeconds, o.LastSortSeconds);
     this->LastPreIntegrationSeconds =
       std::max(this->LastPreIntegrationSeconds, o.LastPreIntegrationSeconds);
+  }
+};
+
+/// The seconds of a whole frame from the mapper's calls in it: under dual depth peeling VTK calls
+/// a volume's mapper once per stage of every frame (PsiDepthPeelingCalls), and what 'Auto'
+/// weighs against its budget is the frame, not its last stage.
+struct FrameClock
+{
+  double Seconds = 0; ///< of the frame so far
+  int Calls = 0;      ///< the calls that made it
+  /// Adds one call; `startsFrame`: the call is a frame's first (not a later peeling stage).
+  double Add(double seconds, bool startsFrame)
+  {
+    this->Seconds = startsFrame ? seconds : this->Seconds + seconds;
+    this->Calls = startsFrame ? 1 : this->Calls + 1;
+    return this->Seconds;
   }
 };
 } // namespace psi

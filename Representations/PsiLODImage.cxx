@@ -1,58 +1,33 @@
 #include "PsiLODImage.h"
 
-#include "PsiParallel.h"
+#include "PsiLatticeSampling.h"
+#include "PsiTransferFunctionAnalysis.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkDoubleArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
-#include "vtkProbeFilter.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGridBase.h"
+#include "vtkUnstructuredGridVolumeMapper.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace
 {
-// Samples whose value is not finite are hidden (as 'Psi Volume' skips their cells) and given a
-// finite value, so that no NaN reaches the ray caster's scalar range.
-void BlankNonFinite(vtkImageData* image, const psi::LODArrays& arrays)
-{
-  vtkPointData* pd = image->GetPointData();
-  vtkUnsignedCharArray* ghosts = image->GetPointGhostArray();
-  for (const std::string& name : { arrays.Color, arrays.Opacity })
-  {
-    vtkDataArray* a = name.empty() ? nullptr : pd->GetArray(name.c_str());
-    for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i)
-    {
-      for (int c = 0; c < a->GetNumberOfComponents(); ++c)
-      {
-        if (!std::isfinite(a->GetComponent(i, c)))
-        {
-          ghosts = ghosts ? ghosts : image->AllocatePointGhostArray();
-          ghosts->SetValue(i, ghosts->GetValue(i) | vtkDataSetAttributes::HIDDENPOINT);
-          a->SetComponent(i, c, 0);
-        }
-      }
-    }
-  }
-}
+// The mask of the lattice points inside the drawn tetrahedra (removed once they are hidden).
+constexpr const char* MaskName = "PsiLODInside";
 
 // The lattice: `resolution` samples (at least 2) along each side of `bounds`, spanning them. In
 // parallel every process computes it from the same global bounds, so that the processes' samples
 // are points of one lattice.
-struct Lattice
+psi::Lattice GlobalLattice(const double bounds[6], int resolution)
 {
-  int Dims[3];
-  double Spacing[3];
-  double Origin[3];
-};
-
-Lattice GlobalLattice(const double bounds[6], int resolution)
-{
-  Lattice l;
+  psi::Lattice l;
   const double sides[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
   for (int k = 0; k < 3; ++k)
   {
@@ -60,10 +35,10 @@ Lattice GlobalLattice(const double bounds[6], int resolution)
     // the longest side only (the others in proportion), the Blunt Fin's level of detail was 1.84
     // from the exact image against 0.83 for 64^3 (/255, docs/decisions.md "Interaction")
     l.Dims[k] = std::max(2, resolution);
-    // The lattice lies a millionth of each side inside the bounds: vtkProbeFilter finds the
-    // lattice points in a cell by floor((max - origin) / spacing), which for the points on the
-    // bounds' upper faces can round one point short, and the mesh's whole last layer of lattice
-    // points was then outside (a missing slab, 1.5/255 against 0.7 on the Blunt Fin).
+    // The lattice lies a millionth of each side inside the bounds, so that rounding never puts
+    // the points of the bounds' faces outside the mesh (with vtkProbeFilter, which finds them by
+    // floor((max - origin) / spacing), the whole last layer was lost: 1.5/255 against 0.7 on the
+    // Blunt Fin).
     const double inset = 1e-6 * sides[k];
     l.Spacing[k] = sides[k] > 0 ? (sides[k] - 2 * inset) / (l.Dims[k] - 1) : 1;
     l.Origin[k] = bounds[2 * k] + inset;
@@ -71,7 +46,7 @@ Lattice GlobalLattice(const double bounds[6], int resolution)
   return l;
 }
 
-vtkSmartPointer<vtkImageData> LatticeImage(const Lattice& l)
+vtkSmartPointer<vtkImageData> LatticeImage(const psi::Lattice& l)
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetOrigin(l.Origin);
@@ -153,28 +128,59 @@ void BlankOutside(vtkImageData* image, const char* maskName)
   }
   image->GetPointData()->RemoveArray(maskName);
 }
+
+// The image of the samples: the scalar (and separate opacity) back in the array's own values,
+// and a mask of the lattice points inside the drawn tetrahedra.
+vtkSmartPointer<vtkImageData> SampledImage(
+  const psi::TetMesh& mesh, const psi::Lattice& lattice, const psi::LatticeSamples& samples)
+{
+  vtkSmartPointer<vtkImageData> image = LatticeImage(lattice);
+  const vtkIdType n = image->GetNumberOfPoints();
+  vtkNew<vtkDoubleArray> values;
+  values->SetName(psi::LODArrayName);
+  values->SetNumberOfComponents(samples.Opacity.empty() ? 1 : 2);
+  values->SetNumberOfTuples(n);
+  vtkNew<vtkUnsignedCharArray> mask;
+  mask->SetName(MaskName);
+  mask->SetNumberOfTuples(n);
+  const double* r = mesh.ScalarRange;
+  const double* o = mesh.OpacityRange;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const bool inside = samples.Tet[i] >= 0;
+    mask->SetValue(i, inside ? 1 : 0);
+    // TetMesh's u back to the scalar: s = r0 + u (r1 - r0) (psi::UnitScalar inverted)
+    values->SetTypedComponent(i, 0, inside ? r[0] + samples.Scalar[i] * (r[1] - r[0]) : 0);
+    if (!samples.Opacity.empty())
+    {
+      values->SetTypedComponent(i, 1, inside ? o[0] + samples.Opacity[i] * (o[1] - o[0]) : 0);
+    }
+  }
+  image->GetPointData()->AddArray(values);
+  image->GetPointData()->AddArray(mask);
+  return image;
+}
 } // namespace
 
 namespace psi
 {
 
-vtkSmartPointer<vtkDataSet> LODSource(vtkDataSet* piece, const LODArrays& arrays)
+LODScalars LODScalarsOf(
+  vtkUnstructuredGridVolumeMapper* mapper, vtkVolumeProperty* property, vtkDataSet* piece)
 {
-  vtkSmartPointer<vtkDataSet> copy;
-  copy.TakeReference(piece->NewInstance());
-  copy->CopyStructure(piece);
-  for (const std::string& name : { arrays.Color, arrays.Opacity })
+  LODScalars s;
+  int cellFlag = -1;
+  vtkDataArray* a = piece ? vtkAbstractMapper::GetScalars(piece, mapper->GetScalarMode(),
+                              mapper->GetArrayAccessMode(), mapper->GetArrayId(),
+                              mapper->GetArrayName(), cellFlag)
+                          : nullptr;
+  if (a && a->GetName() && (cellFlag == 0 || cellFlag == 1))
   {
-    if (vtkDataArray* a = piece->GetPointData()->GetArray(name.c_str()))
-    {
-      copy->GetPointData()->AddArray(a);
-    }
-    else if (vtkDataArray* c = piece->GetCellData()->GetArray(name.c_str()))
-    {
-      copy->GetCellData()->AddArray(c);
-    }
+    s.Array = a->GetName();
+    s.Cells = cellFlag == 1;
+    s.Component = psi::ColorMapComponent(property, a->GetNumberOfComponents());
   }
-  return copy;
+  return s;
 }
 
 bool LODRegion::operator==(const LODRegion& o) const
@@ -183,34 +189,39 @@ bool LODRegion::operator==(const LODRegion& o) const
     std::equal(Box, Box + 6, o.Box);
 }
 
-LODImage ResampleForLOD(vtkDataSet* source, const LODArrays& arrays, const LODRegion& region,
-  int resolution, bool threaded)
+double LODSampleDistance(const double spacing[3])
 {
-  const Lattice lattice =
-    GlobalLattice(region.Parallel ? region.Global : source->GetBounds(), resolution);
-  vtkNew<vtkProbeFilter> probe;
-  probe->SetInputData(LatticeImage(lattice));
-  probe->SetSourceData(source);
-  if (threaded)
-  {
-    psi::Parallel([&] { probe->Update(); });
-  }
-  else
-  {
-    probe->Update();
-  }
+  return std::min({ spacing[0], spacing[1], spacing[2] });
+}
+
+LODImage ResampleForLOD(vtkDataSet* piece, const LODScalars& scalars, const LODRegion& region,
+  int resolution, const std::function<void(double)>& progress)
+{
+  auto* grid = vtkUnstructuredGridBase::SafeDownCast(piece);
+  vtkDataSetAttributes* data = !grid ? nullptr
+    : scalars.Cells                  ? static_cast<vtkDataSetAttributes*>(grid->GetCellData())
+                                     : grid->GetPointData();
+  vtkDataArray* array = data && !scalars.Array.empty() ? data->GetArray(scalars.Array.c_str())
+                                                       : nullptr;
   LODImage lod;
-  lod.Image = vtkSmartPointer<vtkImageData>::New();
-  lod.Image->ShallowCopy(probe->GetOutput());
+  if (!array || grid->GetNumberOfCells() == 0)
+  {
+    return lod;
+  }
+  const TetMesh mesh = GatherTetMesh(grid, array, scalars.Cells, scalars.Component);
+  if (mesh.NumberOfTets() == 0)
+  {
+    return lod;
+  }
+  const Lattice lattice =
+    GlobalLattice(region.Parallel ? region.Global : piece->GetBounds(), resolution);
+  lod.Image = SampledImage(mesh, lattice, SampleOnLattice(mesh, lattice, progress));
   if (region.Parallel)
   {
-    FillBeyondBox(lod.Image, probe->GetValidPointMaskArrayName(), region.Box);
+    FillBeyondBox(lod.Image, MaskName, region.Box);
   }
-  BlankOutside(lod.Image, probe->GetValidPointMaskArrayName());
-  BlankNonFinite(lod.Image, arrays);
-  // One sample per mean lattice spacing: on the Blunt Fin 0.67/255 from the exact image, against
-  // 0.70 at half of it for twice the samples (docs/decisions.md "Interaction").
-  lod.SampleDistance = (lattice.Spacing[0] + lattice.Spacing[1] + lattice.Spacing[2]) / 3;
+  BlankOutside(lod.Image, MaskName);
+  lod.SampleDistance = LODSampleDistance(lattice.Spacing);
   return lod;
 }
 

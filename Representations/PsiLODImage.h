@@ -1,25 +1,31 @@
 // PsiLODImage: the image the interactive level of detail of 'Psi Volume' draws, made without
-// OpenGL: the piece this process draws, probed once on a coarse lattice (VTK's vtkProbeFilter,
-// whose validity mask hides the samples outside the mesh, as ParaView's 'Resample To Image'
-// does). The image holds scalars, not colors, so a transfer-function edit needs no new image.
-// Samples whose scalar is not finite are hidden, as 'Psi Volume' skips the cells that hold one.
+// OpenGL: exactly the tetrahedra and the scalar the full frame draws (psi::GatherTetMesh with the
+// mapper's array, association and component), sampled once on a coarse lattice
+// (psi::SampleOnLattice); the samples outside the drawn tetrahedra are hidden, as ParaView's
+// 'Resample To Image' hides those outside the mesh. Cells the full frame skips (not tetrahedra,
+// or a scalar not finite) are skipped here too. The image holds scalars, not colors, so a
+// transfer-function edit needs no new image.
 //
 // In parallel (ordered compositing) every process probes its piece on one lattice, spanned over
 // the whole mesh's bounds, and draws only its piece's box of it (PsiVolumeLOD crops the ray
 // caster to it): its ray samples are then the serial ray's samples inside that box
 // (docs/decisions.md, "Interaction").
-//
-// ResampleForLOD reads only the source it is given, so it may run on a thread of its own.
 #ifndef PsiLODImage_h
 #define PsiLODImage_h
 
 #include "PsiVolumeRepresentationsModule.h"
 
+#include "PsiTetMesh.h" // for psi::ScalarComponent
+
 #include "vtkDataSet.h"   // for vtkSmartPointer
 #include "vtkImageData.h" // for vtkSmartPointer
 #include "vtkSmartPointer.h"
 
+#include <functional>
 #include <string>
+
+class vtkUnstructuredGridVolumeMapper;
+class vtkVolumeProperty;
 
 namespace psi
 {
@@ -27,14 +33,29 @@ namespace psi
 /// Samples along each side of the lattice's box (64^3: ParaView's smallest 'Resample To Image').
 constexpr int DefaultLODResolution = 64;
 
-/// The arrays the level of detail draws: a point or cell array of the piece (cell arrays become
-/// point arrays of the image), and with a separate opacity array, that one too.
-struct LODArrays
+/// The scalar the level of detail draws: the full frame's (the array the mapper colors by, with
+/// its association: a point and a cell array may share a name), and which value of its tuples
+/// (psi::ColorMapComponent: a component, the magnitude, and a separate opacity component).
+struct LODScalars
 {
-  std::string Color;
-  std::string Opacity; ///< "" without a separate opacity array
-  bool operator==(const LODArrays& o) const { return Color == o.Color && Opacity == o.Opacity; }
+  std::string Array; ///< "" when there is nothing to color by
+  bool Cells = false;
+  ScalarComponent Component;
+  bool operator==(const LODScalars& o) const
+  {
+    return Array == o.Array && Cells == o.Cells && Component.Index == o.Component.Index &&
+      Component.Opacity == o.Component.Opacity;
+  }
 };
+
+/// The scalar `mapper` draws from `piece` with `property`'s color map (its array, association and
+/// vector mode).
+PSIVOLUMEREPRESENTATIONS_EXPORT LODScalars LODScalarsOf(
+  vtkUnstructuredGridVolumeMapper* mapper, vtkVolumeProperty* property, vtkDataSet* piece);
+
+/// The name of the image's array: the scalar, and with a separate opacity array its opacity as a
+/// second component (luminance and alpha: the ray caster's dependent components).
+constexpr const char* LODArrayName = "PsiLODScalar";
 
 /// Where the lattice lies: spanned over `Global` (the whole mesh's bounds), and this process's
 /// share of it, `Box` (the box it draws: its piece's bounds), when `Parallel`. Serially the
@@ -47,11 +68,6 @@ struct LODRegion
   bool operator==(const LODRegion& o) const;
 };
 
-/// A copy of `piece`'s structure holding only `arrays` (it shares the piece's points, cells and
-/// arrays), for ResampleForLOD: the probe resamples every array it is given.
-PSIVOLUMEREPRESENTATIONS_EXPORT vtkSmartPointer<vtkDataSet> LODSource(
-  vtkDataSet* piece, const LODArrays& arrays);
-
 /// The level of detail's image and the ray caster's sample distance for it.
 struct LODImage
 {
@@ -59,12 +75,18 @@ struct LODImage
   double SampleDistance = 0;
 };
 
-/// Probes `source` (from LODSource) on the lattice of `region` (the source's bounds serially)
-/// with `resolution` samples along each side, hides the samples outside the mesh and those not
-/// finite. `threaded`: the probe on vtkSMPTools' threads (psi::Parallel), else on the calling
-/// thread alone.
-PSIVOLUMEREPRESENTATIONS_EXPORT LODImage ResampleForLOD(vtkDataSet* source,
-  const LODArrays& arrays, const LODRegion& region, int resolution, bool threaded);
+/// Samples the tetrahedra of `piece` (an unstructured grid) that the full frame draws with
+/// `scalars` on the lattice of `region` (the piece's bounds serially), `resolution` samples along
+/// each side; hides the samples outside them. No image for a piece with nothing to draw.
+/// `progress` (if given) hears the fraction done.
+PSIVOLUMEREPRESENTATIONS_EXPORT LODImage ResampleForLOD(vtkDataSet* piece,
+  const LODScalars& scalars, const LODRegion& region, int resolution,
+  const std::function<void(double)>& progress = nullptr);
+
+/// The ray caster's sample distance for a lattice of this spacing: the smallest spacing, so that
+/// a ray crosses every lattice cell along every axis in at least one sample (a thin slab seen
+/// across takes as many samples as its lattice has layers).
+PSIVOLUMEREPRESENTATIONS_EXPORT double LODSampleDistance(const double spacing[3]);
 
 } // namespace psi
 

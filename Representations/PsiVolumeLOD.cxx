@@ -1,11 +1,11 @@
 #include "PsiVolumeLOD.h"
 
-#include "PsiParallel.h"
-
 #include "vtkDataSet.h"
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkObjectFactory.h"
 
+#include <chrono>
+#include <exception>
 #include <utility>
 
 namespace
@@ -15,15 +15,6 @@ using Clock = std::chrono::steady_clock;
 double SecondsSince(Clock::time_point t0)
 {
   return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-// psi::ResampleForLOD and the seconds it took (the build's read-out, LODBuildSeconds).
-std::pair<psi::LODImage, double> TimedResample(vtkDataSet* source, const psi::LODArrays& arrays,
-  const psi::LODRegion& region, int resolution, bool threaded)
-{
-  const Clock::time_point t0 = Clock::now();
-  psi::LODImage lod = psi::ResampleForLOD(source, arrays, region, resolution, threaded);
-  return { std::move(lod), SecondsSince(t0) };
 }
 
 // VTK's smart volume mapper (the GPU ray caster where there is one), timed.
@@ -60,7 +51,11 @@ vtkStandardNewMacro(PsiTimedVolumeMapper);
 PsiVolumeLOD::PsiVolumeLOD()
   : Mapper(vtkSmartPointer<PsiTimedVolumeMapper>::New())
 {
+  // the image's one array: the scalar the full frame draws (a component or the magnitude
+  // already taken), with a separate opacity as its second, dependent component
   this->Mapper->SetScalarModeToUsePointFieldData();
+  this->Mapper->SelectScalarArray(psi::LODArrayName);
+  this->Mapper->SetVectorMode(vtkSmartVolumeMapper::DISABLED);
   // A fixed sample distance (set with each image): the ray caster's own interactive adjustment
   // samples ever more coarsely while the camera moves (its images were 4x further from the
   // exact image on the Blunt Fin, docs/decisions.md "Interaction").
@@ -77,8 +72,6 @@ double PsiVolumeLOD::GetLastDrawSeconds() const
   return static_cast<PsiTimedVolumeMapper*>(this->Mapper.Get())->LastSeconds;
 }
 
-// A build still running is waited for (the future's destructor): it holds only its own copy of
-// the piece's structure and arrays.
 PsiVolumeLOD::~PsiVolumeLOD() = default;
 
 void PsiVolumeLOD::Reset()
@@ -90,103 +83,84 @@ void PsiVolumeLOD::Reset()
 
 bool PsiVolumeLOD::Key::operator==(const Key& o) const
 {
-  return Piece == o.Piece && PieceTime == o.PieceTime && BuiltArrays == o.BuiltArrays &&
+  return Piece == o.Piece && PieceTime == o.PieceTime && BuiltScalars == o.BuiltScalars &&
     BuiltRegion == o.BuiltRegion && Resolution == o.Resolution;
 }
 
 PsiVolumeLOD::Key PsiVolumeLOD::KeyOf(
-  vtkDataSet* piece, const Arrays& arrays, const Region& region, int resolution)
+  vtkDataSet* piece, const Scalars& scalars, const Region& region, int resolution)
 {
   Key key;
   key.Piece = piece;
   key.PieceTime = piece ? piece->GetMTime() : 0;
-  key.BuiltArrays = arrays;
+  key.BuiltScalars = scalars;
   key.BuiltRegion = region;
   key.Resolution = resolution;
   return key;
 }
 
-bool PsiVolumeLOD::Drawable(vtkDataSet* piece, const Arrays& arrays)
+bool PsiVolumeLOD::Drawable(vtkDataSet* piece, const Scalars& scalars)
 {
-  return piece && piece->GetNumberOfCells() > 0 && !arrays.Color.empty();
+  return piece && piece->GetNumberOfCells() > 0 && !scalars.Array.empty();
 }
 
 bool PsiVolumeLOD::IsCurrent(
-  vtkDataSet* piece, const Arrays& arrays, const Region& region, int resolution) const
+  vtkDataSet* piece, const Scalars& scalars, const Region& region, int resolution) const
 {
-  return this->Image && piece && KeyOf(piece, arrays, region, resolution) == this->Built;
+  return this->Image && piece && KeyOf(piece, scalars, region, resolution) == this->Built;
 }
 
-bool PsiVolumeLOD::Update(
-  vtkDataSet* piece, const Arrays& arrays, const Region& region, int resolution)
+bool PsiVolumeLOD::Update(vtkDataSet* piece, const Scalars& scalars, const Region& region,
+  int resolution, const std::function<void(double)>& progress)
 {
-  if (!Drawable(piece, arrays))
+  if (!Drawable(piece, scalars))
   {
     this->Reset();
     return false;
   }
-  if (this->IsCurrent(piece, arrays, region, resolution))
+  const Key key = KeyOf(piece, scalars, region, resolution);
+  if (this->IsCurrent(piece, scalars, region, resolution) ||
+    (!this->Error.empty() && key == this->Failed))
   {
     return false;
   }
-  const auto built =
-    TimedResample(psi::LODSource(piece, arrays), arrays, region, resolution, true);
-  this->Install(built.first, KeyOf(piece, arrays, region, resolution), built.second);
-  return true;
-}
-
-void PsiVolumeLOD::Request(
-  vtkDataSet* piece, const Arrays& arrays, const Region& region, int resolution)
-{
-  if (!Drawable(piece, arrays))
+  this->Reset();
+  this->Error.clear();
+  try
+  {
+    const Clock::time_point t0 = Clock::now();
+    const psi::LODImage lod = psi::ResampleForLOD(piece, scalars, region, resolution, progress);
+    this->Install(lod, key, SecondsSince(t0));
+  }
+  catch (const std::exception& e)
   {
     this->Reset();
-    return;
+    this->Failed = key;
+    this->Error = e.what();
+    this->ErrorTaken = false;
   }
-  if (this->Job || this->IsCurrent(piece, arrays, region, resolution))
-  {
-    return;
-  }
-  // The copy is made here, on the main thread; the build reads only the copy. It is marked as
-  // background work before its thread starts, so that psi::Parallel leaves vtkSMPTools' backend
-  // alone from now until the build ends (PsiParallel.h).
-  vtkSmartPointer<vtkDataSet> source = psi::LODSource(piece, arrays);
-  source->GetBounds(); // computed and cached here (with the shared points'): the build only reads
-  auto mark = std::make_unique<psi::BackgroundWork>();
-  this->Job = std::make_unique<Build>();
-  this->Job->Inputs = KeyOf(piece, arrays, region, resolution);
-  this->Job->Result = std::async(std::launch::async,
-    [source, arrays, region, resolution, mark = std::move(mark)]() mutable {
-      auto built = TimedResample(source, arrays, region, resolution, false);
-      source = nullptr;
-      mark.reset();
-      return built;
-    });
+  return this->Image != nullptr;
 }
 
-bool PsiVolumeLOD::Poll()
+std::string PsiVolumeLOD::TakeNewError()
 {
-  if (!this->Job ||
-    this->Job->Result.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
-  {
-    return false;
-  }
-  const std::pair<psi::LODImage, double> done = this->Job->Result.get();
-  const Key inputs = this->Job->Inputs;
-  this->Job.reset();
-  this->Install(done.first, inputs, done.second);
-  return true;
+  const bool fresh = !this->ErrorTaken;
+  this->ErrorTaken = true;
+  return fresh ? this->Error : std::string();
 }
 
 void PsiVolumeLOD::Install(const psi::LODImage& lod, const Key& key, double seconds)
 {
+  this->LastBuildSeconds = seconds;
+  if (!lod.Image)
+  {
+    return; // nothing the full frame draws: no image
+  }
   this->Image = lod.Image;
   this->Crop(key.BuiltRegion);
   this->Mapper->SetSampleDistance(static_cast<float>(lod.SampleDistance));
   this->Mapper->SetInputData(this->Image);
-  this->Mapper->SelectScalarArray(key.BuiltArrays.Color.c_str());
   this->Built = key;
-  this->LastBuildSeconds = seconds;
 }
 
 // In parallel each process draws only its piece's box: the neighbours' images abut there, as

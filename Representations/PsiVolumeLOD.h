@@ -1,14 +1,15 @@
 // PsiVolumeLOD: the interactive level of detail of 'Psi Volume', a volume: the image of
-// PsiLODImage (this process's piece probed once on a coarse lattice), drawn by VTK's GPU ray
+// PsiLODImage (this process's piece sampled once on a coarse lattice), drawn by VTK's GPU ray
 // caster (vtkSmartVolumeMapper) with the same vtkVolumeProperty, hence the same color map,
 // opacity function and unit distance. Each process probes its own piece alone (ParaView's
 // vtkPResampleToImage would be collective, and a level of detail chosen by each process's own
 // frame time must not wait for the others); in parallel each process draws only its piece's box.
 //
-// Built once per piece, array, region and resolution, not per camera move nor per
-// transfer-function edit: either now (Update), or on a thread of its own (Request), the image
-// then replacing the old one at the first Poll after the build is done, so that the camera can
-// move meanwhile. docs/decisions.md ("Interaction") has the candidates' figures.
+// Built once per piece, scalar, region and resolution, not per camera move nor per
+// transfer-function edit, on the main thread in the first interactive render that needs it: the
+// build takes a fraction of a still frame (docs/decisions.md "Interaction" has the figures and
+// the build on a thread of its own that it replaced), so no thread outlives a render and no VTK
+// object is shared with one.
 #ifndef PsiVolumeLOD_h
 #define PsiVolumeLOD_h
 
@@ -19,9 +20,8 @@
 #include "vtkSmartPointer.h"
 #include "vtkSmartVolumeMapper.h" // for vtkSmartPointer
 
-#include <chrono>
-#include <future>
-#include <memory>
+#include <functional>
+#include <string>
 
 class vtkDataSet;
 
@@ -31,33 +31,30 @@ public:
   PsiVolumeLOD();
   ~PsiVolumeLOD();
 
-  using Arrays = psi::LODArrays;
+  using Scalars = psi::LODScalars;
   using Region = psi::LODRegion;
   static constexpr int DefaultResolution = psi::DefaultLODResolution;
 
-  /// Whether the image was built from this piece (unmodified since), these arrays, this region
+  /// Whether the image was built from this piece (unmodified since), this scalar, this region
   /// and this resolution.
-  bool IsCurrent(vtkDataSet* piece, const Arrays& arrays, const Region& region,
+  bool IsCurrent(vtkDataSet* piece, const Scalars& scalars, const Region& region,
     int resolution = DefaultResolution) const;
-  /// Resamples `piece` now (on vtkSMPTools' threads) when it, its arrays, the region or the
+  /// Resamples `piece` now (on vtkSMPTools' threads) when it, its scalar, the region or the
   /// resolution changed since the last build; true when it rebuilt. A null or empty piece gives
-  /// no image (the mapper then has no input).
-  bool Update(vtkDataSet* piece, const Arrays& arrays, const Region& region,
-    int resolution = DefaultResolution);
-  /// Starts resampling `piece` on a thread of its own, unless the image is current or such a
-  /// build already runs (a build for older inputs runs to its end first: the next Request after
-  /// it starts the new one). A null or empty piece gives no image.
-  void Request(vtkDataSet* piece, const Arrays& arrays, const Region& region,
-    int resolution = DefaultResolution);
-  /// Takes the image of a finished Request; true when the image changed.
-  bool Poll();
+  /// no image (the mapper then has no input). `progress` hears the fraction done. A build that
+  /// fails (an exception, e.g. out of memory) leaves no image and gives `Error`, once for those
+  /// inputs: the next Update for them does not try again.
+  bool Update(vtkDataSet* piece, const Scalars& scalars, const Region& region,
+    int resolution = DefaultResolution, const std::function<void(double)>& progress = nullptr);
+  /// Why the last build failed, once: "" when it did not, or when this was already taken.
+  std::string TakeNewError();
   /// The mapper that draws the image (its input set by Update or Poll).
   vtkSmartVolumeMapper* GetMapper() const { return this->Mapper; }
   /// Whether there is an image to draw.
   bool HasImage() const { return this->Image != nullptr; }
   /// Seconds the mapper's last Render call took (GL work is asynchronous: the call, not the GPU).
   double GetLastDrawSeconds() const;
-  /// Seconds the last build took (0 before the first), on its own thread for a Request.
+  /// Seconds the last build took (0 before the first).
   double GetLastBuildSeconds() const { return this->LastBuildSeconds; }
   /// Forgets the image (a new build on the next Update or Request).
   void Reset();
@@ -71,27 +68,23 @@ private:
   {
     const vtkDataSet* Piece = nullptr; ///< identity only, never dereferenced
     vtkMTimeType PieceTime = 0;
-    Arrays BuiltArrays;
+    Scalars BuiltScalars;
     Region BuiltRegion;
     int Resolution = 0;
     bool operator==(const Key& o) const;
   };
-  static Key KeyOf(vtkDataSet* piece, const Arrays& arrays, const Region& region, int resolution);
-  static bool Drawable(vtkDataSet* piece, const Arrays& arrays);
+  static Key KeyOf(
+    vtkDataSet* piece, const Scalars& scalars, const Region& region, int resolution);
+  static bool Drawable(vtkDataSet* piece, const Scalars& scalars);
   void Install(const psi::LODImage& lod, const Key& key, double seconds);
   void Crop(const Region& region);
-
-  /// A Request's build on its own thread: its inputs and its result (image and seconds).
-  struct Build
-  {
-    Key Inputs;
-    std::future<std::pair<psi::LODImage, double>> Result;
-  };
 
   vtkSmartPointer<vtkSmartVolumeMapper> Mapper; ///< a timed vtkSmartVolumeMapper
   vtkSmartPointer<vtkImageData> Image;
   Key Built;
-  std::unique_ptr<Build> Job;
+  Key Failed; ///< the inputs of the last build that failed
+  std::string Error;
+  bool ErrorTaken = false;
   double LastBuildSeconds = 0;
 };
 

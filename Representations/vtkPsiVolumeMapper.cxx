@@ -170,7 +170,9 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     this->Stats.LastSortSeconds = I.Order.GetLastSortSeconds();
     this->Stats.LastSortCycles = static_cast<vtkIdType>(I.Order.GetLastCycles());
   }
-  this->Stats.LastRenderSeconds = SecondsSince(t0);
+  const PsiDepthPeelingCalls::Stage stage = I.Peeling.GetStage();
+  this->Stats.LastRenderSeconds = this->Frame.Add(SecondsSince(t0),
+    stage == PsiDepthPeelingCalls::Plain || stage == PsiDepthPeelingCalls::OutsideLayers);
   if (!psi::IsInteractiveRender(renWin))
   {
     this->LastStillSeconds = this->Stats.LastRenderSeconds;

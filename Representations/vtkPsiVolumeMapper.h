@@ -166,7 +166,10 @@ public:
   double GetLastPreIntegrationSeconds() const { return this->Stats.LastPreIntegrationSeconds; }
   /// Cycles MPVONC had to break in the last sort.
   vtkIdType GetLastSortCycles() const { return this->Stats.LastSortCycles; }
+  /// Seconds of the last frame's Render calls (under dual depth peeling, one call per stage).
   double GetLastRenderSeconds() const { return this->Stats.LastRenderSeconds; }
+  /// The Render calls that made the last frame (1, or its depth-peeling stages).
+  int GetLastFrameCalls() const { return this->Frame.Calls; }
   /// Seconds of the last still (not interactive, psi::IsInteractiveRender) frame: what 'Auto'
   /// interaction weighs against the budget (psi::UsesVolumeLOD).
   vtkGetMacro(LastStillSeconds, double);
@@ -212,6 +215,7 @@ protected:
   int LastNumberOfAdaptiveNodes = 0;
   std::string LastFeatureDefines;
   double LastStillSeconds = 0;
+  psi::FrameClock Frame; ///< the current frame's calls (one per depth-peeling stage)
 
 private:
   vtkPsiVolumeMapper(const vtkPsiVolumeMapper&) = delete;

@@ -11,7 +11,6 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkAlgorithmOutput.h"
-#include "vtkColorTransferFunction.h"
 #include "vtkDataSet.h"
 #include "vtkBoundingBox.h"
 #include "vtkInformation.h"
@@ -21,7 +20,6 @@
 #include "vtkPVRenderViewDataDeliveryManager.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
-#include "vtkSmartVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
 namespace
@@ -154,44 +152,36 @@ void vtkPsiVolumeRepresentation::InstallLODMapper(bool volume)
   this->VolumeLODInstalled = volume;
 }
 
-// Builds the level of detail from the piece this process draws, when the piece or its array
-// changed, and gives its mapper the array and vector mode the full frame uses. False: nothing
-// to draw (no piece, an empty one, or no array), or its build still runs.
+// Builds the level of detail from the piece this process draws when the piece, the scalar the
+// full frame draws (array, association, component) or the region changed, reporting progress
+// through ParaView's progress bar. False: nothing to draw (no piece, an empty one, or no
+// array), or the build failed (one warning; the full frame is drawn instead).
 //
-// In 'Auto' the build runs on a thread of its own (serially): the frames until it is done are
-// full frames, so that the first move after a slow still frame costs a full frame, not the
-// build. 'Volume LOD' (the level of detail asked for) and parallel renders build it now: in
-// ordered compositing every process must draw the same kind of image in one frame.
+// The build runs now, in the first interactive render that needs it, on every process: it takes
+// a fraction of a still frame (docs/decisions.md "Interaction"), and in ordered compositing every
+// process must draw the same kind of image in one frame.
 bool vtkPsiVolumeRepresentation::UpdateVolumeLOD(vtkInformation* inInfo, vtkPVRenderView* view)
 {
   vtkAlgorithmOutput* port = vtkPVRenderView::GetPieceProducer(inInfo, this);
   vtkDataSet* piece = port && port->GetProducer()
     ? vtkDataSet::SafeDownCast(port->GetProducer()->GetOutputDataObject(port->GetIndex()))
     : nullptr;
-  PsiVolumeLOD::Arrays arrays;
-  arrays.Color = this->PsiMapper->GetArrayName() ? this->PsiMapper->GetArrayName() : "";
+  const PsiVolumeLOD::Scalars scalars = psi::LODScalarsOf(this->PsiMapper, this->Property, piece);
   const PsiVolumeLOD::Region region = LatticeRegion(view, piece);
-  this->LOD->Poll();
-  const bool background = !region.Parallel &&
-    this->PsiMapper->GetSettings().InteractionMode == psi::InteractionModes::Auto;
-  if (!this->LOD->IsCurrent(piece, arrays, region))
+  if (!this->LOD->IsCurrent(piece, scalars, region))
   {
-    if (background)
-    {
-      this->LOD->Request(piece, arrays, region);
-      return false;
-    }
     this->SetProgressText("Psi Volume: interactive level of detail");
     this->UpdateProgress(0.0);
-    this->LOD->Update(piece, arrays, region);
+    this->LOD->Update(piece, scalars, region, PsiVolumeLOD::DefaultResolution,
+      [this](double done) { this->UpdateProgress(done); });
     this->UpdateProgress(1.0);
+    const std::string error = this->LOD->TakeNewError();
+    if (!error.empty())
+    {
+      vtkWarningMacro("Psi Volume: the interactive level of detail could not be built ("
+        << error << "); interactive renders draw full frames.");
+    }
   }
-  // as the superclass gives a vtkSmartVolumeMapper its vector mode (UpdateMapperParameters)
-  vtkSmartVolumeMapper* mapper = this->LOD->GetMapper();
-  vtkColorTransferFunction* ctf = this->Property->GetRGBTransferFunction(0);
-  const bool independent = this->Property->GetIndependentComponents() != 0;
-  mapper->SetVectorMode(independent && ctf ? ctf->GetVectorMode() : vtkScalarsToColors::COMPONENT);
-  mapper->SetVectorComponent(independent && ctf ? ctf->GetVectorComponent() : 0);
   return this->LOD->HasImage();
 }
 

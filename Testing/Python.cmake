@@ -75,6 +75,11 @@ endif ()
 # renders or screenshots, close to the full frame; rebuilt for new arrays and data; hard inputs.
 psi_add_python_test(interaction TIMEOUT 300 INSTALLED)
 
+# The level of detail on common real inputs, against the still frame: built in the first
+# interactive render, one name for a point and a cell array, array and component switches, a
+# thin slab, a representation deleted and replaced.
+psi_add_python_test(lod_inputs TIMEOUT 300)
+
 # The accuracy report as the GUI runs it (psivolume.gui), after `import psivolume` by the
 # package's name once the plugin is loaded: no PYTHONPATH, nor any PSI_* override (the report
 # finds the plugin ParaView loaded, and its reference renderer beside the build's).

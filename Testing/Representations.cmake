@@ -91,7 +91,8 @@ add_test(NAME PsiRepresentations.FramePlan COMMAND TestFramePlan)
 
 # The interactive level of detail's image: which lattice points it hides (GL-free).
 add_executable(TestLODImage Cxx/TestLODImage.cxx)
-target_link_libraries(TestLODImage PRIVATE PsiVolume::Representations)
+target_link_libraries(TestLODImage PRIVATE PsiVolume::Representations VTK::FiltersCore
+  VTK::CommonDataModel)
 add_test(NAME PsiRepresentations.LODImage COMMAND TestLODImage)
 
 # The mapper holds the one settings type: the integration method clamped to the method table

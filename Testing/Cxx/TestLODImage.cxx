@@ -9,16 +9,26 @@
 //    missing cube are hidden, and no lattice cell is (hiding the cells that touch a hidden point
 //    would hide a layer inside the mesh along its boundary).
 //  - A NaN at one mesh point: the samples interpolated from it are hidden, every value finite.
+//  - The samples against VTK's vtkProbeFilter on a mesh of tetrahedra of various sizes and shapes:
+//    the same lattice points inside, the same linear interpolation there.
+//  - A point array and a cell array of one name: the association asked for is the one sampled.
+//  - A slab 50 times thinner than wide: the ray caster samples it along its thin axis as finely as
+//    its lattice (one sample per smallest spacing).
 #include "PsiLODImage.h"
+#include "PsiLatticeSampling.h"
 #include "PsiTestCheck.h"
 #include "PsiTestMeshes.h"
 
+#include "vtkCellData.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkDelaunay3D.h"
 #include "vtkDoubleArray.h"
+#include "vtkMinimalStandardRandomSequence.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkProbeFilter.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -81,11 +91,17 @@ bool Hidden(vtkImageData* image, vtkIdType i)
   return ghosts && (ghosts->GetValue(i) & vtkDataSetAttributes::HIDDENPOINT);
 }
 
-psi::LODImage Resample(vtkUnstructuredGrid* grid)
+psi::LODImage Resample(vtkUnstructuredGrid* grid, bool cells = false, int resolution = 64)
 {
-  psi::LODArrays arrays;
-  arrays.Color = "s";
-  return psi::ResampleForLOD(grid, arrays, psi::LODRegion(), psi::DefaultLODResolution, false);
+  psi::LODScalars scalars;
+  scalars.Array = "s";
+  scalars.Cells = cells;
+  return psi::ResampleForLOD(grid, scalars, psi::LODRegion(), resolution);
+}
+
+vtkDataArray* Samples(const psi::LODImage& lod)
+{
+  return lod.Image->GetPointData()->GetArray(psi::LODArrayName);
 }
 
 void CheckBoxFillsItsImage()
@@ -137,7 +153,7 @@ void CheckNaNIsHidden()
   MakeBoxMesh(grid, bounds, 3, [](int, int, int) { return false; });
   grid->GetPointData()->GetArray("s")->SetComponent(0, 0, std::numeric_limits<double>::quiet_NaN());
   const psi::LODImage lod = Resample(grid);
-  vtkDataArray* s = lod.Image->GetPointData()->GetArray("s");
+  vtkDataArray* s = Samples(lod);
   vtkIdType finite = 0;
   for (vtkIdType i = 0; i < s->GetNumberOfTuples(); ++i)
   {
@@ -147,6 +163,134 @@ void CheckNaNIsHidden()
       !Hidden(lod.Image, lod.Image->GetNumberOfPoints() - 1),
     "a NaN: the samples it reaches hidden, every value finite");
 }
+// A Delaunay tetrahedralization of random points in a box (tetrahedra of every size and shape,
+// some slivers) with the scalar sin(x) + y z.
+void MakeRandomMesh(vtkUnstructuredGrid* grid, int points)
+{
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(7);
+  vtkNew<vtkPoints> pts;
+  for (int i = 0; i < points; ++i)
+  {
+    double p[3];
+    for (double& x : p)
+    {
+      x = random->GetRangeValue(-1, 2);
+      random->Next();
+    }
+    pts->InsertNextPoint(p);
+  }
+  vtkNew<vtkUnstructuredGrid> cloud;
+  cloud->SetPoints(pts);
+  vtkNew<vtkDelaunay3D> delaunay;
+  delaunay->SetInputData(cloud);
+  delaunay->Update();
+  grid->ShallowCopy(delaunay->GetOutput());
+  vtkNew<vtkDoubleArray> s;
+  s->SetName("s");
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+  {
+    const double* p = grid->GetPoint(i);
+    s->InsertNextValue(std::sin(p[0]) + p[1] * p[2]);
+  }
+  grid->GetPointData()->AddArray(s);
+}
+
+void CheckAgainstProbeFilter()
+{
+  vtkNew<vtkUnstructuredGrid> grid;
+  MakeRandomMesh(grid, 400);
+  const int resolution = 24;
+  const psi::LODImage lod = Resample(grid, false, resolution);
+  vtkNew<vtkImageData> lattice;
+  lattice->CopyStructure(lod.Image);
+  vtkNew<vtkProbeFilter> probe;
+  probe->SetInputData(lattice);
+  probe->SetSourceData(grid);
+  probe->Update();
+  vtkDataArray* valid = probe->GetOutput()->GetPointData()->GetArray(probe->GetValidPointMaskArrayName());
+  vtkDataArray* expected = probe->GetOutput()->GetPointData()->GetArray("s");
+  vtkDataArray* got = Samples(lod);
+  vtkIdType both = 0, disagree = 0;
+  double worst = 0;
+  for (vtkIdType i = 0; i < lattice->GetNumberOfPoints(); ++i)
+  {
+    const bool in = !Hidden(lod.Image, i), probed = valid->GetTuple1(i) != 0;
+    disagree += in != probed ? 1 : 0;
+    if (in && probed)
+    {
+      ++both;
+      worst = std::max(worst, std::abs(got->GetTuple1(i) - expected->GetTuple1(i)));
+    }
+  }
+  // The mesh the full frame draws has single-precision points: in Delaunay's slivers (heights of
+  // 1e-4) a rounding of 1e-7 moves barycentric coordinates by 1e-3, hence the bound, 1e-3 of the
+  // scalar's range (about 4): far below a color map's 1/255.
+  PSI_CHECK(disagree == 0 && both > 1000 && worst < 4e-3,
+    "random Delaunay mesh (%lld tetrahedra) against vtkProbeFilter: %lld of %lld points inside "
+    "on one side only, largest difference %.3g over %lld",
+    static_cast<long long>(grid->GetNumberOfCells()), static_cast<long long>(disagree),
+    static_cast<long long>(lattice->GetNumberOfPoints()), worst, static_cast<long long>(both));
+}
+
+// Point data s = x; cell data s = -(x of the cell's centre) (as Point Data to Cell Data, passing
+// the point data, then a cell Calculator writing s = -s).
+void CheckAssociationOfOneName()
+{
+  const double bounds[6] = { 0, 1, 0, 1, 0, 1 };
+  vtkNew<vtkUnstructuredGrid> grid;
+  MakeBoxMesh(grid, bounds, 5, [](int, int, int) { return false; });
+  vtkDataArray* point = grid->GetPointData()->GetArray("s");
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+  {
+    point->SetTuple1(i, grid->GetPoint(i)[0]);
+  }
+  vtkNew<vtkDoubleArray> cell;
+  cell->SetName("s");
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    double b[6];
+    grid->GetCell(c)->GetBounds(b);
+    cell->InsertNextValue(-(b[0] + b[1]) / 2);
+  }
+  grid->GetCellData()->AddArray(cell);
+  const psi::LODImage points = Resample(grid, false), cells = Resample(grid, true);
+  const vtkIdType far = points.Image->GetNumberOfPoints() - 1; // x = 1, y = 1, z = 1
+  const double p = Samples(points)->GetTuple1(far), c = Samples(cells)->GetTuple1(far);
+  PSI_CHECK(std::abs(p - 1) < 1e-3 && c < -0.8 && c > -1,
+    "one name, two associations: the point array sampled as points (%g, want 1), the cell array "
+    "as cells (%g, want the last cell's -0.875)", p, c);
+}
+
+void CheckThinSlabSampling()
+{
+  const double bounds[6] = { 0, 10, 0, 10, 0, 0.2 };
+  vtkNew<vtkUnstructuredGrid> grid;
+  MakeBoxMesh(grid, bounds, 3, [](int, int, int) { return false; });
+  const psi::LODImage lod = Resample(grid);
+  const double* h = lod.Image->GetSpacing();
+  PSI_CHECK(lod.SampleDistance <= h[2] * 1.0001,
+    "a slab 50 times thinner than wide: the ray caster's sample distance %g within the thin "
+    "axis's spacing %g", lod.SampleDistance, h[2]);
+}
+
+// Barycentric coordinates reproduce a point and reject a flat tetrahedron.
+void CheckBarycentric()
+{
+  const double a[3] = { 0, 0, 0 }, b[3] = { 2, 0, 0 }, c[3] = { 0, 3, 0 }, d[3] = { 0, 0, 4 };
+  const double p[3] = { 0.5, 0.75, 1 }, flat[3] = { 1, 1.5, 0 };
+  double l[4];
+  const bool ok = psi::Barycentric(a, b, c, d, p, l);
+  double q[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    q[k] = l[0] * a[k] + l[1] * b[k] + l[2] * c[k] + l[3] * d[k];
+  }
+  PSI_CHECK(ok && std::abs(q[0] - p[0]) + std::abs(q[1] - p[1]) + std::abs(q[2] - p[2]) < 1e-12 &&
+      std::abs(l[0] + l[1] + l[2] + l[3] - 1) < 1e-12,
+    "barycentric coordinates reproduce the point");
+  PSI_CHECK(!psi::Barycentric(a, b, c, flat, p, l), "a flat tetrahedron has none");
+}
 } // namespace
 
 int main()
@@ -154,5 +298,9 @@ int main()
   CheckBoxFillsItsImage();
   CheckLShapeHidesTheMissingCube();
   CheckNaNIsHidden();
+  CheckAgainstProbeFilter();
+  CheckAssociationOfOneName();
+  CheckThinSlabSampling();
+  CheckBarycentric();
   return psitest::Report("TestLODImage");
 }
