@@ -189,9 +189,17 @@ bool LODRegion::operator==(const LODRegion& o) const
     std::equal(Box, Box + 6, o.Box);
 }
 
-double LODSampleDistance(const double spacing[3])
+double LODSampleDistance(const double spacing[3], const double direction[3])
 {
-  return std::min({ spacing[0], spacing[1], spacing[2] });
+  const double length = std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] +
+    direction[2] * direction[2]);
+  double cells = 0; // lattice cells per unit of length along the ray, squared
+  for (int k = 0; k < 3; ++k)
+  {
+    const double d = length > 0 ? direction[k] / length : 1 / std::sqrt(3.0);
+    cells += (d / spacing[k]) * (d / spacing[k]);
+  }
+  return 1 / std::sqrt(cells);
 }
 
 LODImage ResampleForLOD(vtkDataSet* piece, const LODScalars& scalars, const LODRegion& region,
@@ -221,7 +229,6 @@ LODImage ResampleForLOD(vtkDataSet* piece, const LODScalars& scalars, const LODR
     FillBeyondBox(lod.Image, MaskName, region.Box);
   }
   BlankOutside(lod.Image, MaskName);
-  lod.SampleDistance = LODSampleDistance(lattice.Spacing);
   return lod;
 }
 

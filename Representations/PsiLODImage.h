@@ -68,11 +68,10 @@ struct LODRegion
   bool operator==(const LODRegion& o) const;
 };
 
-/// The level of detail's image and the ray caster's sample distance for it.
+/// The level of detail's image.
 struct LODImage
 {
   vtkSmartPointer<vtkImageData> Image;
-  double SampleDistance = 0;
 };
 
 /// Samples the tetrahedra of `piece` (an unstructured grid) that the full frame draws with
@@ -83,10 +82,14 @@ PSIVOLUMEREPRESENTATIONS_EXPORT LODImage ResampleForLOD(vtkDataSet* piece,
   const LODScalars& scalars, const LODRegion& region, int resolution,
   const std::function<void(double)>& progress = nullptr);
 
-/// The ray caster's sample distance for a lattice of this spacing: the smallest spacing, so that
-/// a ray crosses every lattice cell along every axis in at least one sample (a thin slab seen
-/// across takes as many samples as its lattice has layers).
-PSIVOLUMEREPRESENTATIONS_EXPORT double LODSampleDistance(const double spacing[3]);
+/// The ray caster's sample distance for a lattice of this spacing and rays along `direction`
+/// (any length): one lattice spacing as the ray sees it, 1 / |(d_x / h_x, d_y / h_y, d_z / h_z)|
+/// for the unit direction d, i.e. one sample per lattice cell in the metric where the cells are
+/// unit cubes. Along an axis that axis's spacing (a thin slab seen across takes as many samples
+/// as its lattice has layers, where one mean spacing took one or two); on a cubic lattice the
+/// spacing in every direction.
+PSIVOLUMEREPRESENTATIONS_EXPORT double LODSampleDistance(
+  const double spacing[3], const double direction[3]);
 
 } // namespace psi
 

@@ -142,6 +142,15 @@ bool PsiVolumeLOD::Update(vtkDataSet* piece, const Scalars& scalars, const Regio
   return this->Image != nullptr;
 }
 
+void PsiVolumeLOD::SetViewDirection(const double direction[3])
+{
+  if (this->Image)
+  {
+    this->Mapper->SetSampleDistance(
+      static_cast<float>(psi::LODSampleDistance(this->Image->GetSpacing(), direction)));
+  }
+}
+
 std::string PsiVolumeLOD::TakeNewError()
 {
   const bool fresh = !this->ErrorTaken;
@@ -158,7 +167,6 @@ void PsiVolumeLOD::Install(const psi::LODImage& lod, const Key& key, double seco
   }
   this->Image = lod.Image;
   this->Crop(key.BuiltRegion);
-  this->Mapper->SetSampleDistance(static_cast<float>(lod.SampleDistance));
   this->Mapper->SetInputData(this->Image);
   this->Built = key;
 }

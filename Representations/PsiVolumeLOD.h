@@ -46,6 +46,9 @@ public:
   /// inputs: the next Update for them does not try again.
   bool Update(vtkDataSet* piece, const Scalars& scalars, const Region& region,
     int resolution = DefaultResolution, const std::function<void(double)>& progress = nullptr);
+  /// Samples the image for rays along `direction` (the camera's view direction, any length):
+  /// one lattice spacing as the ray sees it (psi::LODSampleDistance).
+  void SetViewDirection(const double direction[3]);
   /// Why the last build failed, once: "" when it did not, or when this was already taken.
   std::string TakeNewError();
   /// The mapper that draws the image (its input set by Update or Poll).

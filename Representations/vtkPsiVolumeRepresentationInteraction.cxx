@@ -13,6 +13,7 @@
 #include "vtkAlgorithmOutput.h"
 #include "vtkDataSet.h"
 #include "vtkBoundingBox.h"
+#include "vtkCamera.h"
 #include "vtkInformation.h"
 #include "vtkMultiProcessController.h"
 #include "vtkPVLODVolume.h"
@@ -181,6 +182,12 @@ bool vtkPsiVolumeRepresentation::UpdateVolumeLOD(vtkInformation* inInfo, vtkPVRe
       vtkWarningMacro("Psi Volume: the interactive level of detail could not be built ("
         << error << "); interactive renders draw full frames.");
     }
+  }
+  if (vtkCamera* camera = view ? view->GetActiveCamera() : nullptr)
+  {
+    double direction[3];
+    camera->GetDirectionOfProjection(direction);
+    this->LOD->SetViewDirection(direction);
   }
   return this->LOD->HasImage();
 }

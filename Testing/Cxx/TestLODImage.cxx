@@ -269,9 +269,14 @@ void CheckThinSlabSampling()
   MakeBoxMesh(grid, bounds, 3, [](int, int, int) { return false; });
   const psi::LODImage lod = Resample(grid);
   const double* h = lod.Image->GetSpacing();
-  PSI_CHECK(lod.SampleDistance <= h[2] * 1.0001,
-    "a slab 50 times thinner than wide: the ray caster's sample distance %g within the thin "
-    "axis's spacing %g", lod.SampleDistance, h[2]);
+  const double alongZ[3] = { 0, 0, -2 }, alongX[3] = { 1, 0, 0 };
+  const double z = psi::LODSampleDistance(h, alongZ), x = psi::LODSampleDistance(h, alongX);
+  PSI_CHECK(std::abs(z - h[2]) < 1e-9 * h[2] && std::abs(x - h[0]) < 1e-9 * h[0],
+    "a slab 50 times thinner than wide: one sample per spacing along the thin axis (%g; %g) and "
+    "along a wide one (%g; %g)", z, h[2], x, h[0]);
+  const double cube[3] = { 0.5, 0.5, 0.5 }, diagonal[3] = { 1, -1, 1 };
+  const double d = psi::LODSampleDistance(cube, diagonal);
+  PSI_CHECK(std::abs(d - 0.5) < 1e-12, "a cubic lattice: its spacing along a diagonal (%g)", d);
 }
 
 // Barycentric coordinates reproduce a point and reject a flat tetrahedron.

@@ -185,6 +185,12 @@ void CheckSpheres(Scene& s, const std::vector<Case>& cases)
         "%s: mean error %g, %g%% over 0.05, 99.9th percentile %g", name.c_str(), res.Mean,
         100 * res.Outliers, res.P999);
       PSI_CHECK(res.Covered > W * H / 8, "%s: image nearly empty", name.c_str());
+      // The frame is all its depth-peeling stages: 'Auto' weighs the whole still frame against
+      // its budget, not the last stage's call (psi::FrameClock).
+      PSI_CHECK(s.Mapper->GetLastFrameCalls() > 1 &&
+          s.Mapper->GetLastStillSeconds() == s.Mapper->GetLastRenderSeconds(),
+        "%s: the still frame counted over its %d depth-peeling calls", name.c_str(),
+        s.Mapper->GetLastFrameCalls());
       s.Remove(actors);
     }
   }
