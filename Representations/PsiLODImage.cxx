@@ -149,11 +149,14 @@ vtkSmartPointer<vtkImageData> SampledImage(
   {
     const bool inside = samples.Tet[i] >= 0;
     mask->SetValue(i, inside ? 1 : 0);
-    // TetMesh's u back to the scalar: s = r0 + u (r1 - r0) (psi::UnitScalar inverted)
-    values->SetTypedComponent(i, 0, inside ? r[0] + samples.Scalar[i] * (r[1] - r[0]) : 0);
+    // TetMesh's u back to the scalar: s = r0 + u (r1 - r0) (psi::UnitScalar inverted). A hidden
+    // point takes the range's low end, not 0: the ray caster spans its transfer-function table
+    // over the image's scalar range, and a 0 there widened it (a constant field of 7 drew a
+    // table over [0, 7] for a color map over [7, 7.001]: speckles).
+    values->SetTypedComponent(i, 0, r[0] + (inside ? samples.Scalar[i] : 0) * (r[1] - r[0]));
     if (!samples.Opacity.empty())
     {
-      values->SetTypedComponent(i, 1, inside ? o[0] + samples.Opacity[i] * (o[1] - o[0]) : 0);
+      values->SetTypedComponent(i, 1, o[0] + (inside ? samples.Opacity[i] : 0) * (o[1] - o[0]));
     }
   }
   image->GetPointData()->AddArray(values);

@@ -7,6 +7,10 @@
 #                                             that ParaView (made once and cached, see
 #                                             scripts/debian-system.sh); 5.11, 5.13, 6.1 or all
 #   bash scripts/test.sh --only REGEX         only the tests whose names match REGEX
+#   bash scripts/test.sh --tsan               the level of detail's and the interaction's tests
+#                                             under ThreadSanitizer: the plugin built with
+#                                             PSI_SANITIZE_THREAD=ON into build-tsan/ (only what
+#                                             they need); any report fails its test
 # Further arguments go to each ctest call (e.g. -V).
 #
 # Each test gets its own fresh Xvfb server, started with -noreset: by default Xvfb resets
@@ -26,11 +30,13 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 . "$root/scripts/lib/python-path.sh"
 paraview=""
 only=""
+tsan=""
 ctest_args=()
 while [ "$#" -gt 0 ]; do
   case "$1" in
     --paraview) paraview=${2:?--paraview takes 5.11, 5.13, 6.1 or all}; shift 2 ;;
     --only) only=${2:?--only takes a regular expression}; shift 2 ;;
+    --tsan) tsan=1; shift ;;
     *) ctest_args+=("$1"); shift ;;
   esac
 done
@@ -40,7 +46,15 @@ if [ -n "$paraview" ]; then
 fi
 
 bash "$root/scripts/setup-deps.sh"
-bash "$root/scripts/build.sh"
+if [ -n "$tsan" ]; then
+  export PSI_BUILD_DIR=${PSI_BUILD_DIR:-$root/build-tsan}
+  cmake -S "$root" -B "$PSI_BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPSI_SANITIZE_THREAD=ON \
+    -DPSI_BUILD_BENCHMARKS=OFF >/dev/null
+  cmake --build "$PSI_BUILD_DIR" -j"$(nproc)" --target PsiVolume TestLODImage
+  only=${only:-'^(PsiRepresentations\.LODImage|PsiPython\.(interaction|lod_inputs))$'}
+else
+  bash "$root/scripts/build.sh"
+fi
 # pvpython 5.13+ loses buffered output when a script leaves through os._exit into a pipe
 # (psivolume.process): unbuffered, a failing test's check lines reach the log.
 export PYTHONUNBUFFERED=1
