@@ -4,7 +4,8 @@
 // (psi::ReferenceSurface, the same triangles GL draws). A translucent unlit sphere in front of
 // the volume, behind it, cutting through it, and two nested spheres cutting through it; each with
 // the geometry-shader and the compute projector (--projector), perspective and parallel.
-// Without depth peeling for volumes VTK draws volumes after all translucent geometry, which
+// Spheres in front of and behind an opaque plane with the volume between. Without depth peeling
+// for volumes VTK draws volumes after all translucent geometry, which
 // cannot be intermixed: the mapper then warns once.
 #include "PsiReferenceRaycaster.h"
 #include "PsiTestCheck.h"
@@ -218,6 +219,40 @@ void CheckSphereAndOpaquePlane(Scene& s, const Sphere& sphereThrough)
   ren->RemoveActor(plane);
 }
 
+// Translucent geometry in front of and behind opaque geometry, the volume between: a sphere
+// between the eye and the opaque plane inside the volume, another behind the plane (seen only
+// around its edges). Each stage integrates the volume from the layers in front up to the plane
+// and nothing behind it; the sphere behind shows only where the plane does not hide it.
+void CheckSpheresAroundOpaquePlane(Scene& s)
+{
+  vtkRenderer* ren = s.View.Renderer;
+  ren->GetActiveCamera()->SetParallelProjection(false);
+  ren->ResetCameraClippingRange(-20, 20, -20, 20, -20, 20);
+  psi::ReferenceScene ref = psitest::MakeReferenceScene(s.Grid, s.TF);
+  const double toEye[3] = { 21 / 38.5, 14 / 38.5, 29 / 38.5 };
+  const Sphere front{ { 3.5 * toEye[0], 3.5 * toEye[1], 3.5 * toEye[2] }, 2.0,
+    { 1.0, 0.5, 0.25 }, 0.4 };
+  const Sphere behind{ { -3.0 * toEye[0] + 5.0, -3.0 * toEye[1], -3.0 * toEye[2] }, 3.0,
+    { 0.3, 0.4, 1.0 }, 0.4 };
+  vtkSmartPointer<vtkActor> a = MakeSphere(front, ref);
+  vtkSmartPointer<vtkActor> b = MakeSphere(behind, ref);
+  vtkSmartPointer<vtkActor> plane = psitest::MakeOpaquePlane(4.0);
+  for (vtkActor* actor : { a.Get(), b.Get(), plane.Get() })
+  {
+    ren->AddActor(actor);
+  }
+  const psitest::Result res = psitest::Compare("spheres_around_opaque_plane", s.View.Window, ren,
+    s.View.Volume, ref, plane, s.OutDir, { a, b });
+  PSI_CHECK(res.Mean < 0.004 && res.Outliers < 0.002 && res.P999 < 0.015,
+    "spheres in front of and behind an opaque plane: mean error %g, %g%% over 0.05, 99.9th "
+    "percentile %g", res.Mean, 100 * res.Outliers, res.P999);
+  PSI_CHECK(res.Covered > W * H / 8, "spheres around an opaque plane: image nearly empty");
+  for (vtkActor* actor : { a.Get(), b.Get(), plane.Get() })
+  {
+    ren->RemoveActor(actor);
+  }
+}
+
 // Peeling stopped after one peel: the two inner layers and the volume between them are left to
 // the pass's final alpha blend, which composites them in draw order (VTK's approximation), so
 // the image differs from the exact one only inside the inner sphere, by about one layer. Then,
@@ -261,6 +296,7 @@ int main(int argc, char* argv[])
   const std::vector<Case> cases = Cases();
   CheckSpheres(s, cases);
   CheckSphereAndOpaquePlane(s, cases[2].Spheres[0]);
+  CheckSpheresAroundOpaquePlane(s);
   CheckOnePeelAndNoVolumePeeling(s, cases[3].Spheres);
   return psitest::Report("TestPsiTranslucentGeometry");
 }
