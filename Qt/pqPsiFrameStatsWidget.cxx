@@ -13,10 +13,13 @@
 #include "vtkSMProxy.h"
 #include "vtkSMSession.h"
 
+#include <QApplication>
+#include <QByteArray>
 #include <QLabel>
 #include <QLocale>
 #include <QRegularExpression>
 #include <QShowEvent>
+#include <QStringList>
 #include <QVBoxLayout>
 
 namespace
@@ -219,4 +222,21 @@ bool pqPsiFrameStatsWidget::showsFrameTime() const
     "^last frame: ([0-9]+\\.[0-9]+) ms \\(sort ([0-9]+\\.[0-9]+) ms\\)");
   const QRegularExpressionMatch match = pattern.match(this->Label->text());
   return match.hasMatch() && match.captured(1).toDouble() > 0;
+}
+
+//-----------------------------------------------------------------------------
+const char* pqPsiFrameStatsReadouts()
+{
+  static QByteArray text;
+  QStringList shown;
+  for (QWidget* widget : QApplication::allWidgets())
+  {
+    auto readout = qobject_cast<pqPsiFrameStatsWidget*>(widget);
+    if (readout && readout->isVisible())
+    {
+      shown << readout->readout();
+    }
+  }
+  text = shown.join('\n').toUtf8();
+  return text.constData();
 }

@@ -16,7 +16,9 @@
  * client's copy of the representation, which draws nothing there.
  *
  * The Qt properties `shownTetrahedra` and `showsFrameTime` parse the text the label shows, for
- * GUI tests (QtTesting's pqcheck compares exact strings, and frame times vary).
+ * GUI tests (QtTesting's pqcheck compares exact strings, and frame times vary). The text itself
+ * reaches the client's Python shell through pqPsiFrameStatsReadouts() below: that Python has no
+ * Qt bindings, and a pqcheck cannot compare the label with values known only while the test runs.
  */
 #ifndef pqPsiFrameStatsWidget_h
 #define pqPsiFrameStatsWidget_h
@@ -88,5 +90,11 @@ private:
   QPointer<pqView> WatchedView;
   bool ViewFromRepresentation = false;
 };
+
+/// For GUI tests that compare the read-out with the representation's information properties from
+/// the client's Python shell (ctypes, Testing/XML/PsiGUICheck.py): the text of every read-out
+/// widget shown now, one line each (UTF-8; "" when none is shown). The pointer stays valid until
+/// the next call. Call it on the GUI thread, where the shell runs.
+extern "C" Q_DECL_EXPORT const char* pqPsiFrameStatsReadouts();
 
 #endif

@@ -5,7 +5,9 @@
 # paraview_add_client_tests and paraview_add_client_server_tests run the client under ParaView's
 # smTestDriver, which for the second starts a pvserver with the plugin and connects the client
 # to it, so the read-out must come from the server, which renders. Need an X server (run ctest
-# under xvfb-run) and a ParaView built with Qt, as the widget does.
+# under xvfb-run) and a ParaView built with Qt, as the widget does. The script also compares the
+# read-out's numbers with the representation's information properties through the Python shell
+# (XML/PsiGUICheck.py's check_readout, found under --data-directory as $PARAVIEW_DATA_ROOT).
 if (NOT PARAVIEW_USE_QT)
   return ()
 endif ()
@@ -21,6 +23,7 @@ set(psi_panel_args
   LOAD_PLUGIN PsiVolume
   PLUGIN_PATH "$<TARGET_FILE_DIR:PsiVolume>"
   TEST_DIRECTORY "${psi_panel_test_dir}"
+  DATA_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}"
   TEST_SCRIPTS "${CMAKE_CURRENT_SOURCE_DIR}/XML/PsiVolumePanel.xml")
 paraview_add_client_tests(PREFIX PsiGUI ${psi_panel_args})
 # smTestDriver starts the server under mpiexec (ParaView is built with MPI): as root too, and
@@ -37,6 +40,7 @@ set_tests_properties(PsiGUI.PsiVolumePanel PsiGUI.ClientServer.PsiVolumePanel PR
   LABELS "GUI"
   TIMEOUT 240
   # QtTesting prints these when a widget path does not exist or a pqcheck fails; a failed check
-  # also makes paraview exit non-zero, and smTestDriver with it.
-  FAIL_REGULAR_EXPRESSION "Couldn't find object|Failed to parse|Expecting:|Unhandled"
+  # also makes paraview exit non-zero, and smTestDriver with it. "PsiGUICheck FAILED": a read-out
+  # check of the Python shell, whose result does not reach the exit code.
+  FAIL_REGULAR_EXPRESSION "Couldn't find object|Failed to parse|Expecting:|Unhandled|PsiGUICheck FAILED"
   RESOURCE_LOCK PsiGUI)

@@ -15,6 +15,7 @@
 # stdout/stderr (the shell widget's output is not on the console): Testing/GUI.cmake counts
 # "PsiGUICheck passed:" lines and fails on "PsiGUICheck FAILED".
 import os
+import re
 import sys
 
 LEVEL = 8  # per-channel difference (0-255) above which a pixel counts as changed
@@ -149,3 +150,192 @@ def check_report(source):
     except Exception as e:  # noqa: BLE001 - any error is a failed check, said as such
         _say(sys.__stderr__, "PsiGUICheck FAILED: accuracy report: %r" % (e,))
         return False
+
+
+# --- the panel's read-out of the last frame against the representation's own properties ------
+#
+# The read-out (Qt/pqPsiFrameStatsWidget) shows "last frame: X ms (sort Y ms), N tetrahedra,
+# M cells skipped[, K sort cycles]": X and Y are LastRenderSeconds and LastSortSeconds in
+# milliseconds, 2 decimals below 10 ms and 1 from there; N, M and K are NumberOfTetrahedra,
+# NumberOfSkippedCells and LastSortCycles with thousands separators, K only when above 0.
+# QtTesting's pqcheck compares a widget's property with a string fixed in the script, and the
+# client's Python has no Qt bindings, so the label's text is read through the plugin's C function
+# pqPsiFrameStatsReadouts (ctypes) and compared here, in the same Python command as the
+# properties: no render can come in between, both are of the same frame.
+
+_READOUT = re.compile(
+    r"^last frame: ([0-9]+\.[0-9]+) ms \(sort ([0-9]+\.[0-9]+) ms\), ([0-9,]+) tetrahedra, "
+    r"([0-9,]+) cells skipped(?:, ([0-9,]+) sort cycles)?$")
+# (shown in the read-out's n-th group, information property, how the processes' values combine)
+_SHOWN = (
+    (1, "LastRenderSeconds", "max"),
+    (2, "LastSortSeconds", "max"),
+    (3, "NumberOfTetrahedra", "sum"),
+    (4, "NumberOfSkippedCells", "sum"),
+    (5, "LastSortCycles", "sum"),
+)
+
+
+def _shown_readouts():
+    """The text of every read-out shown now, from the plugin loaded in this client."""
+    import ctypes
+
+    from paraview import servermanager
+
+    plugins = servermanager.vtkSMProxyManager.GetProxyManager().GetPluginManager() \
+        .GetLocalInformation()
+    paths = [plugins.GetPluginFileName(i) for i in range(plugins.GetNumberOfPlugins())
+             if plugins.GetPluginName(i) == "PsiVolume" and plugins.GetPluginLoaded(i)]
+    if not paths:
+        raise RuntimeError("the PsiVolume plugin is not loaded in the client")
+    # RTLD_NOLOAD: the library ParaView loaded, never a second copy (whose widget class would
+    # not be the one on the panel)
+    library = ctypes.CDLL(paths[0], mode=os.RTLD_NOLOAD | os.RTLD_LAZY)
+    readouts = library.pqPsiFrameStatsReadouts
+    readouts.restype = ctypes.c_char_p
+    text = readouts().decode("utf-8")
+    return text.split("\n") if text else []
+
+
+def _server_values(owner, names):
+    """{name: value} of the information properties `names` of the 'Psi Volume' proxy `owner` as
+    the server's processes hold them, combined as in _SHOWN (counts summed, times the largest):
+    in a client/server session ParaView pulls information properties from the client's copy of
+    the representation, which draws nothing. Each server process calls the property's own
+    command on its representation; the results are reduced over the server's MPI processes
+    (vtkMultiProcessController::AllReduce) and read from the first one, all through
+    ClientServer streams."""
+    from paraview.modules.vtkRemotingClientServerStream import vtkClientServerStream
+    from paraview.modules.vtkRemotingCore import vtkPVSession
+
+    session = owner.GetSession()
+    where = vtkPVSession.RENDER_SERVER
+
+    def run(text):
+        stream = vtkClientServerStream()
+        if not stream.StreamFromString(text):
+            raise RuntimeError("bad ClientServer stream: %s" % text)
+        session.ExecuteStream(where, stream, False)
+        return session.GetLastResult(where).StreamToString().strip()
+
+    ops = {"max": 0, "sum": 2}  # vtkCommunicator::MAX_OP, SUM_OP
+    # interpreter ids for this query only (ParaView's own objects go by their global ids)
+    ids = {"rep": 5050501, "ctrl": 5050502, "max_in": 5050503, "max_out": 5050504,
+           "sum_in": 5050505, "sum_out": 5050506}
+    combine = dict((name, how) for _, name, how in _SHOWN)
+    lines = ["New vtkDoubleArray id_value(%d)" % ids["max_in"],
+             "New vtkDoubleArray id_value(%d)" % ids["max_out"],
+             "New vtkIdTypeArray id_value(%d)" % ids["sum_in"],
+             "New vtkIdTypeArray id_value(%d)" % ids["sum_out"],
+             "Invoke id_value(1) GetVTKObject uint32_value(%d)" % owner.GetGlobalID(),
+             "Assign id_value(%d) LastResult()" % ids["rep"]]
+    index = {}  # name: (how, its position in the array of its kind)
+    filled = {"max": 0, "sum": 0}
+    for name in names:
+        how = combine[name]
+        index[name] = (how, filled[how])
+        filled[how] += 1
+        lines += ["Invoke id_value(%d) %s" % (ids["rep"], owner.GetProperty(name).GetCommand()),
+                  "Invoke id_value(%d) InsertNextValue LastResult()" % ids[how + "_in"]]
+    lines += ["Invoke id_value(1) GetProcessModule",
+              "Invoke LastResult() GetGlobalController",
+              "Assign id_value(%d) LastResult()" % ids["ctrl"]]
+    for how in ("max", "sum"):
+        lines.append("Invoke id_value(%d) AllReduce id_value(%d) id_value(%d) int32_value(%d)"
+                     % (ids["ctrl"], ids[how + "_in"], ids[how + "_out"], ops[how]))
+    try:
+        run("\n".join(lines))
+        values = {}
+        for name, (how, i) in index.items():
+            reply = run("Invoke id_value(%d) GetValue int64_value(%d)" % (ids[how + "_out"], i))
+            match = re.match(r"^Reply (?:float64|int64)\(([^)]*)\)$", reply)
+            if not match:
+                raise RuntimeError("the server answered %r for %s" % (reply, name))
+            values[name] = float(match.group(1)) if how == "max" else int(match.group(1))
+        return values
+    finally:
+        run("\n".join("Delete id_value(%d)" % i for i in ids.values()))
+
+
+def _property_values(rep):
+    """{name: value} of the read-out's information properties of the representation `rep`: pulled
+    with UpdatePropertyInformation where this process renders (builtin session), else from the
+    server's processes (_server_values)."""
+    from paraview import servermanager
+
+    names = [name for _, name, _ in _SHOWN]
+    owner = rep.GetProperty(names[0]).SMProperty.GetParent()  # the 'Psi Volume' sub-proxy
+    if servermanager.ActiveConnection.IsRemote():
+        return _server_values(owner, names), "the server's processes"
+    rep.UpdatePropertyInformation()
+    return dict((name, rep.GetProperty(name).SMProperty.GetElement(0)) for name in names), \
+        "properties"
+
+
+def _compare_milliseconds(shown, seconds):
+    """'' if the read-out's `shown` milliseconds are `seconds` as the read-out rounds them (2
+    decimals below 10 ms, else 1), else what is wrong. Values read from the server come with 6
+    significant digits, hence the relative slack."""
+    ms = 1000.0 * seconds
+    decimals = len(shown.split(".")[1])
+    if decimals != (2 if ms < 10 else 1) and abs(ms - 10) > 1e-3:
+        return "%s ms has %d decimals for %.6g ms" % (shown, decimals, ms)
+    if abs(float(shown) - ms) > 0.5 * 10 ** -decimals + 1e-5 * ms:
+        return "%s ms shown for %.6g ms" % (shown, ms)
+    return ""
+
+
+def check_readout(stage):
+    """Whether the read-out shown on the panel has the numbers of the active representation's
+    information properties (the same frame: read in this one call), each within the read-out's
+    rounding. Prints "PsiGUICheck passed:" or "PsiGUICheck FAILED" (`stage` names the check)
+    and returns the verdict."""
+    try:
+        from paraview import simple
+
+        readouts = _shown_readouts()
+        if len(readouts) != 1:
+            raise RuntimeError("%d read-outs shown: %r" % (len(readouts), readouts))
+        match = _READOUT.match(readouts[0])
+        if not match:
+            raise RuntimeError("the read-out %r is not of a drawn frame" % readouts[0])
+        values, source = _property_values(simple.GetDisplayProperties())
+        if not (values["LastRenderSeconds"] > 0 and values["NumberOfTetrahedra"] > 0):
+            raise RuntimeError("no frame in the properties: %r" % values)
+        wrong = []
+        for group, name, how in _SHOWN:
+            shown = match.group(group)
+            if how == "max":
+                problem = _compare_milliseconds(shown, values[name])
+            elif shown is None:  # sort cycles: shown only when some were broken
+                problem = "" if values[name] == 0 else "%s %d not shown" % (name, values[name])
+            else:
+                count = int(shown.replace(",", ""))
+                problem = "" if count == values[name] else "%s shown for %d" % (shown, values[name])
+            if problem:
+                wrong.append("%s: %s" % (name, problem))
+        summary = "%r against %s %s" % (readouts[0], source, ", ".join(
+            "%s=%s" % (name, values[name]) for _, name, _ in _SHOWN))
+        if wrong:
+            _say(sys.__stderr__, "PsiGUICheck FAILED: read-out (%s): %s; %s"
+                 % (stage, "; ".join(wrong), summary))
+            return False
+        _say(sys.__stdout__, "PsiGUICheck passed: read-out (%s): %s" % (stage, summary))
+        return True
+    except Exception as e:  # noqa: BLE001 - any error is a failed check, said as such
+        _say(sys.__stderr__, "PsiGUICheck FAILED: read-out (%s): %r" % (stage, e))
+        return False
+
+
+def hide_if_all_passed(verdicts, expected):
+    """Hides the active representation if `verdicts` holds `expected` True values: the read-out
+    then says the representation is hidden, which the script checks with pqcheck. A check that
+    never ran (an error in the Python shell is not reported anywhere else) leaves it shown, and
+    the test fails there."""
+    from paraview import simple
+
+    if len(verdicts) == expected and all(verdicts):
+        simple.Hide()
+    else:
+        _say(sys.__stderr__, "PsiGUICheck FAILED: read-out checks: %r, %d expected"
+             % (verdicts, expected))
