@@ -9,10 +9,12 @@
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGridBase.h"
 #include "vtkUnstructuredGridVolumeMapper.h"
+#include "vtkVolumeProperty.h"
 
 #include <algorithm>
 #include <cmath>
@@ -190,6 +192,38 @@ bool LODRegion::operator==(const LODRegion& o) const
 {
   return Parallel == o.Parallel && std::equal(Global, Global + 6, o.Global) &&
     std::equal(Box, Box + 6, o.Box);
+}
+
+void LODOpacityFunction(vtkPiecewiseFunction* opacity, vtkPiecewiseFunction* out, int subdivisions)
+{
+  out->RemoveAllPoints();
+  out->SetClamping(opacity->GetClamping());
+  const int n = opacity->GetSize();
+  double node[4], next[4];
+  for (int i = 0; i < n; ++i)
+  {
+    opacity->GetNodeValue(i, node);
+    const int pieces = i + 1 < n ? std::max(1, subdivisions) : 1;
+    if (i + 1 < n)
+    {
+      opacity->GetNodeValue(i + 1, next);
+    }
+    for (int k = 0; k < pieces; ++k)
+    {
+      const double x = k == 0 ? node[0] : node[0] + (next[0] - node[0]) * k / pieces;
+      const double a = k == 0 ? node[1] : opacity->GetValue(x);
+      out->AddPoint(x, 1 - std::exp(-std::max(a, 0.0))); // a' = 1 - exp(-a)
+    }
+  }
+}
+
+void LODVolumeProperty(vtkVolumeProperty* property, vtkVolumeProperty* out)
+{
+  out->DeepCopy(property);
+  // the level of detail's image has one scalar (and a dependent opacity): the first function
+  vtkNew<vtkPiecewiseFunction> remapped;
+  LODOpacityFunction(property->GetScalarOpacity(0), remapped);
+  out->SetScalarOpacity(0, remapped);
 }
 
 double LODSampleDistance(const double spacing[3], const double direction[3])

@@ -24,6 +24,7 @@
 #include <functional>
 #include <string>
 
+class vtkPiecewiseFunction;
 class vtkUnstructuredGridVolumeMapper;
 class vtkVolumeProperty;
 
@@ -90,6 +91,19 @@ PSIVOLUMEREPRESENTATIONS_EXPORT LODImage ResampleForLOD(vtkDataSet* piece,
 /// spacing in every direction.
 PSIVOLUMEREPRESENTATIONS_EXPORT double LODSampleDistance(
   const double spacing[3], const double direction[3]);
+
+/// The opacity function for VTK's ray caster that draws `opacity` as 'Psi Volume' does. 'Psi
+/// Volume' reads an opacity value a as an attenuation of a per unit distance (transmittance
+/// exp(-a d / unit) over d, the table of psi::TransferFunctionTable); VTK's ray caster as an
+/// opacity per unit distance (1 - (1 - a')^(d / unit)). They agree for a' = 1 - exp(-a): the same
+/// at small a, and where a nears 1 the ray caster's would be opaque at once. `out` gets a' at
+/// `opacity`'s nodes and at `subdivisions` points between each two (a' is not linear in a).
+PSIVOLUMEREPRESENTATIONS_EXPORT void LODOpacityFunction(
+  vtkPiecewiseFunction* opacity, vtkPiecewiseFunction* out, int subdivisions = 8);
+
+/// A copy of `property` whose (first) scalar opacity function is LODOpacityFunction's.
+PSIVOLUMEREPRESENTATIONS_EXPORT void LODVolumeProperty(
+  vtkVolumeProperty* property, vtkVolumeProperty* out);
 
 } // namespace psi
 

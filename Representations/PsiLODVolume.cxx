@@ -1,5 +1,7 @@
 #include "PsiLODVolume.h"
 
+#include "PsiLODImage.h"
+
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkLODProp3D.h"
 #include "vtkObjectFactory.h"
@@ -18,7 +20,8 @@ int PsiLODVolume::HasTranslucentPolygonalGeometry()
   return this->SelectLOD() == this->LowLODId && !this->LowLODIsVolume() ? 1 : 0;
 }
 
-// A volume LOD shares the volume property, as the high LOD does; a surface LOD keeps its own.
+// A volume LOD draws with the volume property's copy (UpdateLowLODVolumeProperty); a surface LOD
+// keeps its own.
 void PsiLODVolume::UpdateLODProperty()
 {
   if (!this->Property)
@@ -31,6 +34,16 @@ void PsiLODVolume::UpdateLODProperty()
   }
   if (this->LowLODIsVolume())
   {
-    this->LODProp->SetLODProperty(this->LowLODId, this->Property);
+    this->UpdateLowLODVolumeProperty();
+    this->LODProp->SetLODProperty(this->LowLODId, this->LowLODVolumeProperty.Get());
+  }
+}
+
+void PsiLODVolume::UpdateLowLODVolumeProperty()
+{
+  if (this->Property && this->Property->GetMTime() > this->LowLODVolumePropertyTime)
+  {
+    psi::LODVolumeProperty(this->Property, this->LowLODVolumeProperty);
+    this->LowLODVolumePropertyTime = this->Property->GetMTime();
   }
 }

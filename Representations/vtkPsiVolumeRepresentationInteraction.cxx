@@ -4,6 +4,7 @@
 // drew the frame. The rest of the representation is in vtkPsiVolumeRepresentation.cxx.
 #include "vtkPsiVolumeRepresentation.h"
 
+#include "PsiLODVolume.h"
 #include "PsiSceneQueries.h"
 #include "PsiSettings.h"
 #include "PsiVolumeLOD.h"
@@ -182,6 +183,10 @@ bool vtkPsiVolumeRepresentation::UpdateVolumeLOD(vtkInformation* inInfo, vtkPVRe
       vtkWarningMacro("Psi Volume: the interactive level of detail could not be built ("
         << error << "); interactive renders draw full frames.");
     }
+  }
+  if (auto* actor = PsiLODVolume::SafeDownCast(this->Actor))
+  {
+    actor->UpdateLowLODVolumeProperty(); // after a transfer-function edit
   }
   if (vtkCamera* camera = view ? view->GetActiveCamera() : nullptr)
   {

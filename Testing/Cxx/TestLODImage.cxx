@@ -12,6 +12,7 @@
 //  - The samples against VTK's vtkProbeFilter on a mesh of tetrahedra of various sizes and shapes:
 //    the same lattice points inside, the same linear interpolation there.
 //  - A point array and a cell array of one name: the association asked for is the one sampled.
+//  - The ray caster's opacity function: 1 - exp(-a) of 'Psi Volume''s a, at the nodes and between.
 //  - A slab 50 times thinner than wide: the ray caster samples it along its thin axis as finely as
 //    its lattice (one sample per smallest spacing).
 #include "PsiLODImage.h"
@@ -24,6 +25,7 @@
 #include "vtkDelaunay3D.h"
 #include "vtkDoubleArray.h"
 #include "vtkMinimalStandardRandomSequence.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -279,6 +281,23 @@ void CheckThinSlabSampling()
   PSI_CHECK(std::abs(d - 0.5) < 1e-12, "a cubic lattice: its spacing along a diagonal (%g)", d);
 }
 
+// VTK's ray caster composites 1 - (1 - a')^(d / unit) per sample, 'Psi Volume' attenuates by
+// exp(-a d / unit): equal for a' = 1 - exp(-a), everywhere along a ramp from 0 to 1.
+void CheckRayCasterOpacity()
+{
+  vtkNew<vtkPiecewiseFunction> ramp, out;
+  ramp->AddPoint(0, 0);
+  ramp->AddPoint(10, 1);
+  psi::LODOpacityFunction(ramp, out);
+  double worst = 0;
+  for (double x = 0; x <= 10; x += 0.125)
+  {
+    worst = std::max(worst, std::abs(out->GetValue(x) - (1 - std::exp(-ramp->GetValue(x)))));
+  }
+  PSI_CHECK(worst < 2e-3 && std::abs(out->GetValue(10) - (1 - std::exp(-1.0))) < 1e-12,
+    "the ray caster's opacity 1 - exp(-a) along a ramp (worst %.2g)", worst);
+}
+
 // Barycentric coordinates reproduce a point and reject a flat tetrahedron.
 void CheckBarycentric()
 {
@@ -307,5 +326,6 @@ int main()
   CheckAssociationOfOneName();
   CheckThinSlabSampling();
   CheckBarycentric();
+  CheckRayCasterOpacity();
   return psitest::Report("TestLODImage");
 }

@@ -81,7 +81,9 @@ def parallel_main():
         t.finish()
     ref, ref_still = np.load(out), np.load(out + ".still.npy")
     t.check(testing.covered(ref, BG) > 0.2 * SIZE * SIZE, "serial image not empty")
-    t.check(testing.mean_error(ref, ref_still) > 0.5 / 255,
+    # (0.49/255 apart on this scene since the level of detail reads the opacity as 'Psi Volume'
+    # does: a still frame drawn instead would be 0)
+    t.check(testing.mean_error(ref, ref_still) > 0.2 / 255,
             "the serial level of detail is not the still frame (mean |diff| %.3f/255)"
             % (255 * testing.mean_error(ref, ref_still)))
 
