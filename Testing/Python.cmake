@@ -75,6 +75,12 @@ endif ()
 # renders or screenshots, close to the full frame; rebuilt for new arrays and data; hard inputs.
 psi_add_python_test(interaction TIMEOUT 300 INSTALLED)
 
+# Scenes nobody wrote by hand: a fixed set of seeds of the randomized scene checker (meshes,
+# arrays, transfer functions, cameras and settings drawn at random, each still frame against the
+# exact reference, the interactive frame against the still one). `--seeds N` runs more.
+psi_add_python_test(random_scenes ARGS --first 0 --seeds 16 TIMEOUT 900
+  ENVIRONMENT "PSI_REFERENCE_RENDER=$<TARGET_FILE:psi_reference_render>")
+
 # The level of detail on common real inputs, against the still frame: built in the first
 # interactive render, one name for a point and a cell array, array and component switches, a
 # thin slab, a representation deleted and replaced.
