@@ -101,6 +101,25 @@ def write_png(rgb, path):
     writer.Write()
 
 
+def one_tetrahedron(name="s", size=1.0):
+    """A vtkUnstructuredGrid of one tetrahedron, corners at the origin and `size` along each axis,
+    with the point array `name` = 0, 1, 2, 3."""
+    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+    from vtkmodules.vtkCommonDataModel import VTK_TETRA, vtkUnstructuredGrid
+    grid = vtkUnstructuredGrid()
+    points = vtkPoints()
+    for p in ((0, 0, 0), (size, 0, 0), (0, size, 0), (0, 0, size)):
+        points.InsertNextPoint(p)
+    grid.SetPoints(points)
+    grid.InsertNextCell(VTK_TETRA, 4, [0, 1, 2, 3])
+    s = vtkDoubleArray()
+    s.SetName(name)
+    for v in (0.0, 1.0, 2.0, 3.0):
+        s.InsertNextValue(v)
+    grid.GetPointData().AddArray(s)
+    return grid
+
+
 def apply_requested(display):
     """Gives a 'Psi Volume' display the projector the test's command line asks for
     (`--projector compute` or `--projector geometry`; CTest's `.compute` variants), and returns it."""

@@ -222,20 +222,8 @@ simple.Show(src, view)
 
 # --- Hard inputs: an empty mesh, one tetrahedron, NaN scalars.
 def one_tetrahedron():
-    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
-    from vtkmodules.vtkCommonDataModel import VTK_TETRA, vtkUnstructuredGrid
     from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
-    grid = vtkUnstructuredGrid()
-    points = vtkPoints()
-    for p in ((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)):
-        points.InsertNextPoint(p)
-    grid.SetPoints(points)
-    grid.InsertNextCell(VTK_TETRA, 4, [0, 1, 2, 3])
-    s = vtkDoubleArray()
-    s.SetName("s")
-    for v in (0.0, 1.0, 2.0, 3.0):
-        s.InsertNextValue(v)
-    grid.GetPointData().AddArray(s)
+    grid = testing.one_tetrahedron()
     path = os.path.join(tempfile.mkdtemp(), "one.vtu")
     writer = vtkXMLUnstructuredGridWriter()
     writer.SetFileName(path)

@@ -100,23 +100,6 @@ def delaunay(rng, n):
                              Function="100*sin(coordsX/2)*cos(coordsY/3) + 10*coordsZ")
 
 
-def one_tetrahedron():
-    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
-    from vtkmodules.vtkCommonDataModel import VTK_TETRA, vtkUnstructuredGrid
-    grid = vtkUnstructuredGrid()
-    pts = vtkPoints()
-    for p in ((0, 0, 0), (4, 0, 0), (0, 4, 0), (0, 0, 4)):
-        pts.InsertNextPoint(p)
-    grid.SetPoints(pts)
-    grid.InsertNextCell(VTK_TETRA, 4, [0, 1, 2, 3])
-    s = vtkDoubleArray()
-    s.SetName("RTData")
-    for v in (0.0, 1.0, 2.0, 3.0):
-        s.InsertNextValue(v)
-    grid.GetPointData().AddArray(s)
-    return produce(grid)
-
-
 def make_mesh(s):
     kind = s.pick("mesh", ["wavelet", "wavelet", "thin", "long", "offset", "holes", "delaunay",
                            "one", "empty", "bluntfin"])
@@ -131,7 +114,7 @@ def make_mesh(s):
     if kind == "delaunay":
         return delaunay(s.rng, 300), "RTData"
     if kind == "one":
-        return one_tetrahedron(), "RTData"
+        return produce(testing.one_tetrahedron("RTData", 4.0)), "RTData"
     src = wavelet(half)
     if kind in ("thin", "long", "offset"):
         t = simple.Transform(Input=src)
