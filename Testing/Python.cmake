@@ -43,18 +43,21 @@ endforeach ()
 set_tests_properties(PsiPython.bad_input.large PROPERTIES RUN_SERIAL ON)
 
 # MPI ordered compositing: 2 pvbatch ranks against a serial render, the still frame (mpi) and
-# the interactive level of detail (mpi_lod).
+# the interactive level of detail (mpi_lod). Under the MPI watchdog (PSI_MPI_WATCHDOG_COMMAND,
+# Testing/CMakeLists.txt): a hang ends with each rank's stacks, well before CTest's timeout.
 if (PVBATCH_EXECUTABLE AND MPIEXEC_EXECUTABLE)
   set(environment "PSI_PVBATCH=${PVBATCH_EXECUTABLE}" "OMPI_MCA_rmaps_base_oversubscribe=1")
   foreach (name IN ITEMS mpi mpi_lod)
-    set(command "${MPIEXEC_EXECUTABLE}" --allow-run-as-root -n 2 "${PVBATCH_EXECUTABLE}"
-      --force-offscreen-rendering "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_${name}.py")
+    set(command ${PSI_MPI_WATCHDOG_COMMAND} "${MPIEXEC_EXECUTABLE}" --allow-run-as-root -n 2
+      "${PVBATCH_EXECUTABLE}" --force-offscreen-rendering
+      "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_${name}.py")
     add_test(NAME PsiPython.${name} COMMAND ${command})
     set_tests_properties(PsiPython.${name} PROPERTIES
       ENVIRONMENT "PSI_PLUGIN=$<TARGET_FILE:PsiVolume>;${PSI_PYTHONPATH};${environment}"
       SKIP_RETURN_CODE 77
-      TIMEOUT 240)
-    psi_add_installed_test(${name} TIMEOUT 240 ENVIRONMENT ${environment} COMMAND ${command})
+      TIMEOUT ${PSI_MPI_TEST_TIMEOUT})
+    psi_add_installed_test(${name} TIMEOUT ${PSI_MPI_TEST_TIMEOUT} ENVIRONMENT ${environment}
+      COMMAND ${command})
     set_tests_properties(PsiPython.${name} PsiInstalled.${name} PROPERTIES RUN_SERIAL ON)
   endforeach ()
 else ()
@@ -62,9 +65,10 @@ else ()
 endif ()
 
 # Client-server: a pvpython client renders through `mpiexec -n 2 pvserver` (remote rendering,
-# ordered compositing on the server) and compares with a serial render.
+# ordered compositing on the server) and compares with a serial render. The client runs under
+# the MPI watchdog, whose stacks then cover the client and the server's ranks it started.
 if (PVSERVER_EXECUTABLE AND MPIEXEC_EXECUTABLE)
-  psi_add_python_test(pvserver TIMEOUT 240 INSTALLED
+  psi_add_python_test(pvserver MPI_WATCHDOG INSTALLED
     ENVIRONMENT "PSI_PVSERVER=${PVSERVER_EXECUTABLE};PSI_MPIEXEC=${MPIEXEC_EXECUTABLE};OMPI_MCA_rmaps_base_oversubscribe=1")
   set_tests_properties(PsiPython.pvserver PsiInstalled.pvserver PROPERTIES RUN_SERIAL ON)
 else ()

@@ -60,7 +60,10 @@ from psivolume import data, process, session, testing
 
 NRANKS = 2
 START_TIMEOUT = 60  # seconds for the server's 'Accepting connection(s)'
-WATCHDOG = 150  # seconds for the whole client; the reaper then ends the server
+# Seconds for the whole client, then the reaper ends the server: the backstop of a run by hand.
+# CTest runs this script under scripts/lib/mpi_watchdog.py, which ends a hang sooner (180 s),
+# printing the native stacks of this client and of the server's ranks first.
+WATCHDOG = 240
 SIZE = test_mpi.SIZE
 BG = test_mpi.BG
 
