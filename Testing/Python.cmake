@@ -22,6 +22,13 @@ psi_add_python_test(isosurfaces
 # small resampling sizes); the timeout allows for a loaded machine (it starts child pvpythons).
 psi_add_python_test(accuracy_report TIMEOUT 600 INSTALLED
   ENVIRONMENT "PSI_REFERENCE_RENDER=$<TARGET_FILE:psi_reference_render>")
+# The report on the user's scene, one case each: the scene left as found (also when the report
+# fails), arrays of any name, a cell array sharing its name with a point array, and a failure of
+# the reference renderer said in one line.
+foreach (case IN ITEMS settings names cells failure)
+  psi_add_python_test(report_scene.${case} SCRIPT report_scene ARGS ${case} TIMEOUT 300
+    ENVIRONMENT "PSI_REFERENCE_RENDER=$<TARGET_FILE:psi_reference_render>")
+endforeach ()
 
 # Constant fields and scalar ranges that float cannot hold (denormal widths, far from 0):
 # against 'Projected tetra' and the reference, and each path's image invariant under scaling.

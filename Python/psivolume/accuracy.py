@@ -25,18 +25,20 @@ import argparse
 import glob
 import json
 import os
+import signal
 import subprocess
 import tempfile
 import time
 
 import numpy as np
 from paraview import servermanager, simple
+from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes, vtkUnstructuredGrid
 from vtkmodules.vtkCommonMath import vtkMatrix4x4
 from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
 from vtkmodules.vtkRenderingCore import vtkColorTransferFunction
 
-from . import accuracy_plots, bench, data, testing, timing
+from . import accuracy_plots, bench, data, restore, testing, timing
 
 PARAVIEW_MAPPERS = ["Projected tetra", "Z sweep", "Bunyk ray cast"]
 RESAMPLE = "Resample To Image"
@@ -46,6 +48,9 @@ FIRST_PREFIX = "PSI_FIRST_FRAME "  # a child's first frame, in seconds, before i
 REFERENCE = "Exact reference (CPU)"
 BASELINE = "Average"  # ratios to it, round by round: Moreland's Table 6.4 gives the same
 TF_SAMPLES = 512  # extra breakpoints where the color map or opacity is not linear between nodes
+# The colored array's name in the mesh file: the user's own may be any text, which VTK's XML writer
+# writes unescaped (a quote in it makes the file unreadable).
+MESH_ARRAY = "scalars"
 
 
 def find_reference_renderer():
@@ -73,18 +78,22 @@ class Capture:
         self.view, self.rep, self.src, self.work = view, rep, src, work
         self.array = rep.ColorArrayName[1]
         self.association = rep.ColorArrayName[0] or data.association(src, self.array)
-        self.lut = simple.GetColorTransferFunction(self.array)
-        self.pwf = simple.GetOpacityTransferFunction(self.array)
+        # the display's own maps (a separate color map is not the one of the array's name)
+        self.lut = rep.LookupTable or simple.GetColorTransferFunction(self.array)
+        self.pwf = rep.ScalarOpacityFunction or simple.GetOpacityTransferFunction(self.array)
         self.size = list(view.ViewSize)
         self.mesh = os.path.join(work, "mesh.vtu")
         self.write_mesh()
 
     def write_mesh(self):
+        """The source's mesh with the colored array alone, named MESH_ARRAY (single_array)."""
         grid = servermanager.Fetch(self.src)
         if grid.IsA("vtkCompositeDataSet"):
+            active = simple.GetActiveSource()  # the new filter becomes active: not for long
             merged = simple.MergeBlocks(Input=self.src)
             grid = servermanager.Fetch(merged)
             simple.Delete(merged)
+            simple.SetActiveSource(active)
         if not grid.IsA("vtkUnstructuredGrid"):
             tets = vtkDataSetTriangleFilter()
             tets.SetInputData(grid)
@@ -93,7 +102,7 @@ class Capture:
         self.cells = grid.GetNumberOfCells()
         w = vtkXMLUnstructuredGridWriter()
         w.SetFileName(self.mesh)
-        w.SetInputData(grid)
+        w.SetInputData(single_array(grid, self.array, self.association))
         w.SetDataModeToAppended()
         w.Write()
 
@@ -138,9 +147,9 @@ class Capture:
         return [m.GetElement(i, j) for i in range(4) for j in range(4)]
 
     def write_reference_scene(self, path):
-        with open(path, "w") as f:
-            f.write("array %s\ncomponent %d\nsize %d %d\n" % (
-                self.array, self.component(), self.size[0], self.size[1]))
+        with open(path, "w", encoding="utf-8") as f:
+            f.write("array %s\nassociation %s\n" % (quoted(MESH_ARRAY), self.association.lower()))
+            f.write("component %d\nsize %d %d\n" % (self.component(), self.size[0], self.size[1]))
             f.write("background %r %r %r\nunit %r\n" % (tuple(self.background()) + (
                 self.rep.ScalarOpacityUnitDistance,)))
             f.write("ndc_to_world %s\n" % " ".join(repr(v) for v in self.ndc_to_world()))
@@ -151,7 +160,7 @@ class Capture:
 
     def write_child_scene(self, path):
         v = self.view
-        scene = dict(mesh=self.mesh, array=self.array, association=self.association,
+        scene = dict(mesh=self.mesh, array=MESH_ARRAY, association=self.association,
                      size=self.size, background=self.background(),
                      unit=float(self.rep.ScalarOpacityUnitDistance),
                      rgb_points=list(self.lut.RGBPoints),
@@ -168,6 +177,59 @@ class Capture:
             json.dump(scene, f)
 
 
+def single_array(grid, array, association):
+    """`grid`'s points and cells with one array, the one named `array` of `association` ('POINTS'
+    or 'CELLS': a point and a cell array may share a name), renamed MESH_ARRAY; and the ghost
+    arrays, which ParaView's mappers honour."""
+    out = vtkUnstructuredGrid()
+    out.CopyStructure(grid)
+    pairs = [(grid.GetPointData(), out.GetPointData()), (grid.GetCellData(), out.GetCellData())]
+    src, dst = pairs[0 if association == "POINTS" else 1]
+    found = src.GetArray(array)
+    if found is None:
+        raise RuntimeError("%s: the mesh has no %s array named %r" % (
+            REFERENCE, "point" if association == "POINTS" else "cell", array))
+    colored = found.NewInstance()
+    colored.ShallowCopy(found)
+    colored.SetName(MESH_ARRAY)
+    dst.AddArray(colored)
+    for src, dst in pairs:
+        ghosts = src.GetArray(vtkDataSetAttributes.GhostArrayName())
+        if ghosts is not None:
+            dst.AddArray(ghosts)
+    return out
+
+
+def quoted(name):
+    """`name` in double quotes, a backslash before each quote and backslash in it (as C++'s
+    std::quoted reads it: the scene file's words are separated by blanks)."""
+    return '"%s"' % name.replace("\\", "\\\\").replace('"', '\\"')
+
+
+def exit_status(code):
+    """subprocess's return code in words: a negative one is the signal that ended the process."""
+    if code < 0:
+        try:
+            return "signal %s" % signal.Signals(-code).name
+        except ValueError:
+            return "signal %d" % -code
+    return "exit status %d" % code
+
+
+def run_reference_renderer(argv):
+    """Runs psi_reference_render (`argv`); when it fails, raises one line saying so and why: its
+    last line on stderr (its reason, psi_reference_render.cxx), else how it ended."""
+    name = "the exact reference renderer %s" % argv[0]
+    try:
+        p = subprocess.run(argv, capture_output=True, text=True, errors="replace")
+    except OSError as e:
+        raise RuntimeError("%s could not start: %s" % (name, e.strerror or e)) from None
+    if p.returncode != 0:
+        lines = [line.strip() for line in p.stderr.splitlines() if line.strip()]
+        raise RuntimeError("%s failed (%s): %s" % (name, exit_status(p.returncode),
+                                                   lines[-1] if lines else "no message"))
+
+
 def reference_image(cap, runs=2):
     """The reference image (float RGB 0..255, rows from the bottom) and its seconds, rendered
     `runs` times: the error between the runs is the reference's own row (0 when deterministic)."""
@@ -178,7 +240,7 @@ def reference_image(cap, runs=2):
     for k in range(runs):
         out = os.path.join(cap.work, "reference_%d.raw" % k)
         t = time.perf_counter()
-        subprocess.run([exe, cap.mesh, scene, out], check=True, capture_output=True, text=True)
+        run_reference_renderer([exe, cap.mesh, scene, out])
         seconds.append(time.perf_counter() - t)
         img = np.fromfile(out, dtype=np.float64).reshape(cap.size[1], cap.size[0], 3)
         images.append(np.clip(img, 0, 1) * 255.0)
@@ -273,55 +335,19 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
     interactive image of 'Psi Volume' and 'Resample To Image' at each of `resample_dims`,
     measures each image against the exact reference at the same view, prints the table and
     writes out_dir/report.md, accuracy.png and methods.png. Returns the rows as dicts.
-    `progress(fraction, step)`, when given, is told each step (psivolume.progress.Progress)."""
+    `progress(fraction, step)`, when given, is told each step (psivolume.progress.Progress).
+    The display, its maps, the view and its camera are left as they were, also when it fails."""
     step = progress or (lambda fraction, text: None)
     view = view or simple.GetActiveView()
     src = src or simple.GetActiveSource()
     rep = rep or simple.GetDisplayProperties(src, view)
     os.makedirs(out_dir, exist_ok=True)
-    saved_type = rep.GetProperty("Representation").GetData()
-    saved_mode = rep.GetProperty("InteractionMode").GetData()
-    with tempfile.TemporaryDirectory(prefix="psi_accuracy_") as work:
+    with restore.scene(view, rep), tempfile.TemporaryDirectory(prefix="psi_accuracy_") as work:
         simple.Render(view)
         step(0.0, "the mesh and the scene")
         cap = Capture(view, rep, src, work)
-        if rep.Representation != "Psi Volume":
-            rep.SetRepresentationType("Psi Volume")
-        simple.Render(view)
-        step(0.05, "the exact reference")
-        refs, ref_seconds = reference_image(cap)
-        ref = refs[0]
-        method = rep.GetProperty("IntegrationMethod").GetData()
-        methods = list(rep.GetProperty("IntegrationMethod").Available)
-        step(0.2, "the images of 'Psi Volume'")
-        psi, images = psi_contenders(cap, methods)
-        live, images[INTERACTIVE], build, live_note = interactive_contender(cap, method)
-        step(0.3, "ParaView's mappers")
-        pv, pv_images, once = paraview_contenders(cap, paraview_mappers, paraview_timeout,
-                                                  resample_dims)
-        images.update(pv_images)
-        once[INTERACTIVE] = build
-        step(0.4, "timing rounds")
-        started = time.perf_counter()
-
-        def log(message):
-            print("  " + message, flush=True)
-            spent = (time.perf_counter() - started) / max(budget, 1e-3)
-            step(0.4 + 0.55 * min(spent, 1.0), "timing rounds")
-
-        timed = timing.interleaved(psi + [live] + pv, BASELINE, frames=frames, budget=budget,
-                                   min_rounds=5, log=log)
-        rows = []
-        for c in psi + [live] + pv:
-            note = timed.notes[c.name] or (live_note if c is live else "")
-            rows.append(dict(name=c.name, image=images.get(c.name), once=once.get(c.name),
-                             note=note, **timed.row(c.name)))
-        rows.append(dict(name=REFERENCE, spf=ref_seconds, image=refs[-1], note="", once=None,
-                         spf_min=ref_seconds, spf_max=ref_seconds, cpu=None, ratio=None,
-                         ratio_spread=None, rounds=1))
-    rep.InteractionMode = saved_mode
-    rep.SetRepresentationType(saved_type)
-    simple.Render(view)
+        rows, ref, timed, method = measure(cap, step, frames, paraview_mappers, paraview_timeout,
+                                           budget, resample_dims)
     for r in rows:
         r["mean"], r["max"] = errors(r["image"], ref)
         r["err_s"] = r["mean"] * r["spf"] if r["spf"] is not None else float("nan")
@@ -334,6 +360,47 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
     accuracy_plots.write_all(rows, ref, info, out_dir)
     step(1.0, "done")
     return [{k: v for k, v in r.items() if k != "image"} for r in rows]
+
+
+def measure(cap, step, frames, paraview_mappers, paraview_timeout, budget, resample_dims):
+    """The images and times of the scene `cap` (report()), changing the display's settings as it
+    goes: (rows with their images, the reference image, the timing result, the method of the
+    interactive row)."""
+    rep, view = cap.rep, cap.view
+    if rep.Representation != "Psi Volume":
+        rep.SetRepresentationType("Psi Volume")
+    simple.Render(view)
+    step(0.05, "the exact reference")
+    refs, ref_seconds = reference_image(cap)
+    method = rep.GetProperty("IntegrationMethod").GetData()
+    methods = list(rep.GetProperty("IntegrationMethod").Available)
+    step(0.2, "the images of 'Psi Volume'")
+    psi, images = psi_contenders(cap, methods)
+    live, images[INTERACTIVE], build, live_note = interactive_contender(cap, method)
+    step(0.3, "ParaView's mappers")
+    pv, pv_images, once = paraview_contenders(cap, paraview_mappers, paraview_timeout,
+                                              resample_dims)
+    images.update(pv_images)
+    once[INTERACTIVE] = build
+    step(0.4, "timing rounds")
+    started = time.perf_counter()
+
+    def log(message):
+        print("  " + message, flush=True)
+        spent = (time.perf_counter() - started) / max(budget, 1e-3)
+        step(0.4 + 0.55 * min(spent, 1.0), "timing rounds")
+
+    timed = timing.interleaved(psi + [live] + pv, BASELINE, frames=frames, budget=budget,
+                               min_rounds=5, log=log)
+    rows = []
+    for c in psi + [live] + pv:
+        note = timed.notes[c.name] or (live_note if c is live else "")
+        rows.append(dict(name=c.name, image=images.get(c.name), once=once.get(c.name),
+                         note=note, **timed.row(c.name)))
+    rows.append(dict(name=REFERENCE, spf=ref_seconds, image=refs[-1], note="", once=None,
+                     spf_min=ref_seconds, spf_max=ref_seconds, cpu=None, ratio=None,
+                     ratio_spread=None, rounds=1))
+    return rows, refs[0], timed, method
 
 
 def child_main(args):

@@ -77,7 +77,7 @@ def table_markdown(rows):
 def write_all(rows, ref, info, out_dir):
     plotted = plot_accuracy(rows, info, os.path.join(out_dir, "accuracy.png"))
     plot_methods(rows, ref, os.path.join(out_dir, "methods.png"))
-    with open(os.path.join(out_dir, "report.md"), "w") as f:
+    with open(os.path.join(out_dir, "report.md"), "w", encoding="utf-8") as f:  # any array name
         f.write("# What accuracy costs: %s\n\n" % info["title"])
         f.write("%d cells, %dx%d pixels, %d timed frames per method and round (after a warm-up "
                 "frame), llvmpipe threads: %s. %s\n\n%s.\n\n" % (
@@ -194,7 +194,8 @@ def plot_accuracy(rows, info, path):
     ax.set_ylim(floor / 1.5, max(ys) * 1.5)
     ax.set_xlabel("seconds per frame (%dx%d, llvmpipe)" % tuple(info["size"]))
     ax.set_ylabel("mean error vs exact reference (0..255)")
-    ax.set_title(info["title"], fontsize=10)
+    # (the title names the array, as it is: a dollar sign in it is not matplotlib's math)
+    ax.set_title(info["title"].replace("$", r"\$"), fontsize=10)
     ax.grid(True, which="both", alpha=0.25)
     to_axes = ax.transAxes.inverted()
     order = sorted(pts, key=lambda r: to_axes.transform(

@@ -84,10 +84,10 @@ def alone(view, rep):
               if r.SMProxy is not rep.SMProxy and r.GetProperty("Visibility") is not None
               and r.Visibility]
     axes = view.OrientationAxesVisibility
-    for r in hidden:
-        r.Visibility = 0
-    view.OrientationAxesVisibility = 0
     try:
+        for r in hidden:
+            r.Visibility = 0
+        view.OrientationAxesVisibility = 0
         yield
     finally:
         for r in hidden:

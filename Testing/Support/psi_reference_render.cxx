@@ -6,12 +6,14 @@
 //   MESH.vtu   an unstructured grid; non-tetrahedral cells are split by vtkDataSetTriangleFilter
 //              (as ParaView's 'Volume' does); cell scalars get private points per tetrahedron
 //   SCENE.txt  lines of "key values":
-//                array NAME | component K (-1: magnitude) | size W H | background R G B
+//                array NAME (in double quotes, \" and \\ inside, when it holds a blank or a quote;
+//                  the bytes of the mesh's name) | association points|cells (where NAME is)
+//                component K (-1: magnitude) | size W H | background R G B
 //                unit U (ScalarOpacityUnitDistance) | ndc_to_world M00 .. M33 (row-major)
 //                tf N, then N lines "s r g b opacity" (sorted by s; linear in between, clamped
 //                outside; every s is a breakpoint of the reference, tau = opacity / U)
 //   OUT.raw    W * H * 3 float64 RGB in [0, 1] (not clamped), rows from the bottom
-// Prints the seconds the ray casting took.
+// Prints the seconds the ray casting took. A failure exits 2, its reason the last line on stderr.
 #include "PsiReferenceRaycaster.h"
 
 #include "vtkCellData.h"
@@ -28,6 +30,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -38,6 +41,7 @@ namespace
 struct SceneFile
 {
   std::string Array;
+  std::string Association; // "points" or "cells"
   int Component = -1;
   int Width = 256, Height = 256;
   std::array<double, 3> Background{ { 0, 0, 0 } };
@@ -46,59 +50,90 @@ struct SceneFile
   std::vector<std::array<double, 5>> Table; // s, r, g, b, opacity
 };
 
-bool ReadScene(const char* path, SceneFile& s)
+// Reads the value of `key`; false for a key the format does not have.
+bool ReadValue(std::istream& in, const std::string& key, SceneFile& s)
 {
-  std::ifstream in(path);
-  std::string key;
-  while (in >> key)
+  if (key == "array")
   {
-    if (key == "array")
+    in >> std::quoted(s.Array); // a name may hold blanks (std::quoted reads a bare word too)
+  }
+  else if (key == "association")
+  {
+    in >> s.Association;
+  }
+  else if (key == "component")
+  {
+    in >> s.Component;
+  }
+  else if (key == "size")
+  {
+    in >> s.Width >> s.Height;
+  }
+  else if (key == "background")
+  {
+    in >> s.Background[0] >> s.Background[1] >> s.Background[2];
+  }
+  else if (key == "unit")
+  {
+    in >> s.Unit;
+  }
+  else if (key == "ndc_to_world")
+  {
+    for (double& v : s.NdcToWorld)
     {
-      in >> s.Array;
+      in >> v;
     }
-    else if (key == "component")
+  }
+  else if (key == "tf")
+  {
+    size_t n = 0;
+    in >> n;
+    s.Table.resize(n);
+    for (auto& row : s.Table)
     {
-      in >> s.Component;
-    }
-    else if (key == "size")
-    {
-      in >> s.Width >> s.Height;
-    }
-    else if (key == "background")
-    {
-      in >> s.Background[0] >> s.Background[1] >> s.Background[2];
-    }
-    else if (key == "unit")
-    {
-      in >> s.Unit;
-    }
-    else if (key == "ndc_to_world")
-    {
-      for (double& v : s.NdcToWorld)
+      for (double& v : row)
       {
         in >> v;
       }
     }
-    else if (key == "tf")
+  }
+  else
+  {
+    return false;
+  }
+  return true;
+}
+
+// The scene file's values; an empty string, or why they cannot be used.
+std::string ReadScene(const char* path, SceneFile& s)
+{
+  std::ifstream in(path);
+  if (!in)
+  {
+    return "cannot open the scene file " + std::string(path);
+  }
+  std::string key;
+  while (in >> key)
+  {
+    if (!ReadValue(in, key, s))
     {
-      size_t n = 0;
-      in >> n;
-      s.Table.resize(n);
-      for (auto& row : s.Table)
-      {
-        for (double& v : row)
-        {
-          in >> v;
-        }
-      }
+      return "unknown key '" + key + "' in the scene file " + path;
     }
-    else
+    if (in.fail())
     {
-      std::cerr << "unknown key in " << path << ": " << key << "\n";
-      return false;
+      return "bad value of '" + key + "' in the scene file " + path;
     }
   }
-  return !s.Table.empty() && s.Width > 0 && s.Height > 0 && s.Unit > 0;
+  if (s.Array.empty() || (s.Association != "points" && s.Association != "cells"))
+  {
+    return "the scene file " + std::string(path) + " names no array and its association " +
+      "(points or cells)";
+  }
+  if (s.Table.empty() || s.Width <= 0 || s.Height <= 0 || s.Unit <= 0)
+  {
+    return "the scene file " + std::string(path) + " has no transfer function, size or unit";
+  }
+  return std::string();
 }
 
 double ScalarOf(vtkDataArray* a, vtkIdType i, int component)
@@ -115,15 +150,18 @@ double ScalarOf(vtkDataArray* a, vtkIdType i, int component)
   return std::sqrt(m);
 }
 
-// Tetrahedra of the grid with their scalars; point scalars shared, cell scalars on private points.
-bool GatherMesh(vtkUnstructuredGrid* grid, const SceneFile& s, psi::ReferenceScene& ref)
+// Tetrahedra of the grid with their scalars: those of the array of the scene's name and
+// association (a point and a cell array may share a name); point scalars shared, cell scalars on
+// private points. An empty string, or why not.
+std::string GatherMesh(vtkUnstructuredGrid* grid, const SceneFile& s, psi::ReferenceScene& ref)
 {
-  vtkDataArray* pa = grid->GetPointData()->GetArray(s.Array.c_str());
-  vtkDataArray* ca = pa ? nullptr : grid->GetCellData()->GetArray(s.Array.c_str());
+  const bool points = s.Association == "points";
+  vtkDataArray* pa = points ? grid->GetPointData()->GetArray(s.Array.c_str()) : nullptr;
+  vtkDataArray* ca = points ? nullptr : grid->GetCellData()->GetArray(s.Array.c_str());
   if (!pa && !ca)
   {
-    std::cerr << "no point or cell array " << s.Array << "\n";
-    return false;
+    return "the mesh has no " + std::string(points ? "point" : "cell") + " array named \"" +
+      s.Array + "\"";
   }
   if (pa)
   {
@@ -162,7 +200,7 @@ bool GatherMesh(vtkUnstructuredGrid* grid, const SceneFile& s, psi::ReferenceSce
     }
     ref.Tets.push_back(tet);
   }
-  return true;
+  return std::string();
 }
 
 // The table, linear between its rows and clamped outside, as the transfer function.
@@ -198,31 +236,42 @@ void SetTransfer(const SceneFile& s, psi::ReferenceScene& ref)
     ref.Breakpoints.push_back(row[0]);
   }
 }
+
+// One line on stderr, the reason of the failure (psivolume.accuracy shows it), and exit code 2.
+int Fail(const std::string& reason)
+{
+  std::cerr << "psi_reference_render: " << reason << std::endl;
+  return 2;
+}
 } // namespace
 
 int main(int argc, char* argv[])
 {
   if (argc != 4)
   {
-    std::cerr << "usage: psi_reference_render MESH.vtu SCENE.txt OUT.raw\n";
-    return 2;
+    return Fail("usage: psi_reference_render MESH.vtu SCENE.txt OUT.raw");
   }
   SceneFile s;
-  if (!ReadScene(argv[2], s))
+  std::string why = ReadScene(argv[2], s);
+  if (!why.empty())
   {
-    std::cerr << "bad scene file " << argv[2] << "\n";
-    return 2;
+    return Fail(why);
   }
   vtkNew<vtkXMLUnstructuredGridReader> reader;
+  if (!reader->CanReadFile(argv[1]))
+  {
+    return Fail("cannot read the mesh " + std::string(argv[1]) + " (a VTK XML unstructured grid)");
+  }
   reader->SetFileName(argv[1]);
   vtkNew<vtkDataSetTriangleFilter> tets;
   tets->SetInputConnection(reader->GetOutputPort());
   tets->TetrahedraOnlyOn();
   tets->Update();
   psi::ReferenceScene ref;
-  if (!GatherMesh(tets->GetOutput(), s, ref))
+  why = GatherMesh(tets->GetOutput(), s, ref);
+  if (!why.empty())
   {
-    return 2;
+    return Fail(why + " (" + argv[1] + ")");
   }
   SetTransfer(s, ref);
   psi::ReferenceCamera cam;
@@ -239,8 +288,7 @@ int main(int argc, char* argv[])
     static_cast<std::streamsize>(image.size() * sizeof(double)));
   if (!out)
   {
-    std::cerr << "cannot write " << argv[3] << "\n";
-    return 2;
+    return Fail("cannot write " + std::string(argv[3]));
   }
   std::printf("tetrahedra %zu\nseconds %.4f\n", ref.Tets.size(), seconds);
   return 0;

@@ -1,0 +1,346 @@
+"""The accuracy report on the user's own scene, one case per run (PsiPython.report_scene.<case>):
+  settings  the report (psivolume.gui.run_report and psivolume.accuracy.report) leaves the scene
+            as it found it: the display's settings, its color and opacity maps, the view's, its
+            camera, the other representations' visibility and the active source; after a report,
+            after one whose reference renderer fails, after one that fails in its timing rounds
+  names     arrays named with a space, with non-ASCII letters, with quotes, a backslash and
+            dollar signs (matplotlib's math in the plot's title): the report runs, and its
+            reference is the image of that array (the same as the image of the same values under
+            a plain name; 'Psi Volume' close to it)
+  cells     a point array and a cell array of one name, the display colored by the cell array:
+            the reference draws the cell array ('Psi Volume', which honours the association, is
+            close to it; the point array's reference is far from it)
+  failure   a failure of the exact reference renderer raises one line that names it and gives
+            its reason (the last line it wrote to stderr)
+
+    pvpython --force-offscreen-rendering test_report_scene.py CASE"""
+import os
+import stat
+import sys
+import tempfile
+
+import numpy as np
+from paraview import simple
+
+from psivolume import accuracy, data, gui, testing, timing
+
+checks = testing.Checks("report_scene")
+SIZE = 64
+# The report as fast as it goes: one timing round, no child pvpython.
+FAST = dict(frames=1, budget=0.1, paraview_mappers=[], resample_dims=[])
+FAKE_REASON = "fake renderer: the mesh has no cells"
+
+
+# ------------------------------------------------------------------------------ the scene's state
+def property_values(proxy):
+    """{name: value} of `proxy`'s properties, information-only ones left out (proxies by id)."""
+    values = {}
+    for name in proxy.ListProperties():
+        p = proxy.GetProperty(name).SMProperty
+        if p.GetInformationOnly():
+            continue
+        if p.IsA("vtkSMProxyProperty"):
+            values[name] = tuple(p.GetProxy(i).GetGlobalIDAsString() if p.GetProxy(i) else None
+                                 for i in range(p.GetNumberOfProxies()))
+        elif p.IsA("vtkSMVectorProperty"):
+            values[name] = tuple(p.GetElement(i) for i in range(p.GetNumberOfElements()))
+    return values
+
+
+def camera_state(view):
+    c = view.GetActiveCamera()
+    return (c.GetPosition(), c.GetFocalPoint(), c.GetViewUp(), c.GetViewAngle(),
+            c.GetParallelScale(), c.GetParallelProjection())
+
+
+def state(view, rep):
+    """What a user sees of the scene, by part."""
+    s = {"display " + k: v for k, v in property_values(rep).items()}
+    s.update({"color map " + k: v for k, v in property_values(rep.LookupTable).items()})
+    s.update({"opacity map " + k: v
+              for k, v in property_values(rep.ScalarOpacityFunction).items()})
+    s.update({"view " + k: v for k, v in property_values(view).items()})
+    s["camera"] = camera_state(view)
+    s["visible representations"] = tuple(
+        r.GetGlobalIDAsString() for r in view.Representations
+        if r.GetProperty("Visibility") is not None and r.Visibility)
+    active = simple.GetActiveSource()
+    s["active source"] = active.GetGlobalIDAsString() if active else None
+    return s
+
+
+def changed_by_rendering(view, rep):
+    """The parts of state() that a still and an interactive render alone change: not settings."""
+    before = state(view, rep)
+    simple.Render(view)
+    view.InteractiveRender()
+    simple.Render(view)
+    after = state(view, rep)
+    return {k for k in before if before[k] != after.get(k)}
+
+
+def check_same(before, after, ignored, what):
+    if ignored:
+        print("        (%s: not compared, changed by rendering alone: %s)"
+              % (what, ", ".join(sorted(ignored))))
+    diff = ["%s: %s -> %s" % (k, before[k], after.get(k)) for k in sorted(before)
+            if k not in ignored and before[k] != after.get(k)]
+    checks.check(not diff, "%s: the scene as it was%s" % (
+        what, "" if not diff else "; changed: " + "; ".join(d[:160] for d in diff)))
+
+
+# ------------------------------------------------------------------------------ scenes
+def user_scene(src, array, association="POINTS", size=SIZE, rescale=True):
+    """`src` shown in a size x size view as 'Psi Volume' colored by (association, array) (its
+    maps rescaled to the array's range with `rescale`), the camera turned, no orientation axes."""
+    view = simple.CreateRenderView()
+    view.ViewSize = [size, size]
+    view.OrientationAxesVisibility = 0  # not in the reference (psivolume.gui hides them)
+    rep = simple.Show(src, view)
+    simple.ColorBy(rep, (association, array))
+    rep.SetRepresentationType("Psi Volume")
+    if rescale:
+        rep.RescaleTransferFunctionToDataRange(True, False)
+    view.ResetCamera()
+    view.GetActiveCamera().Azimuth(40)
+    view.GetActiveCamera().Elevation(15)
+    view.ResetCamera()
+    simple.SetActiveView(view)
+    simple.SetActiveSource(src)
+    return view, rep
+
+
+def user_settings(rep):
+    """Settings a user may have chosen, none of them the report's own."""
+    rep.IntegrationMethod = "Linear Exact"
+    rep.AdaptiveSampling = "On"
+    modes = list(rep.GetProperty("InteractionMode").Available)
+    rep.InteractionMode = [m for m in modes if m != rep.InteractionMode][-1]
+    rep.ScalarOpacityUnitDistance = 2.5
+
+
+def failing_renderer(folder):
+    """A reference renderer that writes two lines to stderr and exits 2."""
+    path = os.path.join(folder, "failing_renderer.sh")
+    with open(path, "w") as f:
+        f.write("#!/bin/sh\necho 'reading the mesh' >&2\necho '%s' >&2\nexit 2\n" % FAKE_REASON)
+    os.chmod(path, os.stat(path).st_mode | stat.S_IXUSR)
+    return path
+
+
+class Environment:
+    """os.environ[name] = value while the block runs."""
+
+    def __init__(self, name, value):
+        self.name, self.value = name, value
+
+    def __enter__(self):
+        self.saved = os.environ.get(self.name)
+        os.environ[self.name] = self.value
+
+    def __exit__(self, *exc):
+        if self.saved is None:
+            del os.environ[self.name]
+        else:
+            os.environ[self.name] = self.saved
+
+
+class FailingFrames:
+    """timing.frame failing at its `n`-th call while the block runs: the report fails in its
+    timing rounds, the camera turned and a method set."""
+
+    def __init__(self, n):
+        self.n, self.calls = n, 0
+
+    def __enter__(self):
+        self.frame = timing.frame
+
+        def frame(*args, **kw):
+            self.calls += 1
+            if self.calls >= self.n:
+                raise RuntimeError("a frame failed")
+            return self.frame(*args, **kw)
+
+        timing.frame = frame
+
+    def __exit__(self, *exc):
+        timing.frame = self.frame
+
+
+def raises(run):
+    """The exception `run()` raises, or None."""
+    try:
+        run()
+    except Exception as e:  # noqa: BLE001 (which one is part of what is checked)
+        return e
+    return None
+
+
+def under(context, run):
+    """`run` to be run inside `context`."""
+    def run_under():
+        with context:
+            run()
+    return run_under
+
+
+def check_kept(what, view, rep, run, fails=False):
+    """`run()`, a report on `view`'s `rep`, runs (or with `fails` raises); the scene as it was."""
+    ignored = changed_by_rendering(view, rep)
+    before = state(view, rep)
+    e = raises(run)
+    checks.check((e is not None) == fails, "%s %s: %r" % (what, "raises" if fails else "runs", e))
+    check_same(before, state(view, rep), ignored, what)
+
+
+# ------------------------------------------------------------------------------ the cases
+def settings_scene(src, array, representation="Psi Volume"):
+    """The user's scene with settings of their own, an outline beside, the orientation axes."""
+    view, rep = user_scene(src, array)
+    simple.Show(simple.Outline(Input=src), view)
+    simple.SetActiveSource(src)
+    view.OrientationAxesVisibility = 1
+    user_settings(rep)
+    if representation != "Psi Volume":
+        rep.SetRepresentationType(representation)
+    simple.Render(view)
+    return view, rep
+
+
+def case_settings(work):
+    src, array = data.wavelet(3)
+    reports = {
+        "gui.run_report": lambda view, rep: lambda: gui.run_report(
+            view, src, os.path.join(work, "gui"), **FAST),
+        "accuracy.report": lambda view, rep: lambda: accuracy.report(
+            view, rep, src, os.path.join(work, "report"), **FAST)}
+    for name, report in reports.items():
+        view, rep = settings_scene(src, array)
+        check_kept(name, view, rep, report(view, rep))
+        # the display on 'Volume', its reference renderer failing (after the switch to 'Psi Volume')
+        view, rep = settings_scene(src, array, "Volume")
+        failing = Environment("PSI_REFERENCE_RENDER", failing_renderer(work))
+        check_kept(name + ", its reference renderer failing", view, rep,
+                   under(failing, report(view, rep)), fails=True)
+        # failing in the timing rounds, a method set and the camera turned meanwhile
+        view, rep = settings_scene(src, array)
+        check_kept(name + ", failing in its timing rounds", view, rep,
+                   under(FailingFrames(2), report(view, rep)), fails=True)
+    # a composite source (the report merges its blocks with a filter of ParaView's)
+    group = simple.GroupDatasets(Input=[src])
+    view, rep = user_scene(group, array)
+    user_settings(rep)
+    check_kept("accuracy.report on a multiblock", view, rep, lambda: accuracy.report(
+        view, rep, group, os.path.join(work, "group"), **FAST))
+
+
+def reference_of(view, rep, src, work):
+    """The exact reference image of the display's scene, as the report renders it."""
+    folder = tempfile.mkdtemp(dir=work)
+    images, _ = accuracy.reference_image(accuracy.Capture(view, rep, src, folder), runs=1)
+    return images[0]
+
+
+def row_errors(rows, name):
+    r = {row["name"]: row for row in rows}.get(name) or {}
+    return r.get("mean", float("nan")), r.get("max", float("nan"))
+
+
+def case_names(work):
+    """The report on arrays of odd names holding RTData: the same images as RTData's own."""
+    src, _ = data.wavelet(3)
+    view, rep = user_scene(src, "RTData", size=96)
+    plain = reference_of(view, rep, src, work)
+    for name in ("my f", "Dichte \u03c1 (\u00e9t\u00e9)", 'a "b" \\ c $^$'):
+        named = simple.Calculator(Input=src, ResultArrayName=name, Function="RTData")
+        view, rep = user_scene(named, name, size=96)
+        ref = None
+        try:
+            ref = reference_of(view, rep, named, work)
+            rows = accuracy.report(view, rep, named, os.path.join(work, "names"), **FAST)
+        except Exception as e:  # noqa: BLE001
+            rows = []
+            checks.check(False, "array %r: the report runs: %s: %s" % (name, type(e).__name__, e))
+        if ref is not None:
+            d = float(np.abs(ref - plain).max())
+            checks.check(d == 0, "array %r: the reference is RTData's (max |diff| %g)" % (name, d))
+        mean, mx = row_errors(rows, "Partial Pre-Integration + adaptive")
+        checks.check(mean < 1 and mx < 2, "array %r: 'Psi Volume' close to the reference (mean "
+                     "%.3f, max %.1f)" % (name, mean, mx))
+
+
+def same_name_scene():
+    """Point f = x; its cell averages; cell f = -(those): one name, two associations."""
+    tets = simple.Tetrahedralize(Input=simple.Wavelet(WholeExtent=[-4, 4, -4, 4, -4, 4]))
+    points = simple.Calculator(Input=tets, ResultArrayName="f", Function="coordsX")
+    cells = simple.PointDatatoCellData(Input=points)
+    cells.PassPointData = 1
+    negated = simple.Calculator(Input=cells, AttributeType="Cell Data", ResultArrayName="f",
+                                Function="-f")
+    negated.UpdatePipeline()
+    return negated
+
+
+def case_cells(work):
+    src = same_name_scene()
+    view, rep = user_scene(src, "f", "CELLS", size=96)
+    checks.check(list(rep.ColorArrayName) == ["CELLS", "f"], "colored by the cell array f")
+    simple.Render(view)
+    still = testing.grab(view)
+    ref = None
+    try:
+        ref = reference_of(view, rep, src, work)
+        rows = accuracy.report(view, rep, src, os.path.join(work, "cells"), **FAST)
+    except Exception as e:  # noqa: BLE001
+        rows = []
+        checks.check(False, "the report runs: %s: %s" % (type(e).__name__, e))
+    if ref is not None:
+        e = float(np.abs(still - ref).mean())
+        drawn = testing.covered(ref, view.GetRenderer().GetBackground())
+        checks.check(drawn > 1000, "the reference draws the volume (%d pixels)" % drawn)
+        checks.check(e < 1, "the reference is the still frame's cell array (mean |diff| %.3f)" % e)
+    for method in ("Average", "Partial Pre-Integration + adaptive"):
+        mean, mx = row_errors(rows, method)
+        checks.check(mean < 1, "the report: '%s' close to the reference (mean %.3f, max %.1f)"
+                     % (method, mean, mx))
+    # (one color map per name: the point array's reference is drawn with the cells' map)
+    view, rep = user_scene(src, "f", "POINTS", size=96, rescale=False)
+    point_ref = reference_of(view, rep, src, work)
+    if ref is not None:
+        d = float(np.abs(point_ref - ref).mean())
+        checks.check(d > 5, "the point array's reference differs (mean |diff| %.1f)" % d)
+
+
+def check_one_line(e, reasons, what):
+    text = str(e)
+    checks.check(isinstance(e, RuntimeError) and "\n" not in text.strip()
+                 and "exact reference renderer" in text and all(r in text for r in reasons),
+                 "%s: one line naming the exact reference renderer and %s: %s: %r"
+                 % (what, " and ".join(map(repr, reasons)), type(e).__name__, text))
+
+
+def case_failure(work):
+    src, array = data.wavelet(3)
+    view, rep = user_scene(src, array)
+    cap = accuracy.Capture(view, rep, src, work)
+    with Environment("PSI_REFERENCE_RENDER", failing_renderer(work)):
+        check_one_line(raises(lambda: accuracy.reference_image(cap)), [FAKE_REASON],
+                       "a failing renderer")
+        check_one_line(raises(lambda: gui.run_report(view, src, work, **FAST)), [FAKE_REASON],
+                       "the report, its renderer failing")
+    os.remove(cap.mesh)  # the real renderer, its mesh file gone
+    check_one_line(raises(lambda: accuracy.reference_image(cap)), [cap.mesh],
+                   "psi_reference_render without its mesh")
+    with Environment("PSI_REFERENCE_RENDER", os.path.join(work, "absent_renderer")):
+        check_one_line(raises(lambda: accuracy.reference_image(cap)), ["absent_renderer"],
+                       "a renderer that is not there")
+
+
+CASES = dict(settings=case_settings, names=case_names, cells=case_cells, failure=case_failure)
+
+if __name__ == "__main__":
+    data.load_plugin(globals())
+    case = sys.argv[1]
+    with tempfile.TemporaryDirectory(prefix="psi_report_scene_") as folder:
+        CASES[case](folder)
+    checks.finish()
