@@ -22,11 +22,12 @@ set_tests_properties(PsiHeadless.plugin_basics PROPERTIES
   TIMEOUT 600)
 if (MPIEXEC_EXECUTABLE)
   add_test(NAME PsiHeadless.mpi
-    COMMAND ${psi_headless} "${MPIEXEC_EXECUTABLE}" --allow-run-as-root -n 2
+    COMMAND ${psi_headless} ${PSI_MPI_WATCHDOG_COMMAND} "${MPIEXEC_EXECUTABLE}"
+            --allow-run-as-root -n 2
             "${PVBATCH_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_mpi.py")
   set_tests_properties(PsiHeadless.mpi PROPERTIES
     ENVIRONMENT "PSI_PLUGIN=$<TARGET_FILE:PsiVolume>;${PSI_PYTHONPATH};PSI_PVBATCH=${PVBATCH_EXECUTABLE};OMPI_MCA_rmaps_base_oversubscribe=1"
     SKIP_RETURN_CODE 77
-    TIMEOUT 240
+    TIMEOUT ${PSI_MPI_TEST_TIMEOUT}
     RUN_SERIAL ON)
 endif ()

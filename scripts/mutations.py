@@ -242,6 +242,13 @@ MUTATIONS = [
              "                   .arg(milliseconds(stats.Stats.LastRenderSeconds),",
              "                   .arg(milliseconds(0.1 * stats.Stats.LastRenderSeconds),",
              ["PsiGUI.PsiVolumePanel", "PsiGUI.ClientServer.PsiVolumePanel"]),
+    # the MPI watchdog: each rank's stacks on a hang, nothing left running
+    Mutation("mpi_watchdog_no_stacks", "scripts/lib/mpi_watchdog.py",
+             "        text = stacks(pid, min(GDB_SECONDS, left)) if left > 1 else",
+             "        text = '' if left > 1 else", ["PsiProject.MpiWatchdog"]),
+    Mutation("mpi_watchdog_leaves_ranks", "scripts/lib/mpi_watchdog.py",
+             "        left = end(proc.pid, grace)\n        proc.wait()",
+             "        left = []\n        proc.kill()\n        proc.wait()", ["PsiProject.MpiWatchdog"]),
     Mutation("lod_samples_not_interpolated", "Core/PsiLatticeSampling.cxx",
              "        s += w * this->Mesh.Points4[4 * size_t(v[a]) + 3];",
              "        s += w * this->Mesh.Points4[4 * size_t(v[0]) + 3];",
