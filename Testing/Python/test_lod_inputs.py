@@ -1,5 +1,5 @@
 """The volume level of detail on inputs common in real data, each against the still frame it
-stands in for (results, never timings):
+stands in for (results, never timings), and its build's progress:
 - the first interactive render after a still frame past the budget already draws the level of
   detail (it is built in that render, fast enough to cost less than the still frame);
 - a point array and a cell array of one name (Point Data to Cell Data passing the point data,
@@ -58,6 +58,34 @@ def check_lod(view, d, label, wrong=None):
                 "(%.4f)" % (label, err, testing.mean_error(lod, wrong)))
     return full, lod, err
 
+
+# --- Progress: a build reports to ParaView's progress handler (the representation's progress
+# events, which ParaView's progress bar shows), rising from 0 to 1; a current level of detail
+# reports nothing.
+view = testing.black_view(SIZE)
+src, scalars = data.wavelet(10)
+d = scene(src, "POINTS", scalars, view)
+d.InteractionMode = "Volume LOD"
+view.ResetCamera()
+simple.Render(view)
+steps = []
+rep = d.GetClientSideObject().GetActiveRepresentation()
+rep.AddObserver("ProgressEvent", lambda obj, _: steps.append((obj.GetProgress(),
+                                                               obj.GetProgressText() or "")))
+view.InteractiveRender()
+built = list(steps)
+view.GetActiveCamera().Azimuth(5)
+view.InteractiveRender()
+values = [v for v, _ in built]
+t.check(len(built) >= 10 and values[0] == 0.0 and values[-1] == 1.0 and
+        values == sorted(values) and all("level of detail" in text for _, text in built),
+        "the build reports its progress: %d steps from %.2f to %.2f, rising (%r)"
+        % (len(built), values[0] if values else -1, values[-1] if values else -1,
+           built[-1][1] if built else None))
+t.check(len(steps) == len(built), "a current level of detail reports no progress (%d more)"
+        % (len(steps) - len(built)))
+simple.Delete(d)
+simple.Delete(view)
 
 # --- One name, two associations.
 view = testing.black_view(SIZE)
