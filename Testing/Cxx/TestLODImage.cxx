@@ -204,8 +204,10 @@ void CheckAgainstProbeFilter()
   MakeRandomMesh(grid, 400);
   const int resolution = 24;
   const psi::LODImage lod = Resample(grid, false, resolution);
-  vtkNew<vtkImageData> lattice;
-  lattice->CopyStructure(lod.Image);
+  vtkNew<vtkImageData> lattice; // the same lattice, without the image's arrays or ghosts
+  lattice->SetOrigin(lod.Image->GetOrigin());
+  lattice->SetSpacing(lod.Image->GetSpacing());
+  lattice->SetDimensions(lod.Image->GetDimensions());
   vtkNew<vtkProbeFilter> probe;
   probe->SetInputData(lattice);
   probe->SetSourceData(grid);
