@@ -5,9 +5,9 @@
 // A projected-tetrahedra renderer shades one fragment per tetrahedron and pixel whose center ray
 // crosses it (Shirley & Tuchman 1990), so a pixel's fragments are its ray's segments through the
 // tetrahedra. Each pixel's ray is walked front to back as the exact reference does
-// (PsiReferenceRaycaster: the same rays from the near plane, the same ray / face-plane clipping,
-// each segment split at the transfer function's breakpoints, tau linear on each piece), and the
-// accumulated opacity after optical depth E along the ray is
+// (PsiReferenceRaycaster: its rays from the near plane and its ray / face-plane clipping,
+// psi::ReferencePixelPieces; each segment split at the transfer function's breakpoints, tau
+// linear on each piece), and the accumulated opacity after optical depth E along the ray is
 //   alpha = 1 - exp(-E),   E = int tau dt   (Moreland & Angel 2004 Eq. 8 per piece),
 // so alpha first reaches a threshold a where E reaches -ln(1 - a): inside the piece of the ray
 // where that happens, at the root of the piece's quadratic exponent (psi::TruncationPoint).
@@ -25,24 +25,16 @@
 //   the largest differences are printed and a walk that is not the reference's exits 1.
 #include "PsiIntegration.h"
 #include "PsiReferenceRaycaster.h"
-#include "PsiVec3.h"
+#include "PsiReferenceSceneFile.h"
 
-#include "vtkCellData.h"
-#include "vtkDataArray.h"
-#include "vtkDataSetTriangleFilter.h"
-#include "vtkNew.h"
-#include "vtkPointData.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkXMLUnstructuredGridReader.h"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <iomanip>
 #include <iostream>
 #include <limits>
 #include <string>
@@ -50,156 +42,9 @@
 
 namespace
 {
-using psi::Vec3;
-
 // The opacity thresholds a_k.
 constexpr int NumThresholds = 2;
 constexpr double Thresholds[NumThresholds] = { 0.99, 0.999 };
-
-// ---- The scene (psi_reference_render's format) ------------------------------------------------
-
-struct SceneFile
-{
-  std::string Array;
-  std::string Association; // "points", "cells", or empty (then where the array is)
-  int Component = -1;
-  int Width = 256, Height = 256;
-  double Unit = 1;
-  std::array<double, 16> NdcToWorld{};
-  std::vector<std::array<double, 5>> Table; // s, r, g, b, opacity
-};
-
-bool ReadScene(const char* path, SceneFile& s)
-{
-  std::ifstream in(path);
-  std::string key;
-  while (in >> key)
-  {
-    if (key == "array")
-    {
-      in >> std::quoted(s.Array);
-    }
-    else if (key == "association")
-    {
-      in >> s.Association;
-    }
-    else if (key == "component")
-    {
-      in >> s.Component;
-    }
-    else if (key == "size")
-    {
-      in >> s.Width >> s.Height;
-    }
-    else if (key == "background")
-    {
-      double ignored[3];
-      in >> ignored[0] >> ignored[1] >> ignored[2];
-    }
-    else if (key == "unit")
-    {
-      in >> s.Unit;
-    }
-    else if (key == "ndc_to_world")
-    {
-      for (double& v : s.NdcToWorld)
-      {
-        in >> v;
-      }
-    }
-    else if (key == "tf")
-    {
-      size_t n = 0;
-      in >> n;
-      s.Table.resize(n);
-      for (auto& row : s.Table)
-      {
-        for (double& v : row)
-        {
-          in >> v;
-        }
-      }
-    }
-    else
-    {
-      std::cerr << "bench_saturation: unknown key '" << key << "' in " << path << "\n";
-      return false;
-    }
-    if (in.fail())
-    {
-      std::cerr << "bench_saturation: bad value of '" << key << "' in " << path << "\n";
-      return false;
-    }
-  }
-  return !s.Array.empty() && !s.Table.empty() && s.Unit > 0 && s.Width > 0 && s.Height > 0;
-}
-
-double ScalarOf(vtkDataArray* a, vtkIdType i, int component)
-{
-  if (component >= 0 || a->GetNumberOfComponents() == 1)
-  {
-    return a->GetComponent(i, std::min(std::max(component, 0), a->GetNumberOfComponents() - 1));
-  }
-  double m = 0;
-  for (int c = 0; c < a->GetNumberOfComponents(); ++c)
-  {
-    m += a->GetComponent(i, c) * a->GetComponent(i, c);
-  }
-  return std::sqrt(m);
-}
-
-// The grid's tetrahedra and scalars as psi_reference_render gathers them (cell scalars on
-// private points).
-bool GatherMesh(vtkUnstructuredGrid* grid, const SceneFile& s, psi::ReferenceScene& ref)
-{
-  vtkDataArray* pa =
-    s.Association == "cells" ? nullptr : grid->GetPointData()->GetArray(s.Array.c_str());
-  vtkDataArray* ca =
-    pa || s.Association == "points" ? nullptr : grid->GetCellData()->GetArray(s.Array.c_str());
-  if (!pa && !ca)
-  {
-    std::cerr << "bench_saturation: the mesh has no array \"" << s.Array << "\"\n";
-    return false;
-  }
-  if (pa)
-  {
-    for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
-    {
-      double p[3];
-      grid->GetPoint(i, p);
-      ref.Points.push_back({ { p[0], p[1], p[2] } });
-      ref.Scalars.push_back(ScalarOf(pa, i, s.Component));
-    }
-  }
-  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
-  {
-    const vtkIdType* pts;
-    vtkIdType n;
-    grid->GetCellPoints(c, n, pts);
-    if (n != 4 || grid->GetCellType(c) != VTK_TETRA)
-    {
-      continue;
-    }
-    std::array<int, 4> tet;
-    for (int v = 0; v < 4; ++v)
-    {
-      if (ca)
-      {
-        double p[3];
-        grid->GetPoint(pts[v], p);
-        tet[v] = static_cast<int>(ref.Points.size());
-        ref.Points.push_back({ { p[0], p[1], p[2] } });
-        ref.Scalars.push_back(ScalarOf(ca, c, s.Component));
-      }
-      else
-      {
-        tet[v] = static_cast<int>(pts[v]);
-      }
-    }
-    ref.Tets.push_back(tet);
-  }
-  return true;
-}
 
 // ---- Attenuation: tau(s) = opacity(s) / unit, the table linear between rows, clamped ---------
 
@@ -207,7 +52,7 @@ struct Attenuation
 {
   std::vector<double> S, Tau; // the table's rows; every S is a breakpoint
 
-  explicit Attenuation(const SceneFile& s)
+  explicit Attenuation(const psi::ReferenceSceneFile& s)
   {
     for (const auto& row : s.Table)
     {
@@ -229,240 +74,17 @@ struct Attenuation
   }
 };
 
-// ---- The reference's rays and ray / tetrahedron clipping ---------------------------------------
-// PsiReferenceRaycaster.cxx keeps these private; they are repeated here unchanged in substance,
-// and Check() compares the result with psi::RenderReference pixel by pixel.
+// ---- The reference's rays -----------------------------------------------------------------------
 
-Vec3 Transform(const std::array<double, 16>& m, double x, double y, double z)
-{
-  double o[4];
-  for (int r = 0; r < 4; ++r)
-  {
-    o[r] = m[4 * r] * x + m[4 * r + 1] * y + m[4 * r + 2] * z + m[4 * r + 3];
-  }
-  return { { o[0] / o[3], o[1] / o[3], o[2] / o[3] } };
-}
-
-std::array<double, 16> Inverse(const std::array<double, 16>& m)
-{
-  double a[4][8];
-  for (int r = 0; r < 4; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      a[r][c] = m[4 * r + c];
-      a[r][c + 4] = r == c;
-    }
-  }
-  for (int c = 0; c < 4; ++c)
-  {
-    int p = c;
-    for (int r = c + 1; r < 4; ++r)
-    {
-      if (std::abs(a[r][c]) > std::abs(a[p][c]))
-      {
-        p = r;
-      }
-    }
-    std::swap(a[c], a[p]);
-    const double d = a[c][c];
-    for (double& v : a[c])
-    {
-      v /= d;
-    }
-    for (int r = 0; r < 4; ++r)
-    {
-      if (r != c)
-      {
-        const double f = a[r][c];
-        for (int k = 0; k < 8; ++k)
-        {
-          a[r][k] -= f * a[c][k];
-        }
-      }
-    }
-  }
-  std::array<double, 16> inverse{};
-  for (int r = 0; r < 4; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      inverse[4 * r + c] = a[r][c + 4];
-    }
-  }
-  return inverse;
-}
-
-// Pixel (i, j)'s ray: from the near plane `o` along the unit direction `d`, `len` to the far plane.
-struct PixelRay
-{
-  Vec3 o, d;
-  double len;
-};
-
-PixelRay RayOf(const SceneFile& cam, int i, int j)
-{
-  PixelRay ray;
-  const double x = (i + 0.5) / cam.Width * 2 - 1, y = (j + 0.5) / cam.Height * 2 - 1;
-  ray.o = Transform(cam.NdcToWorld, x, y, -1);
-  const Vec3 f = Transform(cam.NdcToWorld, x, y, 1);
-  ray.d = psi::Sub(f, ray.o);
-  ray.len = std::sqrt(psi::Dot(ray.d, ray.d));
-  ray.d = { { ray.d[0] / ray.len, ray.d[1] / ray.len, ray.d[2] / ray.len } };
-  return ray;
-}
-
-struct TetGeometry
-{
-  Vec3 Normal[4]; // outward face normals, face i opposite vertex i
-  Vec3 Anchor[4]; // a point of face i
-  Vec3 Gradient;  // of the linear scalar
-  Vec3 Origin;    // vertex 0
-  double S0;
-  bool Valid;
-};
-
-TetGeometry MakeTet(const psi::ReferenceScene& sc, const std::array<int, 4>& t)
-{
-  TetGeometry g{};
-  Vec3 V[4];
-  for (int i = 0; i < 4; ++i)
-  {
-    V[i] = sc.Points[t[i]];
-  }
-  const Vec3 e1 = psi::Sub(V[1], V[0]), e2 = psi::Sub(V[2], V[0]), e3 = psi::Sub(V[3], V[0]);
-  const double det = psi::Dot(e1, psi::Cross(e2, e3));
-  g.Valid = std::abs(det) > 0 && std::isfinite(det);
-  if (!g.Valid)
-  {
-    return g;
-  }
-  for (int i = 0; i < 4; ++i)
-  {
-    const Vec3 &a = V[(i + 1) % 4], &b = V[(i + 2) % 4], &c = V[(i + 3) % 4];
-    Vec3 n = psi::Cross(psi::Sub(b, a), psi::Sub(c, a));
-    if (psi::Dot(n, psi::Sub(V[i], a)) > 0)
-    {
-      n = { { -n[0], -n[1], -n[2] } };
-    }
-    g.Normal[i] = n;
-    g.Anchor[i] = a;
-  }
-  // Gradient: [e1 e2 e3]^T g = ds by Cramer's rule.
-  const double ds[3] = { sc.Scalars[t[1]] - sc.Scalars[t[0]], sc.Scalars[t[2]] - sc.Scalars[t[0]],
-    sc.Scalars[t[3]] - sc.Scalars[t[0]] };
-  const Vec3 c23 = psi::Cross(e2, e3), c31 = psi::Cross(e3, e1), c12 = psi::Cross(e1, e2);
-  for (int k = 0; k < 3; ++k)
-  {
-    g.Gradient[k] = (ds[0] * c23[k] + ds[1] * c31[k] + ds[2] * c12[k]) / det;
-  }
-  g.Origin = V[0];
-  g.S0 = sc.Scalars[t[0]];
-  return g;
-}
-
-// The pixels (i0..i1, j0..j1) a tetrahedron may cover: its screen box; every pixel when it
-// reaches behind the near plane.
-std::array<int, 4> ScreenBox(const psi::ReferenceScene& sc, const std::array<int, 4>& t,
-  const std::array<double, 16>& worldToNdc, int W, int H)
-{
-  double lo[2] = { 1e300, 1e300 }, hi[2] = { -1e300, -1e300 };
-  for (int v = 0; v < 4; ++v)
-  {
-    const Vec3& p = sc.Points[t[v]];
-    double c[4];
-    for (int r = 0; r < 4; ++r)
-    {
-      c[r] = worldToNdc[4 * r] * p[0] + worldToNdc[4 * r + 1] * p[1] +
-        worldToNdc[4 * r + 2] * p[2] + worldToNdc[4 * r + 3];
-    }
-    if (c[3] <= 0 || c[2] < -c[3])
-    {
-      return { { 0, W - 1, 0, H - 1 } };
-    }
-    for (int k = 0; k < 2; ++k)
-    {
-      lo[k] = std::min(lo[k], c[k] / c[3]);
-      hi[k] = std::max(hi[k], c[k] / c[3]);
-    }
-  }
-  return { { std::max(0, static_cast<int>(std::floor((lo[0] + 1) / 2 * W - 0.5))),
-    std::min(W - 1, static_cast<int>(std::ceil((hi[0] + 1) / 2 * W - 0.5))),
-    std::max(0, static_cast<int>(std::floor((lo[1] + 1) / 2 * H - 0.5))),
-    std::min(H - 1, static_cast<int>(std::ceil((hi[1] + 1) / 2 * H - 0.5))) } };
-}
-
-// One fragment: the segment [t0, t1] of a pixel's ray inside one tetrahedron, the scalar s0, s1
-// at its ends.
-struct Fragment
-{
-  double t0, t1, s0, s1;
-};
-
-bool Clip(const TetGeometry& g, const PixelRay& ray, Fragment& f)
-{
-  double tin = 0, tout = ray.len;
-  bool hit = true;
-  for (int k = 0; k < 4 && hit; ++k)
-  {
-    const double den = psi::Dot(g.Normal[k], ray.d);
-    const double num = psi::Dot(g.Normal[k], psi::Sub(g.Anchor[k], ray.o));
-    if (den == 0)
-    {
-      hit = num >= 0;
-      continue;
-    }
-    const double tf = num / den;
-    if (den < 0)
-    {
-      tin = std::max(tin, tf);
-    }
-    else
-    {
-      tout = std::min(tout, tf);
-    }
-    hit = tout > tin;
-  }
-  if (!hit)
-  {
-    return false;
-  }
-  auto scalarAt = [&](double t) {
-    const Vec3 p = { { ray.o[0] + t * ray.d[0], ray.o[1] + t * ray.d[1],
-      ray.o[2] + t * ray.d[2] } };
-    return g.S0 + psi::Dot(g.Gradient, psi::Sub(p, g.Origin));
-  };
-  f = { tin, tout, scalarAt(tin), scalarAt(tout) };
-  return true;
-}
+// One fragment: the segment [t0, t1] of a pixel's ray inside one tetrahedron, the scalar s0, s1 at
+// its ends, as the reference clips it.
+using Fragment = psi::ReferencePiece;
 
 // Every pixel's fragments, front to back.
 std::vector<std::vector<Fragment>> PixelFragments(
-  const psi::ReferenceScene& sc, const SceneFile& cam)
+  const psi::ReferenceScene& sc, const psi::ReferenceCamera& cam)
 {
-  const int W = cam.Width, H = cam.Height;
-  std::vector<std::vector<Fragment>> pixels(static_cast<size_t>(W) * H);
-  const std::array<double, 16> worldToNdc = Inverse(cam.NdcToWorld);
-  for (const auto& t : sc.Tets)
-  {
-    const TetGeometry g = MakeTet(sc, t);
-    if (!g.Valid)
-    {
-      continue;
-    }
-    const std::array<int, 4> box = ScreenBox(sc, t, worldToNdc, W, H);
-    for (int j = box[2]; j <= box[3]; ++j)
-    {
-      for (int i = box[0]; i <= box[1]; ++i)
-      {
-        Fragment f;
-        if (Clip(g, RayOf(cam, i, j), f))
-        {
-          pixels[static_cast<size_t>(j) * W + i].push_back(f);
-        }
-      }
-    }
-  }
+  std::vector<std::vector<Fragment>> pixels = psi::ReferencePixelPieces(sc, cam);
   for (auto& list : pixels)
   {
     std::sort(list.begin(), list.end(),
@@ -544,8 +166,9 @@ RayTally Walk(const std::vector<Fragment>& fragments, const Attenuation& tau)
 }
 
 // ---- The walk against psi::RenderReference ------------------------------------------------------
-// With a white luminance the reference's color is its accumulated opacity (Moreland & Angel 2004
-// Eq. 7 with L_f = L_b = 1 gives 1 - zeta), which must be the walk's alpha. With a constant small
+// With a white luminance over a black background the reference's color is its accumulated
+// opacity (Moreland & Angel 2004 Eq. 7 with L_f = L_b = 1 gives 1 - zeta), which must be the
+// walk's alpha. With a constant small
 // attenuation kappa and no breakpoints every segment is one piece, integrated after one pair of
 // transfer-function calls (so half the calls count the fragments), and the color is
 // 1 - exp(-kappa length), which gives each pixel's length inside the mesh.
@@ -556,13 +179,11 @@ struct CheckResult
   size_t ReferenceFragments = 0;     // segments the reference integrated
 };
 
-CheckResult Check(const psi::ReferenceScene& scene, const SceneFile& s, const Attenuation& tau,
-  const std::vector<RayTally>& tallies, double extent)
+CheckResult Check(const psi::ReferenceScene& scene, const psi::ReferenceCamera& camera,
+  const Attenuation& tau, const std::vector<RayTally>& tallies, double extent)
 {
-  psi::ReferenceCamera cam;
-  cam.Width = s.Width;
-  cam.Height = s.Height;
-  cam.NdcToWorld = s.NdcToWorld;
+  psi::ReferenceCamera cam = camera;
+  cam.Background = { { 0, 0, 0 } };
   CheckResult c;
 
   psi::ReferenceScene white = scene;
@@ -597,6 +218,34 @@ CheckResult Check(const psi::ReferenceScene& scene, const SceneFile& s, const At
   return c;
 }
 
+// The scene file, the mesh's tetrahedra with their scalars, and the length of the mesh's bounding
+// box diagonal: an empty string, or why they cannot be read.
+std::string ReadInput(const char* meshPath, const char* scenePath, psi::ReferenceSceneFile& s,
+  psi::ReferenceScene& scene, double& extent)
+{
+  std::string why = psi::ReadReferenceSceneFile(scenePath, s);
+  if (!why.empty())
+  {
+    return why;
+  }
+  const vtkSmartPointer<vtkUnstructuredGrid> grid = psi::ReadTetrahedralGrid(meshPath);
+  if (!grid)
+  {
+    return "cannot read the mesh " + std::string(meshPath);
+  }
+  why = psi::GatherReferenceMesh(grid, s, scene);
+  if (!why.empty())
+  {
+    return why;
+  }
+  double bounds[6];
+  grid->GetBounds(bounds);
+  extent = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  return std::string();
+}
+
 double Seconds(std::chrono::steady_clock::time_point since)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
@@ -611,39 +260,22 @@ int main(int argc, char* argv[])
     return 2;
   }
   const bool check = argc < 4;
-  SceneFile s;
-  if (!ReadScene(argv[2], s))
-  {
-    std::cerr << "bench_saturation: cannot use the scene file " << argv[2] << "\n";
-    return 2;
-  }
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  if (!reader->CanReadFile(argv[1]))
-  {
-    std::cerr << "bench_saturation: cannot read the mesh " << argv[1] << "\n";
-    return 2;
-  }
-  reader->SetFileName(argv[1]);
-  vtkNew<vtkDataSetTriangleFilter> tets;
-  tets->SetInputConnection(reader->GetOutputPort());
-  tets->TetrahedraOnlyOn();
-  tets->Update();
+  psi::ReferenceSceneFile s;
   psi::ReferenceScene scene;
-  if (!GatherMesh(tets->GetOutput(), s, scene))
+  double extent = 0;
+  const std::string why = ReadInput(argv[1], argv[2], s, scene, extent);
+  if (!why.empty())
   {
+    std::cerr << "bench_saturation: " << why << "\n";
     return 2;
   }
-  double bounds[6];
-  tets->GetOutput()->GetBounds(bounds);
-  const double extent = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
-    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
-    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  const psi::ReferenceCamera cam = psi::ReferenceCameraOf(s);
   const Attenuation tau(s);
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<RayTally> tallies;
   {
-    const std::vector<std::vector<Fragment>> pixels = PixelFragments(scene, s);
+    const std::vector<std::vector<Fragment>> pixels = PixelFragments(scene, cam);
     tallies.reserve(pixels.size());
     for (const auto& fragments : pixels)
     {
@@ -692,7 +324,7 @@ int main(int argc, char* argv[])
     return 0;
   }
   const auto checkStart = std::chrono::steady_clock::now();
-  const CheckResult c = Check(scene, s, tau, tallies, extent);
+  const CheckResult c = Check(scene, cam, tau, tallies, extent);
   std::printf("check_reference_fragments %zu\ncheck_max_alpha_error %.3g\n"
               "check_max_length_relative_error %.3g\ncheck_seconds %.3f\n",
     c.ReferenceFragments, c.MaxAlphaError, c.MaxLengthError, Seconds(checkStart));

@@ -21,11 +21,6 @@ Vec3 Transform(const std::array<double, 16>& m, double x, double y, double z)
   return { { o[0] / o[3], o[1] / o[3], o[2] / o[3] } };
 }
 
-struct Piece
-{
-  double t0, t1, s0, s1;
-};
-
 struct TetGeometry
 {
   Vec3 Normal[4]; // outward face normals, face i opposite vertex i
@@ -221,7 +216,7 @@ std::array<int, 4> ScreenBox(const ReferenceScene& sc, const std::array<int, 4>&
 
 // The piece of `ray` inside tetrahedron `g` (exact ray / face-plane clipping); false when the
 // ray misses it.
-bool Clip(const TetGeometry& g, const PixelRay& ray, Piece& piece)
+bool Clip(const TetGeometry& g, const PixelRay& ray, ReferencePiece& piece)
 {
   const Vec3& o = ray.o;
   const Vec3& d = ray.d;
@@ -259,11 +254,13 @@ bool Clip(const TetGeometry& g, const PixelRay& ray, Piece& piece)
   return true;
 }
 
-// Each pixel's pieces of the tetrahedra its ray crosses (unsorted).
-std::vector<std::vector<Piece>> PixelPieces(const ReferenceScene& sc, const ReferenceCamera& cam)
+} // namespace
+
+std::vector<std::vector<ReferencePiece>> ReferencePixelPieces(
+  const ReferenceScene& sc, const ReferenceCamera& cam)
 {
   const int W = cam.Width, H = cam.Height;
-  std::vector<std::vector<Piece>> pixels(static_cast<size_t>(W) * H);
+  std::vector<std::vector<ReferencePiece>> pixels(static_cast<size_t>(W) * H);
   // Screen boxes: tetrahedra are binned into the pixels they may cover.
   const std::array<double, 16> worldToNdc = Inverse(cam.NdcToWorld);
   for (const auto& t : sc.Tets)
@@ -278,7 +275,7 @@ std::vector<std::vector<Piece>> PixelPieces(const ReferenceScene& sc, const Refe
     {
       for (int i = box[0]; i <= box[1]; ++i)
       {
-        Piece piece;
+        ReferencePiece piece;
         if (Clip(g, RayOf(cam, i, j), piece))
         {
           pixels[static_cast<size_t>(j) * W + i].push_back(piece);
@@ -289,11 +286,14 @@ std::vector<std::vector<Piece>> PixelPieces(const ReferenceScene& sc, const Refe
   return pixels;
 }
 
+namespace
+{
 // Integrates piece `p` of a ray (ended at `t1`, scalar `s1` there) onto `acc`, split at the
 // transfer function's breakpoints `bps` (sorted) and at the surface layers, which are composited
 // at their depths.
-void IntegratePiece(const ReferenceScene& sc, const std::vector<double>& bps, const Piece& p,
-  double t1, double s1, const std::vector<Layer>& layers, size_t& nextLayer, Rgba& acc)
+void IntegratePiece(const ReferenceScene& sc, const std::vector<double>& bps,
+  const ReferencePiece& p, double t1, double s1, const std::vector<Layer>& layers,
+  size_t& nextLayer, Rgba& acc)
 {
   // Split points along the segment: every breakpoint strictly between the end scalars.
   std::vector<double> ts = { p.t0 };
@@ -337,10 +337,11 @@ void IntegratePiece(const ReferenceScene& sc, const std::vector<double>& bps, co
 // Pixel (i, j)'s color: its pieces (sorted here) and surface layers composited front to back up
 // to the opaque geometry, over that geometry's color or the background.
 Vec3 CompositePixel(const ReferenceScene& sc, const ReferenceCamera& cam,
-  const std::vector<double>& bps, int i, int j, std::vector<Piece>& list)
+  const std::vector<double>& bps, int i, int j, std::vector<ReferencePiece>& list)
 {
   const size_t px = static_cast<size_t>(j) * cam.Width + i;
-  std::sort(list.begin(), list.end(), [](const Piece& a, const Piece& b) { return a.t0 < b.t0; });
+  std::sort(list.begin(), list.end(),
+    [](const ReferencePiece& a, const ReferencePiece& b) { return a.t0 < b.t0; });
   const PixelRay ray = RayOf(cam, i, j);
   double tOpaque = 1e300;
   if (!cam.OpaqueDepth.empty() && cam.OpaqueDepth[px] < 1.0f)
@@ -352,7 +353,7 @@ Vec3 CompositePixel(const ReferenceScene& sc, const ReferenceCamera& cam,
   Rgba acc{ { 0, 0, 0, 0 } };
   const std::vector<Layer> layers = SurfaceLayers(sc, ray.o, ray.d, std::min(ray.len, tOpaque));
   size_t nextLayer = 0;
-  for (const Piece& p : list)
+  for (const ReferencePiece& p : list)
   {
     if (p.t0 >= tOpaque || acc[3] > 1 - 1e-12)
     {
@@ -384,7 +385,7 @@ Vec3 CompositePixel(const ReferenceScene& sc, const ReferenceCamera& cam,
 std::vector<double> RenderReference(const ReferenceScene& sc, const ReferenceCamera& cam)
 {
   const int W = cam.Width, H = cam.Height;
-  std::vector<std::vector<Piece>> pixels = PixelPieces(sc, cam);
+  std::vector<std::vector<ReferencePiece>> pixels = ReferencePixelPieces(sc, cam);
   std::vector<double> image(3 * static_cast<size_t>(W) * H);
   std::vector<double> bps = sc.Breakpoints;
   std::sort(bps.begin(), bps.end());

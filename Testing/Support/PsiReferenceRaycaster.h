@@ -61,6 +61,19 @@ struct ReferenceCamera
 std::vector<double> RenderReference(
   const ReferenceScene& scene, const ReferenceCamera& camera);
 
+/// The segment [t0, t1] of a pixel's ray inside one tetrahedron and the scalar s0, s1 at its ends
+/// (linear in between). t is the distance along the ray from the near plane.
+struct ReferencePiece
+{
+  double t0, t1, s0, s1;
+};
+
+/// Each pixel's pieces (one list per pixel, rows from the bottom), unsorted: the rays and the
+/// exact ray / face-plane clipping that RenderReference integrates, before it splits a piece at
+/// the breakpoints and the surfaces. Opaque geometry does not shorten them.
+std::vector<std::vector<ReferencePiece>> ReferencePixelPieces(
+  const ReferenceScene& scene, const ReferenceCamera& camera);
+
 } // namespace psi
 
 #endif
