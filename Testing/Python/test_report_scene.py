@@ -241,6 +241,18 @@ def reference_of(view, rep, src, work):
     return images[0]
 
 
+def reference_and_report(view, rep, src, work, folder, label):
+    """The exact reference image and the report's rows on the scene; a failure of either is a
+    failed check (the reference then None, the rows empty)."""
+    ref = None
+    try:
+        ref = reference_of(view, rep, src, work)
+        return ref, accuracy.report(view, rep, src, os.path.join(work, folder), **FAST)
+    except Exception as e:  # noqa: BLE001
+        checks.check(False, "%sthe report runs: %s: %s" % (label, type(e).__name__, e))
+        return ref, []
+
+
 def row_errors(rows, name):
     r = {row["name"]: row for row in rows}.get(name) or {}
     return r.get("mean", float("nan")), r.get("max", float("nan"))
@@ -254,13 +266,7 @@ def case_names(work):
     for name in ("my f", "Dichte \u03c1 (\u00e9t\u00e9)", 'a "b" \\ c $^$'):
         named = simple.Calculator(Input=src, ResultArrayName=name, Function="RTData")
         view, rep = user_scene(named, name, size=96)
-        ref = None
-        try:
-            ref = reference_of(view, rep, named, work)
-            rows = accuracy.report(view, rep, named, os.path.join(work, "names"), **FAST)
-        except Exception as e:  # noqa: BLE001
-            rows = []
-            checks.check(False, "array %r: the report runs: %s: %s" % (name, type(e).__name__, e))
+        ref, rows = reference_and_report(view, rep, named, work, "names", "array %r: " % name)
         if ref is not None:
             d = float(np.abs(ref - plain).max())
             checks.check(d == 0, "array %r: the reference is RTData's (max |diff| %g)" % (name, d))
@@ -287,13 +293,7 @@ def case_cells(work):
     checks.check(list(rep.ColorArrayName) == ["CELLS", "f"], "colored by the cell array f")
     simple.Render(view)
     still = testing.grab(view)
-    ref = None
-    try:
-        ref = reference_of(view, rep, src, work)
-        rows = accuracy.report(view, rep, src, os.path.join(work, "cells"), **FAST)
-    except Exception as e:  # noqa: BLE001
-        rows = []
-        checks.check(False, "the report runs: %s: %s" % (type(e).__name__, e))
+    ref, rows = reference_and_report(view, rep, src, work, "cells", "")
     if ref is not None:
         e = float(np.abs(still - ref).mean())
         drawn = testing.covered(ref, view.GetRenderer().GetBackground())
