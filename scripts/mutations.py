@@ -249,6 +249,8 @@ MUTATIONS = [
     Mutation("mpi_watchdog_leaves_ranks", "scripts/lib/mpi_watchdog.py",
              "        left = end(proc.pid, grace)\n        proc.wait()",
              "        left = []\n        proc.kill()\n        proc.wait()", ["PsiProject.MpiWatchdog"]),
+    Mutation("lod_build_exception_escapes", "Representations/PsiVolumeLOD.cxx",
+             "    this->Error = e.what();", "    throw;", ["PsiRepresentations.LODImage"]),
     Mutation("lod_samples_not_interpolated", "Core/PsiLatticeSampling.cxx",
              "        s += w * this->Mesh.Points4[4 * size_t(v[a]) + 3];",
              "        s += w * this->Mesh.Points4[4 * size_t(v[0]) + 3];",

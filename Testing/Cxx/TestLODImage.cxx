@@ -12,11 +12,14 @@
 //  - The samples against VTK's vtkProbeFilter on a mesh of tetrahedra of various sizes and shapes:
 //    the same lattice points inside, the same linear interpolation there.
 //  - A point array and a cell array of one name: the association asked for is the one sampled.
+//  - A build that throws (a lattice too large to allocate) leaves no image and one error, said
+//    once, and the same inputs are not tried again; other inputs build.
 //  - The ray caster's opacity function: 1 - exp(-a) of 'Psi Volume''s a, at the nodes and between.
 //  - A slab 50 times thinner than wide: the ray caster samples it along its thin axis as finely as
 //    its lattice (one sample per smallest spacing).
 #include "PsiLODImage.h"
 #include "PsiLatticeSampling.h"
+#include "PsiVolumeLOD.h"
 #include "PsiTestCheck.h"
 #include "PsiTestMeshes.h"
 
@@ -300,6 +303,25 @@ void CheckRayCasterOpacity()
     "the ray caster's opacity 1 - exp(-a) along a ramp (worst %.2g)", worst);
 }
 
+void CheckFailedBuild()
+{
+  const double bounds[6] = { 0, 1, 0, 1, 0, 1 };
+  vtkNew<vtkUnstructuredGrid> grid;
+  MakeBoxMesh(grid, bounds, 3, [](int, int, int) { return false; });
+  PsiVolumeLOD lod;
+  PsiVolumeLOD::Scalars scalars;
+  scalars.Array = "s";
+  const int huge = 1 << 20; // 2^60 lattice points
+  const bool built = lod.Update(grid, scalars, psi::LODRegion(), huge);
+  const std::string first = lod.TakeNewError(), second = lod.TakeNewError();
+  const bool again = lod.Update(grid, scalars, psi::LODRegion(), huge);
+  PSI_CHECK(!built && !lod.HasImage() && !first.empty() && second.empty() && !again &&
+      lod.TakeNewError().empty(),
+    "a build that throws: no image, its error once ('%s'), not tried again", first.c_str());
+  PSI_CHECK(lod.Update(grid, scalars, psi::LODRegion()) && lod.HasImage(),
+    "after a failed build, other inputs build");
+}
+
 // Barycentric coordinates reproduce a point and reject a flat tetrahedron.
 void CheckBarycentric()
 {
@@ -329,5 +351,6 @@ int main()
   CheckThinSlabSampling();
   CheckBarycentric();
   CheckRayCasterOpacity();
+  CheckFailedBuild();
   return psitest::Report("TestLODImage");
 }
