@@ -4,9 +4,10 @@ pvpython Testing/Python/test_random_scenes.py [--first SEED] [--seeds N] [--size
 
 Each seed draws one scene: a mesh (a tetrahedralized Wavelet, a slab 20 times thinner than wide,
 a box 8 times longer than wide, coordinates offset by 10^6, holes, a Delaunay mesh of random
-points, one tetrahedron, nothing, the Blunt Fin when ../shared/data has it), an array (point or
-cell data, a vector's magnitude or a component, a point and a cell array of one name colored by
-either, names with spaces and non-ASCII letters, a constant field, NaN in part of the mesh), a
+points, one tetrahedron, nothing, hexahedra beside tetrahedra, the Blunt Fin when ../shared/data
+has it), an array (point or cell data, a vector's magnitude or a component, a point and a cell
+array of one name colored by either, names with spaces and non-ASCII letters, a constant field,
+NaN in part of the mesh, a separate opacity array), a
 transfer function (ParaView's ramp, a narrow spike, a step, opacity 1, all zero), a camera
 (outside, inside the mesh, parallel projection, grazing) and settings (every integration method,
 sort, projector, decomposition, adaptive sampling, early discard, an isosurface, the interaction
@@ -64,6 +65,7 @@ class Scene:
         self.words = []
         self.comparable = True  # the reference draws this scene
         self.empty = False
+        self.separate = None  # the separate opacity array, if any
 
     def pick(self, what, options):
         choice = self.rng.choice(options)
@@ -102,7 +104,7 @@ def delaunay(rng, n):
 
 def make_mesh(s):
     kind = s.pick("mesh", ["wavelet", "wavelet", "thin", "long", "offset", "holes", "delaunay",
-                           "one", "empty", "bluntfin"])
+                           "one", "empty", "bluntfin", "mixed"])
     half = s.rng.choice([3, 4, 5])
     if kind == "bluntfin":
         try:
@@ -111,6 +113,11 @@ def make_mesh(s):
         except Exception:  # noqa: BLE001 (no ../shared/data here: a Wavelet instead)
             s.words[-1] = "mesh=wavelet (no Blunt Fin data)"
             kind = "wavelet"
+    if kind == "mixed":  # hexahedra (voxels) beside tetrahedra, in one unstructured grid
+        w = simple.Wavelet(WholeExtent=[-half, half] * 3)
+        left = simple.ExtractSubset(Input=w, VOI=[-half, 0, -half, half, -half, half])
+        right = simple.ExtractSubset(Input=w, VOI=[0, half, -half, half, -half, half])
+        return simple.AppendDatasets(Input=[left, simple.Tetrahedralize(Input=right)]), "RTData"
     if kind == "delaunay":
         return delaunay(s.rng, 300), "RTData"
     if kind == "one":
@@ -139,9 +146,14 @@ def make_mesh(s):
 def make_array(s, src, array):
     """(source, association, name, vector mode or None)."""
     kind = s.pick("array", ["point", "point", "cell", "vector", "same name", "odd name",
-                            "constant", "nan"])
+                            "constant", "nan", "separate opacity"])
     if kind == "point":
         return src, "POINTS", array, None
+    if kind == "separate opacity":  # colored by the array, opacity from another (rep below)
+        other = simple.Calculator(Input=src, ResultArrayName="o", Function="abs(coordsX)")
+        s.separate = "o"
+        s.comparable = False  # the reference draws one array
+        return other, "POINTS", array, None
     if kind == "cell":
         return simple.PointDatatoCellData(Input=src), "CELLS", array, None
     if kind == "vector":
@@ -246,6 +258,9 @@ def check_scene(t, seed, size, out, overrides=()):
     simple.ColorBy(rep, (assoc, name) if vector is None else
                    (assoc, name, "Magnitude" if vector == "Magnitude" else vector))
     rep.SetRepresentationType("Psi Volume")
+    if s.separate:
+        rep.UseSeparateOpacityArray = 1
+        rep.OpacityArrayName = ["POINTS", s.separate]
     rep.RescaleTransferFunctionToDataRange(True, False)
     lut = simple.GetColorTransferFunction(name)
     lo, hi = lut.RGBPoints[0], lut.RGBPoints[-4]
