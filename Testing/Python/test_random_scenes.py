@@ -107,12 +107,11 @@ def make_mesh(s):
                            "one", "empty", "bluntfin", "mixed"])
     half = s.rng.choice([3, 4, 5])
     if kind == "bluntfin":
-        try:
-            src, array = data.plot3d("bluntfin")
-            return simple.Tetrahedralize(Input=src), array
-        except Exception:  # noqa: BLE001 (no ../shared/data here: a Wavelet instead)
-            s.words[-1] = "mesh=wavelet (no Blunt Fin data)"
-            kind = "wavelet"
+        files = data.PLOT3D["bluntfin"][:2]
+        if all(os.path.exists(os.path.join(data.SHARED_DATA, f)) for f in files):
+            return data.plot3d("bluntfin")
+        s.words[-1] = "mesh=wavelet (no Blunt Fin data in %s)" % data.SHARED_DATA
+        kind = "wavelet"
     if kind == "mixed":  # hexahedra (voxels) beside tetrahedra, in one unstructured grid
         w = simple.Wavelet(WholeExtent=[-half, half] * 3)
         left = simple.ExtractSubset(Input=w, VOI=[-half, 0, -half, half, -half, half])
