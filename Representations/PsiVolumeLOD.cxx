@@ -104,10 +104,15 @@ bool PsiVolumeLOD::Drawable(vtkDataSet* piece, const Scalars& scalars)
   return piece && piece->GetNumberOfCells() > 0 && !scalars.Array.empty();
 }
 
-bool PsiVolumeLOD::IsCurrent(
+bool PsiVolumeLOD::NeedsUpdate(
   vtkDataSet* piece, const Scalars& scalars, const Region& region, int resolution) const
 {
-  return this->Image && piece && KeyOf(piece, scalars, region, resolution) == this->Built;
+  if (!Drawable(piece, scalars))
+  {
+    return this->Image != nullptr;
+  }
+  const Key key = KeyOf(piece, scalars, region, resolution);
+  return !(this->Image && key == this->Built) && !(!this->Error.empty() && key == this->Failed);
 }
 
 bool PsiVolumeLOD::Update(vtkDataSet* piece, const Scalars& scalars, const Region& region,
@@ -118,12 +123,11 @@ bool PsiVolumeLOD::Update(vtkDataSet* piece, const Scalars& scalars, const Regio
     this->Reset();
     return false;
   }
-  const Key key = KeyOf(piece, scalars, region, resolution);
-  if (this->IsCurrent(piece, scalars, region, resolution) ||
-    (!this->Error.empty() && key == this->Failed))
+  if (!this->NeedsUpdate(piece, scalars, region, resolution))
   {
     return false;
   }
+  const Key key = KeyOf(piece, scalars, region, resolution);
   this->Reset();
   this->Error.clear();
   try

@@ -1,7 +1,7 @@
 // PsiVolumeLOD: the interactive level of detail of 'Psi Volume', a volume: the image of
 // PsiLODImage (this process's piece sampled once on a coarse lattice), drawn by VTK's GPU ray
 // caster (vtkSmartVolumeMapper) with the same vtkVolumeProperty, hence the same color map,
-// opacity function and unit distance. Each process probes its own piece alone (ParaView's
+// opacity function and unit distance. Each process samples its own piece alone (ParaView's
 // vtkPResampleToImage would be collective, and a level of detail chosen by each process's own
 // frame time must not wait for the others); in parallel each process draws only its piece's box.
 //
@@ -35,9 +35,10 @@ public:
   using Region = psi::LODRegion;
   static constexpr int DefaultResolution = psi::DefaultLODResolution;
 
-  /// Whether the image was built from this piece (unmodified since), this scalar, this region
-  /// and this resolution.
-  bool IsCurrent(vtkDataSet* piece, const Scalars& scalars, const Region& region,
+  /// Whether Update would change anything: a drawable piece whose image was not built from this
+  /// piece (unmodified since), scalar, region and resolution, and whose build did not fail for
+  /// them; or an image to forget when nothing is drawable.
+  bool NeedsUpdate(vtkDataSet* piece, const Scalars& scalars, const Region& region,
     int resolution = DefaultResolution) const;
   /// Resamples `piece` now (on vtkSMPTools' threads) when it, its scalar, the region or the
   /// resolution changed since the last build; true when it rebuilt. A null or empty piece gives
@@ -51,7 +52,7 @@ public:
   void SetViewDirection(const double direction[3]);
   /// Why the last build failed, once: "" when it did not, or when this was already taken.
   std::string TakeNewError();
-  /// The mapper that draws the image (its input set by Update or Poll).
+  /// The mapper that draws the image (its input set by Update).
   vtkSmartVolumeMapper* GetMapper() const { return this->Mapper; }
   /// Whether there is an image to draw.
   bool HasImage() const { return this->Image != nullptr; }
@@ -59,7 +60,7 @@ public:
   double GetLastDrawSeconds() const;
   /// Seconds the last build took (0 before the first).
   double GetLastBuildSeconds() const { return this->LastBuildSeconds; }
-  /// Forgets the image (a new build on the next Update or Request).
+  /// Forgets the image (a new build on the next Update).
   void Reset();
 
 private:

@@ -170,7 +170,7 @@ bool vtkPsiVolumeRepresentation::UpdateVolumeLOD(vtkInformation* inInfo, vtkPVRe
     : nullptr;
   const PsiVolumeLOD::Scalars scalars = psi::LODScalarsOf(this->PsiMapper, this->Property, piece);
   const PsiVolumeLOD::Region region = LatticeRegion(view, piece);
-  if (!this->LOD->IsCurrent(piece, scalars, region))
+  if (this->LOD->NeedsUpdate(piece, scalars, region))
   {
     this->SetProgressText("Psi Volume: interactive level of detail");
     this->UpdateProgress(0.0);
