@@ -61,14 +61,10 @@ def scene(argv):
         view = simple.CreateRenderView()
         view.ViewSize = [400, 400]
         view.OrientationAxesVisibility = 0
-        d = simple.Show(src, view)
-        simple.ColorBy(d, ("POINTS", array))
-        if args.mapper == "psi":
-            d.SetRepresentationType("Psi Volume")
-        else:
-            d.SetRepresentationType("Volume")
+        d = data.show_volume(src, array, view,
+                             "Psi Volume" if args.mapper == "psi" else "Volume")
+        if args.mapper != "psi":
             d.SelectMapper = "Projected tetra"
-        simple.GetColorTransferFunction(array).RescaleTransferFunctionToDataRange(True)
         view.ResetCamera()
         if args.barrier:
             from mpi4py import MPI  # every rank runs this only with --symmetric
