@@ -142,10 +142,12 @@ def association(src, array):
     return "CELLS"
 
 
-def show_volume(src, array, view, representation="Psi Volume", unit_distance=None):
-    """Shows `src` as a volume colored by `array` with ParaView's default maps."""
+def show_volume(src, array, view, representation="Psi Volume", unit_distance=None,
+                assoc=None):
+    """Shows `src` as a volume colored by `array` ('POINTS' or 'CELLS' as `assoc` says,
+    else the association that has it, points first) with ParaView's default maps."""
     d = simple.Show(src, view)
-    simple.ColorBy(d, (association(src, array), array))
+    simple.ColorBy(d, (assoc or association(src, array), array))
     d.SetRepresentationType(representation)
     d.RescaleTransferFunctionToDataRange(True, False)
     if unit_distance is not None:

@@ -24,12 +24,7 @@ FULL, LOD = 0, 1
 
 
 def scene(src, assoc, array, view):
-    d = simple.Show(src, view)
-    simple.ColorBy(d, (assoc, array))
-    d.SetRepresentationType("Psi Volume")
-    d.RescaleTransferFunctionToDataRange(True, False)
-    d.ScalarOpacityUnitDistance = 2.0
-    return d
+    return data.show_volume(src, array, view, unit_distance=2.0, assoc=assoc)
 
 
 def still(view):
