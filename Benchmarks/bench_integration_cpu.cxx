@@ -9,7 +9,7 @@
 #include "PsiReferenceIntegrals.h"
 #include "PsiPreIntegrationTable.h"
 #include "PsiRampTable.h"
-#include "PsiTable.h"
+#include "PsiPartialPreIntegrationTable.h"
 #include "PsiTransferFunctionTable.h"
 
 #include <algorithm>
@@ -22,7 +22,7 @@
 int main(int argc, char* argv[])
 {
   const bool csv = argc > 1 && std::strcmp(argv[1], "--csv") == 0;
-  const psi::PsiTable& table = psi::GetDefaultPsiTable();
+  const psi::PartialPreIntegrationTable& table = psi::GetDefaultPsiTable();
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> U(0, 1);
   const int N = 1000000;

@@ -1,6 +1,6 @@
 #include "PsiIntegrationMethods.h"
 
-#include "PsiTable.h"
+#include "PsiPartialPreIntegrationTable.h"
 
 #include <boost/math/special_functions/erf.hpp>
 
@@ -174,14 +174,14 @@ double Transmittance(double alpha)
 namespace
 {
 // 1. Shirley-Tuchman: average luminance and attenuation (Moreland 2004 dissertation §3.2.2).
-Rgba IntegrateAverageMethod(const TFSegment& s, const PsiTable*)
+Rgba IntegrateAverageMethod(const TFSegment& s, const PartialPreIntegrationTable*)
 {
   return IntegrateAverage(AttenuationSegment(s));
 }
 
 // 2. Partial pre-integration (Moreland & Angel 2004; Moreland 2004 dissertation §5.2): the Psi
 // table when given, exact Psi otherwise.
-Rgba IntegratePartialPreIntegration(const TFSegment& s, const PsiTable* psiTable)
+Rgba IntegratePartialPreIntegration(const TFSegment& s, const PartialPreIntegrationTable* psiTable)
 {
   const Segment g = AttenuationSegment(s);
   const double psi = psiTable ? psiTable->Lookup(GammaOf(g.taub * g.D), GammaOf(g.tauf * g.D))
@@ -191,14 +191,14 @@ Rgba IntegratePartialPreIntegration(const TFSegment& s, const PsiTable* psiTable
 
 // 3. Williams, Max & Stein 1998: Psi in closed form (Moreland 2004 dissertation Eq. 3.28). Also
 // the exact value that 7. (Röttger et al. 2000 full pre-integration) tabulates.
-Rgba IntegrateLinearExact(const TFSegment& s, const PsiTable*)
+Rgba IntegrateLinearExact(const TFSegment& s, const PartialPreIntegrationTable*)
 {
   const Segment g = AttenuationSegment(s);
   return IntegrateWithPsi(g, PsiClosedForm(g.taub * g.D, g.tauf * g.D));
 }
 
 // 4. Average luminance and opacity (Wilhelms & van Gelder 1991), combined as transmittances.
-Rgba IntegrateAverageOpacity(const TFSegment& s, const PsiTable*)
+Rgba IntegrateAverageOpacity(const TFSegment& s, const PartialPreIntegrationTable*)
 {
   const double tauD =
     DepthOfTransmittance(0.5 * (Transmittance(s.ab) + Transmittance(s.af)), s.D, s.unit);
@@ -214,7 +214,7 @@ Rgba IntegrateAverageOpacity(const TFSegment& s, const PsiTable*)
 
 // 5. Moreland 2004 dissertation §5.3.1, Appendix B.5: tau from the averaged opacity; Psi of a
 // homogeneous segment.
-Rgba IntegrateLinearLuminanceAverageOpacity(const TFSegment& s, const PsiTable*)
+Rgba IntegrateLinearLuminanceAverageOpacity(const TFSegment& s, const PartialPreIntegrationTable*)
 {
   const double tauD =
     DepthOfTransmittance(0.5 * (Transmittance(s.ab) + Transmittance(s.af)), s.D, s.unit);
@@ -224,7 +224,7 @@ Rgba IntegrateLinearLuminanceAverageOpacity(const TFSegment& s, const PsiTable*)
 
 // 6. Moreland 2004 dissertation §5.3.2, Appendix B.6: zeta from the parabola-corrected mean
 // opacity (Eq. 5.13), Psi from the 0.27/0.73-weighted opacity (Eq. 5.14).
-Rgba IntegrateLinearOpacityImproved(const TFSegment& s, const PsiTable*)
+Rgba IntegrateLinearOpacityImproved(const TFSegment& s, const PartialPreIntegrationTable*)
 {
   const double tb = Transmittance(s.ab), tf = Transmittance(s.af);
   const double zeta =
@@ -233,7 +233,7 @@ Rgba IntegrateLinearOpacityImproved(const TFSegment& s, const PsiTable*)
   return Blend(s, std::isinf(tau2D) ? 0.0 : PsiHomogeneous(tau2D), zeta);
 }
 
-Rgba IntegrateNothing(const TFSegment&, const PsiTable*)
+Rgba IntegrateNothing(const TFSegment&, const PartialPreIntegrationTable*)
 {
   return Rgba{ { 0, 0, 0, 0 } };
 }
@@ -336,7 +336,7 @@ bool UsesLinearOpacity(Method m)
   return GetIntegrationMethodInfo(m).Model == OpticalModel::LinearOpacity;
 }
 
-Rgba Integrate(Method m, const TFSegment& s, const PsiTable* psiTable)
+Rgba Integrate(Method m, const TFSegment& s, const PartialPreIntegrationTable* psiTable)
 {
   return GetIntegrationMethodInfo(m).Integrate(s, psiTable);
 }

@@ -28,7 +28,7 @@
 namespace psi
 {
 
-struct PsiTable;
+struct PartialPreIntegrationTable;
 
 /// The integration methods; the value is the IntegrationMethod property's value (the XML
 /// enumeration) and the row of IntegrationMethodTable().
@@ -62,7 +62,7 @@ struct TFSegment
 };
 
 /// CPU integrator of one segment in double precision. `psiTable` may be null (exact Psi then).
-using SegmentIntegrator = Rgba (*)(const TFSegment& s, const PsiTable* psiTable);
+using SegmentIntegrator = Rgba (*)(const TFSegment& s, const PartialPreIntegrationTable* psiTable);
 
 /// One row of the table of integration methods.
 struct IntegrationMethodInfo
@@ -119,7 +119,7 @@ PSIVOLUMECORE_EXPORT double Dawson(double x); ///< e^{-x^2} int_0^x e^{t^2} dt
 /// PsiPreIntegrationTable.h) is used by the caller instead, so this function evaluates it exactly
 /// (the limit of an infinitely fine table).
 PSIVOLUMECORE_EXPORT Rgba Integrate(
-  Method m, const TFSegment& s, const PsiTable* psiTable = nullptr);
+  Method m, const TFSegment& s, const PartialPreIntegrationTable* psiTable = nullptr);
 
 } // namespace psi
 

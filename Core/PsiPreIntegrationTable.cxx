@@ -2,7 +2,7 @@
 
 #include "PsiIntegration.h"
 #include "PsiParallel.h"
-#include "PsiTable.h"
+#include "PsiPartialPreIntegrationTable.h"
 #include "PsiTransferFunctionTable.h"
 
 #include <algorithm>
@@ -89,7 +89,7 @@ void PreIntegrationTable::Lookup(double sf, double sb, double D, double out[4]) 
   }
 }
 
-PreIntegrationTable BuildPreIntegrationTable(const TransferFunctionTable& tf, const PsiTable& psi,
+PreIntegrationTable BuildPreIntegrationTable(const TransferFunctionTable& tf, const PartialPreIntegrationTable& psi,
   const PreIntegrationLengthAxis& axis, int scalarSamples)
 {
   const auto t0 = std::chrono::steady_clock::now();

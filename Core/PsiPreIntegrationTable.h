@@ -4,7 +4,7 @@
 // Each entry integrates the transfer function along the linear scalar path from s_f to s_b: the
 // path is cut into pieces on which the sampled transfer function is linear (at most
 // MaxPiecesPerEntry, evenly in s), each piece is integrated exactly for linear luminance and
-// attenuation (partial pre-integration, psi::PsiTable), and the pieces are composited front to
+// attenuation (partial pre-integration, psi::PartialPreIntegrationTable), and the pieces are composited front to
 // back. Lengths are sampled on a logarithmic axis (PreIntegrationLengthAxis), so that short cells
 // next to long ones keep their relative accuracy. The table must be rebuilt whenever the transfer
 // function changes.
@@ -17,7 +17,7 @@
 
 namespace psi
 {
-struct PsiTable;
+struct PartialPreIntegrationTable;
 struct TransferFunctionTable;
 
 /// The table's length axis: a logarithmic scale of the segment length, as Kraus, Qiao & Ebert
@@ -66,7 +66,7 @@ constexpr int MaxPiecesPerEntry = 32;
 
 /// The table over `axis` (its Samples are the length samples).
 PSIVOLUMECORE_EXPORT PreIntegrationTable BuildPreIntegrationTable(const TransferFunctionTable& tf,
-  const PsiTable& psi, const PreIntegrationLengthAxis& axis, int scalarSamples = 128);
+  const PartialPreIntegrationTable& psi, const PreIntegrationLengthAxis& axis, int scalarSamples = 128);
 
 } // namespace psi
 

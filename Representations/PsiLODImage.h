@@ -7,7 +7,7 @@
 // transfer-function edit needs no new image.
 //
 // In parallel (ordered compositing) every process probes its piece on one lattice, spanned over
-// the whole mesh's bounds, and draws only its piece's box of it (PsiVolumeLOD crops the ray
+// the whole mesh's bounds, and draws only its piece's box of it (PsiLevelOfDetail crops the ray
 // caster to it): its ray samples are then the serial ray's samples inside that box
 // (docs/decisions.md, "Interaction").
 #ifndef PsiLODImage_h

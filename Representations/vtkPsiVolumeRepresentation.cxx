@@ -1,7 +1,7 @@
 #include "vtkPsiVolumeRepresentation.h"
 
 #include "PsiLODVolume.h"
-#include "PsiVolumeLOD.h"
+#include "PsiLevelOfDetail.h"
 
 #include "vtkDataSet.h"
 #include "vtkInformation.h"
@@ -9,6 +9,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPsiConformingTetrahedralize.h"
+#include "vtkPVLogger.h"
 #include "vtkPsiVolumeMapper.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -43,7 +44,7 @@ bool HasNonTetrahedra(vtkDataSet* data)
 vtkStandardNewMacro(vtkPsiVolumeRepresentation);
 
 vtkPsiVolumeRepresentation::vtkPsiVolumeRepresentation()
-  : LOD(new PsiVolumeLOD)
+  : LOD(new PsiLevelOfDetail)
 {
   // the actor whose low level of detail may be a volume (PsiLODVolume)
   vtkNew<PsiLODVolume> actor;
@@ -51,6 +52,8 @@ vtkPsiVolumeRepresentation::vtkPsiVolumeRepresentation()
   actor->SetLODMapper(this->LODMapper.GetPointer());
   actor->SetVisibility(this->Actor->GetVisibility());
   this->Actor = actor;
+  // the frame's stages logged at ParaView's rendering verbosity (--verbosity)
+  this->PsiMapper->SetLogVerbosity(PARAVIEW_LOG_RENDERING_VERBOSITY());
   this->AddVolumeMapper(MapperName, this->PsiMapper);
   this->Superclass::SetActiveVolumeMapper(MapperName);
 }

@@ -23,7 +23,7 @@
 
 class vtkPsiConformingTetrahedralize;
 class vtkPsiVolumeMapper;
-class PsiVolumeLOD;
+class PsiLevelOfDetail;
 class vtkPVRenderView;
 
 class PSIVOLUMEREPRESENTATIONS_EXPORT vtkPsiVolumeRepresentation
@@ -93,7 +93,7 @@ public:
   /// volume level of detail when the last still frame took longer than InteractiveBudget
   /// seconds; 1 'Volume LOD': always; 2 'ParaView surface': ParaView's own surface level of detail
   /// past its LODThreshold; 3 'Full frame': never a level of detail). The level of detail is a
-  /// volume (PsiVolumeLOD): this process's piece resampled on a coarse lattice, drawn by VTK's GPU
+  /// volume (PsiLevelOfDetail): this process's piece resampled on a coarse lattice, drawn by VTK's GPU
   /// ray caster with the same color map, opacity function and unit distance. Still renders and
   /// screenshots are always the full frame.
   void SetInteractionMode(int mode);
@@ -144,7 +144,7 @@ protected:
   vtkNew<vtkPsiConformingTetrahedralize> Conforming;
   bool TetrahedralizeInput = false;
 #ifndef __VTK_WRAP__
-  std::unique_ptr<PsiVolumeLOD> LOD;
+  std::unique_ptr<PsiLevelOfDetail> LOD;
 #endif
   bool VolumeLODInstalled = false;
   int LastInteractiveImage = -1;

@@ -1,13 +1,13 @@
 // vtkPsiVolumeRepresentation while the camera moves: in each render the representation chooses
 // what its vtkPVLODVolume draws (psi::UsesVolumeLOD decides 'Auto' from the last still frame's
-// time), builds the volume level of detail (PsiVolumeLOD) when it is stale, and reads out what
+// time), builds the volume level of detail (PsiLevelOfDetail) when it is stale, and reads out what
 // drew the frame. The rest of the representation is in vtkPsiVolumeRepresentation.cxx.
 #include "vtkPsiVolumeRepresentation.h"
 
 #include "PsiLODVolume.h"
 #include "PsiSceneQueries.h"
 #include "PsiSettings.h"
-#include "PsiVolumeLOD.h"
+#include "PsiLevelOfDetail.h"
 #include "vtkPsiVolumeMapper.h"
 
 #include "vtkAlgorithm.h"
@@ -35,9 +35,9 @@ namespace
 // it, and the pieces abut where the cuts do not (ParaView 6.1, the test's slab cut at x = 0: the
 // pieces [-16, -1] and [-1, 16]; the cut drew a gap a cell wide, mean 0.77/255 from the serial
 // level of detail, max 70/255). Serially (or without cuts) the piece's own bounds.
-PsiVolumeLOD::Region LatticeRegion(vtkPVRenderView* view, vtkDataSet* piece)
+PsiLevelOfDetail::Region LatticeRegion(vtkPVRenderView* view, vtkDataSet* piece)
 {
-  PsiVolumeLOD::Region region;
+  PsiLevelOfDetail::Region region;
   auto* manager = view
     ? vtkPVRenderViewDataDeliveryManager::SafeDownCast(view->GetDeliveryManager())
     : nullptr;
@@ -168,13 +168,13 @@ bool vtkPsiVolumeRepresentation::UpdateVolumeLOD(vtkInformation* inInfo, vtkPVRe
   vtkDataSet* piece = port && port->GetProducer()
     ? vtkDataSet::SafeDownCast(port->GetProducer()->GetOutputDataObject(port->GetIndex()))
     : nullptr;
-  const PsiVolumeLOD::Scalars scalars = psi::LODScalarsOf(this->PsiMapper, this->Property, piece);
-  const PsiVolumeLOD::Region region = LatticeRegion(view, piece);
+  const PsiLevelOfDetail::Scalars scalars = psi::LODScalarsOf(this->PsiMapper, this->Property, piece);
+  const PsiLevelOfDetail::Region region = LatticeRegion(view, piece);
   if (this->LOD->NeedsUpdate(piece, scalars, region))
   {
     this->SetProgressText("Psi Volume: interactive level of detail");
     this->UpdateProgress(0.0);
-    this->LOD->Update(piece, scalars, region, PsiVolumeLOD::DefaultResolution,
+    this->LOD->Update(piece, scalars, region, PsiLevelOfDetail::DefaultResolution,
       [this](double done) { this->UpdateProgress(done); });
     this->UpdateProgress(1.0);
     const std::string error = this->LOD->TakeNewError();

@@ -1,17 +1,17 @@
 # Tests of the Core module (GL-free math), included from Testing/CMakeLists.txt. A test of Core
-# code links PsiVolume::Core (with PsiTestSupport for the exact references, and VTK's own modules
+# code links PsiVolume::Core (with PsiReference for the exact references, and VTK's own modules
 # for the data it builds), not the Representations module or ParaView's rendering libraries.
 
 # The PTINT truth table and its fan, Psi and the segment integrals against an independent
 # quadrature, the Psi table.
 add_executable(TestPsiMath Cxx/TestPsiMath.cxx)
-target_link_libraries(TestPsiMath PRIVATE PsiVolume::Core PsiTestSupport)
+target_link_libraries(TestPsiMath PRIVATE PsiVolume::Core PsiReference)
 add_test(NAME PsiCore.Math COMMAND TestPsiMath)
 
 # Every integration method against the reference of its model; the panel's IntegrationMethod
 # enumeration checked against psi::IntegrationMethodTable().
 add_executable(TestIntegrationMethods Cxx/TestIntegrationMethods.cxx)
-target_link_libraries(TestIntegrationMethods PRIVATE PsiVolume::Core PsiTestSupport
+target_link_libraries(TestIntegrationMethods PRIVATE PsiVolume::Core PsiReference
   ParaView::VTKExtensionsCore)
 target_compile_definitions(TestIntegrationMethods PRIVATE
   PSI_REPRESENTATION_XML="${PROJECT_SOURCE_DIR}/XML/PsiVolumeRepresentation.xml")
@@ -20,12 +20,12 @@ add_test(NAME PsiCore.IntegrationMethods COMMAND TestIntegrationMethods
 
 # Exact adaptive sampling: the transfer function's nodes, 'Auto', the early-discard prefix.
 add_executable(TestTransferFunctionNodes Cxx/TestTransferFunctionNodes.cxx)
-target_link_libraries(TestTransferFunctionNodes PRIVATE PsiVolume::Core PsiTestSupport
+target_link_libraries(TestTransferFunctionNodes PRIVATE PsiVolume::Core PsiReference
   VTK::RenderingCore)
 add_test(NAME PsiCore.TransferFunctionNodes COMMAND TestTransferFunctionNodes)
 
 add_executable(TestPixelRays Cxx/TestPixelRays.cxx)
-target_link_libraries(TestPixelRays PRIVATE PsiVolume::Core PsiTestSupport VTK::RenderingCore)
+target_link_libraries(TestPixelRays PRIVATE PsiVolume::Core PsiReference VTK::RenderingCore)
 add_test(NAME PsiCore.PixelRays COMMAND TestPixelRays)
 
 # The renderer's mesh gathering and its reuse of the filter's FaceNeighbors.
@@ -48,3 +48,8 @@ add_executable(TestSettings Cxx/TestSettings.cxx)
 target_link_libraries(TestSettings PRIVATE PsiVolume::Core ParaView::VTKExtensionsCore)
 add_test(NAME PsiCore.Settings COMMAND TestSettings
   "${PROJECT_SOURCE_DIR}/XML/PsiVolumeRepresentation.xml")
+
+# The frame plan: each effect and table exactly when the scene calls for it (GL-free).
+add_executable(TestFramePlan Cxx/TestFramePlan.cxx)
+target_link_libraries(TestFramePlan PRIVATE PsiVolume::Core)
+add_test(NAME PsiCore.FramePlan COMMAND TestFramePlan)

@@ -2,7 +2,7 @@
 """Checks the size limits of the code layout (docs/architecture.md):
   - no C++ function in Core/, Representations/, Filters/ or Readers/ longer than 150 lines;
   - no C++ file there longer than 600 lines, and vtkPsiVolumeMapper.cxx at most 500;
-  - the same two limits for the test code (Testing/Cxx, Testing/Support, Testing/Fuzz): a test is
+  - the same two limits for the test code (Testing/Cxx, Reference, Testing/Fuzz): a test is
     one named function per check, and a test file past 600 lines holds more than one concept
     (its mesh builders or checkers belong in a header of their own);
   - no shader file (Shaders/*.glsl) longer than 300 lines;
@@ -20,7 +20,7 @@ from xml.parsers.expat import ExpatError
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 FOLDERS = ["Core", "Representations", "Filters", "Readers",
-           "Testing/Cxx", "Testing/Support", "Testing/Fuzz"]
+           "Testing/Cxx", "Reference", "Testing/Fuzz"]
 MAX_FUNCTION, MAX_FILE, MAX_MAPPER, MAX_SHADER = 150, 600, 500, 300
 
 

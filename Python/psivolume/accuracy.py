@@ -2,7 +2,7 @@
 (adaptive sampling off and on), its interactive image (the volume level of detail), ParaView's
 own unstructured-volume mappers and 'Resample To Image' at several sampling dimensions (the
 mapper users pick for speed), timed at the same view and measured against the exact reference,
-the project's CPU ray caster (Testing/Support/PsiReferenceRaycaster, run by
+the project's CPU ray caster (Reference/PsiReferenceRaycaster, run by
 build/bin/psi_reference_render). One-time costs are reported apart from the frame times: the
 resampling of 'Resample To Image' (its first frame) and the level of detail's build.
 

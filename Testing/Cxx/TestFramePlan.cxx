@@ -1,4 +1,4 @@
-// The frame plan (Representations/PsiFramePlan.h), without a GL context: each effect is planned
+// The frame plan (Core/PsiFramePlan.h), without a GL context: each effect is planned
 // exactly when the scene calls for it, and each table exactly when a planned feature reads it.
 // The rules: the integration method and its tables; early discard only with zero opacity and not
 // with per-fragment isosurfaces; marching tetrahedra when asked for or under 'Auto' with early
@@ -25,11 +25,17 @@ psi::Settings Settings()
   return s;
 }
 
-PsiSceneFacts Facts()
+// A driver whose geometry-shader output limits the composed program fits, or not (the mapper
+// asks psi::FitsGeometryOutputLimits, tested by TestShaderComposition); the plan asks only
+// for marching tetrahedra.
+PsiSceneFacts Facts(bool geometryOutputFits = true)
 {
   PsiSceneFacts f;
-  f.MaxGeometryOutputVertices = 256;
-  f.MaxGeometryOutputComponents = 1024;
+  f.GeometryOutputFits = [geometryOutputFits](const psi::ShaderFeatures& features)
+  {
+    PSI_CHECK(features.IsoTriangles, "the output limits asked for marching tetrahedra only");
+    return geometryOutputFits;
+  };
   return f;
 }
 
@@ -42,7 +48,7 @@ void TestMethodTables()
     const PsiFramePlan plan = PlanFrame(s, Facts());
     const psi::IntegrationMethodInfo& info = psi::GetIntegrationMethodInfo(psi::Method(m));
     PSI_CHECK(plan.Features.Method == m, "method %d drawn as %d", m, plan.Features.Method);
-    PSI_CHECK(plan.Tables.PsiTable == info.NeedsPsiTable, "method %d: Psi table", m);
+    PSI_CHECK(plan.Tables.PartialPreIntegrationTable == info.NeedsPsiTable, "method %d: Psi table", m);
     PSI_CHECK(plan.Tables.PreIntegration == info.NeedsPreIntegrationTable, "method %d: 3D table", m);
     PSI_CHECK(!plan.Tables.OpacityPrefix && !plan.Tables.AdaptiveNodes && !plan.Tables.Gradients,
       "method %d: a table no feature reads", m);
@@ -84,7 +90,7 @@ void TestIsosurfaces()
   PSI_CHECK(!PlanFrame(s, facts).Tables.Gradients && PlanFrame(s, facts).Features.IsoCount == 3,
     "unlit isosurfaces need no gradients");
   s.IsosurfaceShading = psi::IsosurfaceShadings::Flat;
-  facts.MaxGeometryOutputVertices = 16; // a driver whose budget the pieces exceed
+  facts.GeometryOutputFits = Facts(false).GeometryOutputFits; // a driver whose budget they exceed
   PSI_CHECK(MayUseIsoTriangles(s, facts) && !PlanFrame(s, facts).Features.IsoTriangles,
     "marching tetrahedra beyond the geometry-shader limits");
   facts = Facts();
@@ -131,7 +137,7 @@ void TestSeparateOpacityAndPeeling()
   plan = PlanFrame(s, facts);
   PSI_CHECK(plan.Features.Silhouette && !plan.Features.Adaptive && !plan.Tables.AdaptiveNodes,
     "a separate opacity array: silhouettes, no nodes");
-  PSI_CHECK(plan.MethodReplaced && !plan.Tables.PreIntegration && plan.Tables.PsiTable &&
+  PSI_CHECK(plan.MethodReplaced && !plan.Tables.PreIntegration && plan.Tables.PartialPreIntegrationTable &&
       plan.Features.Method == static_cast<int>(psi::Method::PartialPreIntegration),
     "full pre-integration with a separate opacity array draws as partial");
   // With isosurfaces and zero opacity, 'Auto' draws marching tetrahedra; early discard would

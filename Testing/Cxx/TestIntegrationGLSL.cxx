@@ -9,7 +9,7 @@
 #include "PsiIntegratorInputsFS.h"
 #include "PsiIntegratorSources.h"
 #include "PsiReferenceIntegrals.h"
-#include "PsiTable.h"
+#include "PsiPartialPreIntegrationTable.h"
 #include "PsiTestCheck.h"
 
 #include "vtkNew.h"
@@ -129,7 +129,7 @@ void CheckEmbeddedIntegrators()
 // The GLSL outputs `out` (RGBA per case) of method `info` against its C++ function and the
 // reference of its model on the same float inputs; prints the largest differences.
 void CompareWithCpp(const psi::IntegrationMethodInfo& info, const std::vector<Case>& cases,
-  const std::vector<float>& out, const psi::PsiTable& table)
+  const std::vector<float>& out, const psi::PartialPreIntegrationTable& table)
 {
   const int W = static_cast<int>(cases.size());
   double gpuCpu = 0, gpuRef = 0, cpuRef = 0;
@@ -208,7 +208,7 @@ int main()
     return t;
   };
   vtkSmartPointer<vtkTextureObject> tf = texture(front, 4), tb = texture(back, 4), tl = texture(len, 4);
-  const psi::PsiTable& table = psi::GetDefaultPsiTable();
+  const psi::PartialPreIntegrationTable& table = psi::GetDefaultPsiTable();
   vtkNew<vtkTextureObject> psiTex;
   psiTex->SetContext(win);
   psiTex->Create2DFromRaw(table.N, table.N, 1, VTK_FLOAT, const_cast<float*>(table.Values.data()));

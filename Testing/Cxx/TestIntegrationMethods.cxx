@@ -9,7 +9,7 @@
 #include "PsiHardCases.h"
 #include "PsiIntegrationMethods.h"
 #include "PsiReferenceIntegrals.h"
-#include "PsiTable.h"
+#include "PsiPartialPreIntegrationTable.h"
 #include "PsiSettings.h"
 #include "PsiTestCheck.h"
 
@@ -55,7 +55,7 @@ struct SweepError
   double Max = 0, Mean = 0;
 };
 
-SweepError Sweep(Method m, double D, const psi::PsiTable& table, int n = 24)
+SweepError Sweep(Method m, double D, const psi::PartialPreIntegrationTable& table, int n = 24)
 {
   SweepError e;
   int count = 0;
@@ -344,7 +344,7 @@ void CheckLinearOpacityReference()
 
 // Moreland's sweeps: error of each method against its own model's reference, within the bound
 // of its table row; returns those bounds.
-std::vector<double> CheckSweeps(const psi::PsiTable& table)
+std::vector<double> CheckSweeps(const psi::PartialPreIntegrationTable& table)
 {
   std::printf("\n%-34s %10s %10s %10s %10s   (max error over the alpha plane)\n", "method",
     "D=0.001", "D=0.1", "D=1", "D=100");
@@ -385,7 +385,7 @@ std::vector<double> CheckSweeps(const psi::PsiTable& table)
 
 // Hard cases: every method gives finite output within its bound of the reference: the case's own
 // bound where it has one for the method, else the sweep bound.
-void CheckHardCases(const psi::PsiTable& table, const std::vector<double>& bounds)
+void CheckHardCases(const psi::PartialPreIntegrationTable& table, const std::vector<double>& bounds)
 {
   const auto hard = psitest::HardCases(false);
   for (const psitest::HardCase& h : hard)
@@ -417,7 +417,7 @@ void CheckHardCases(const psi::PsiTable& table, const std::vector<double>& bound
 int main(int argc, char* argv[])
 {
   CheckTable(argc > 1 ? argv[1] : PSI_REPRESENTATION_XML);
-  const psi::PsiTable& table = psi::GetDefaultPsiTable();
+  const psi::PartialPreIntegrationTable& table = psi::GetDefaultPsiTable();
   CheckSpecialFunctions();
   CheckClosedFormPsi();
   CheckLinearOpacityReference();

@@ -19,7 +19,7 @@
 //    its lattice (one sample per smallest spacing).
 #include "PsiLODImage.h"
 #include "PsiLatticeSampling.h"
-#include "PsiVolumeLOD.h"
+#include "PsiLevelOfDetail.h"
 #include "PsiTestCheck.h"
 #include "PsiTestMeshes.h"
 
@@ -308,8 +308,8 @@ void CheckFailedBuild()
   const double bounds[6] = { 0, 1, 0, 1, 0, 1 };
   vtkNew<vtkUnstructuredGrid> grid;
   MakeBoxMesh(grid, bounds, 3, [](int, int, int) { return false; });
-  PsiVolumeLOD lod;
-  PsiVolumeLOD::Scalars scalars;
+  PsiLevelOfDetail lod;
+  PsiLevelOfDetail::Scalars scalars;
   scalars.Array = "s";
   const int huge = 1 << 20; // 2^60 lattice points
   const bool built = lod.Update(grid, scalars, psi::LODRegion(), huge);

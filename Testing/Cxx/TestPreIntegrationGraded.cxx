@@ -19,7 +19,7 @@
 #include "PsiIntegrationMethods.h"
 #include "PsiPreIntegrationTable.h"
 #include "PsiReferenceIntegrals.h"
-#include "PsiTable.h"
+#include "PsiPartialPreIntegrationTable.h"
 #include "PsiRampTable.h"
 #include "PsiTestCheck.h"
 #include "PsiTestImageCompare.h"

@@ -3,7 +3,7 @@
 #include "PsiReferenceIntegrals.h"
 #include "PsiIntegration.h"
 #include "PsiProjectionClasses.h"
-#include "PsiTable.h"
+#include "PsiPartialPreIntegrationTable.h"
 #include "PsiTestCheck.h"
 
 #include <algorithm>
@@ -217,7 +217,7 @@ void TestSegmentIntegrals()
 
 void TestPsiTable()
 {
-  const psi::PsiTable t = psi::BuildPsiTable(512);
+  const psi::PartialPreIntegrationTable t = psi::BuildPsiTable(512);
   std::printf("Psi table 512^2 built in %.3f s\n", t.BuildSeconds);
   // Bilinear lookup error over the whole domain, including off-sample points and gamma -> 1.
   std::mt19937 rng(3);

@@ -2,7 +2,7 @@
 (ParaView's default DepthPeelingForVolumes) and off.
 
 VTK's dual depth peeling renders a volume once per stage of each frame; 'Psi Volume' integrates
-in each only the depth intervals the stage asks for (Representations/PsiDepthPeelingCalls.h).
+in each only the depth intervals the stage asks for (Rendering/PsiDepthPeelingCalls.h).
 Once it was blended in whole at every stage: a stipple of lines over the whole volume, also
 where no surface covers it (mean 127/255 off in check 1). The exact intermixing of surfaces in
 front of, behind and inside the volume is measured against the reference ray caster in

@@ -30,7 +30,7 @@ struct ComputeProjectorSources
 
 /// Composes the compute projector for `f`. `integratorSource` as for psi::ComposeShaders.
 /// Throws std::logic_error when a stage output has a type it cannot pass on.
-PSIVOLUMEREPRESENTATIONS_EXPORT ComputeProjectorSources ComposeComputeProjector(
+PSIVOLUMERENDERING_EXPORT ComputeProjectorSources ComposeComputeProjector(
   const ShaderFeatures& f, const char* integratorSource = nullptr);
 
 } // namespace psi

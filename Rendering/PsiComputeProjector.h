@@ -6,7 +6,7 @@
 #ifndef PsiComputeProjector_h
 #define PsiComputeProjector_h
 
-#include "PsiVolumeRepresentationsModule.h"
+#include "PsiVolumeRenderingModule.h"
 #include "vtkSmartPointer.h"
 
 #include <cstddef>
@@ -21,7 +21,7 @@ namespace psi
 struct ShaderFeatures;
 }
 
-class PSIVOLUMEREPRESENTATIONS_EXPORT PsiComputeProjector
+class PSIVOLUMERENDERING_EXPORT PsiComputeProjector
 {
 public:
   PsiComputeProjector();

@@ -27,12 +27,13 @@
 #ifndef vtkPsiVolumeMapper_h
 #define vtkPsiVolumeMapper_h
 
-#include "PsiVolumeRepresentationsModule.h"
+#include "PsiVolumeRenderingModule.h"
 #include "vtkUnstructuredGridVolumeMapper.h"
 
 #include "PsiFrameStats.h"
 #include "PsiIsosurfaceList.h"
 #include "PsiSettings.h"
+#include "vtkLogger.h" // for vtkLogger::Verbosity
 
 #include <cstdint>
 #include <memory>
@@ -54,7 +55,7 @@ namespace psi
 struct ShaderFeatures;
 }
 
-class PSIVOLUMEREPRESENTATIONS_EXPORT vtkPsiVolumeMapper : public vtkUnstructuredGridVolumeMapper
+class PSIVOLUMERENDERING_EXPORT vtkPsiVolumeMapper : public vtkUnstructuredGridVolumeMapper
 {
 public:
   static vtkPsiVolumeMapper* New();
@@ -199,11 +200,18 @@ public:
   const std::string& GetLastFeatureDefines() const { return this->LastFeatureDefines; }
   ///@}
 
+  /// The verbosity at which each frame logs its stages' scopes and times (vtkLogger; TRACE by
+  /// default). ParaView's representation sets its rendering verbosity
+  /// (PARAVIEW_LOG_RENDERING_VERBOSITY, or --verbosity).
+  vtkSetMacro(LogVerbosity, vtkLogger::Verbosity);
+  vtkGetMacro(LogVerbosity, vtkLogger::Verbosity);
+
 protected:
   vtkPsiVolumeMapper();
   ~vtkPsiVolumeMapper() override;
 
   psi::Settings Settings;
+  vtkLogger::Verbosity LogVerbosity = vtkLogger::VERBOSITY_TRACE;
   int LastUsedProjector = psi::Projectors::GeometryShader;
   bool LastUsedEarlyDiscard = false;
   bool LastUsedNearPlaneClipping = false;

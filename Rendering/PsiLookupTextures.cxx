@@ -1,6 +1,6 @@
 #include "PsiLookupTextures.h"
 
-#include "PsiTable.h"
+#include "PsiPartialPreIntegrationTable.h"
 #include "PsiTransferFunctionAnalysis.h"
 
 #include "vtkShaderProgram.h"
@@ -110,7 +110,7 @@ PsiPartialPreIntegrationTexture::PsiPartialPreIntegrationTexture()
 
 void PsiPartialPreIntegrationTexture::Update(vtkOpenGLRenderWindow* renWin, const PsiTableSources&)
 {
-  const psi::PsiTable& table = psi::GetDefaultPsiTable();
+  const psi::PartialPreIntegrationTable& table = psi::GetDefaultPsiTable();
   this->TextureIn(renWin)->Create2DFromRaw(
     table.N, table.N, 1, VTK_FLOAT, const_cast<float*>(table.Values.data()));
   this->SetLinearClamped();
@@ -165,6 +165,6 @@ void PsiLookupTextureSet::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->Transfer.ReleaseGraphicsResources(win);
   this->OpacityPrefix.ReleaseGraphicsResources(win);
-  this->PsiTable.ReleaseGraphicsResources(win);
+  this->PartialPreIntegrationTable.ReleaseGraphicsResources(win);
   this->PreIntegration.ReleaseGraphicsResources(win);
 }

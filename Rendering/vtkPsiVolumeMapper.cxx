@@ -21,7 +21,6 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkObjectFactory.h"
-#include "vtkPVLogger.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkRenderer.h"
@@ -118,11 +117,10 @@ void vtkPsiVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
 }
 
 // One frame: mesh, visibility order, the transfer function, the plan, the tables it reads,
-// program, uniforms, draw and composite. ParaView's rendering verbosity (PARAVIEW_LOG_RENDERING_
-// VERBOSITY, or --verbosity) logs each stage's scope and time.
+// program, uniforms, draw and composite. Each stage's scope and time is logged at LogVerbosity.
 void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
-  vtkVLogScopeF(PARAVIEW_LOG_RENDERING_VERBOSITY(), "Psi Volume: frame");
+  vtkVLogScopeF(this->LogVerbosity, "Psi Volume: frame");
   const auto t0 = Clock::now();
   Internals& I = *this->Impl;
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
@@ -190,7 +188,7 @@ bool vtkPsiVolumeMapper::UpdateVisibilityOrder(
   {
     return false;
   }
-  vtkVLogScopeF(PARAVIEW_LOG_RENDERING_VERBOSITY(), "Psi Volume: visibility order");
+  vtkVLogScopeF(this->LogVerbosity, "Psi Volume: visibility order");
   std::vector<int32_t> neighbors;
   if (method == psi::Sorts::MPVONC && I.Order.NeedsMesh(I.Mesh.GetVersion(), method))
   {
@@ -209,7 +207,7 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   vtkVolume* vol, const PsiFrameCamera& cam, const PsiFramePlan& plan,
   const std::vector<PsiGpuTable*>& tables)
 {
-  vtkVLogScopeF(PARAVIEW_LOG_RENDERING_VERBOSITY(), "Psi Volume: draw");
+  vtkVLogScopeF(this->LogVerbosity, "Psi Volume: draw");
   Internals& I = *this->Impl;
   const psi::ShaderFeatures& features = plan.Features;
   const bool gradients = plan.Tables.Gradients;
@@ -296,7 +294,7 @@ bool vtkPsiVolumeMapper::UpdateMesh(
   {
     return true;
   }
-  vtkVLogScopeF(PARAVIEW_LOG_RENDERING_VERBOSITY(), "Psi Volume: mesh");
+  vtkVLogScopeF(this->LogVerbosity, "Psi Volume: mesh");
   std::string error;
   if (!I.Mesh.Update(renWin, input, scalars, cellFlag == 1, component, arrayKey,
         I.Limits().MaxTextureBufferTexels, error))

@@ -1,7 +1,6 @@
 #include "PsiFramePlan.h"
 
 #include "PsiIntegrationMethods.h"
-#include "PsiShaderComposer.h"
 
 namespace
 {
@@ -28,8 +27,7 @@ bool IsoTriangles(const psi::Settings& s, const PsiSceneFacts& facts, psi::Shade
     return false;
   }
   f.IsoTriangles = true;
-  return psi::FitsGeometryOutputLimits(
-    f, facts.MaxGeometryOutputVertices, facts.MaxGeometryOutputComponents);
+  return !facts.GeometryOutputFits || facts.GeometryOutputFits(f);
 }
 } // namespace
 
@@ -78,7 +76,7 @@ PsiFramePlan PlanFrame(const psi::Settings& s, const PsiSceneFacts& facts)
     f.EarlyDiscard = f.EarlyDiscard && !f.IsoTriangles;
   }
   plan.Tables.OpacityPrefix = f.EarlyDiscard;
-  plan.Tables.PsiTable = MethodInfo(f.Method).NeedsPsiTable;
+  plan.Tables.PartialPreIntegrationTable = MethodInfo(f.Method).NeedsPsiTable;
   plan.Tables.PreIntegration = MethodInfo(f.Method).NeedsPreIntegrationTable;
   plan.Tables.AdaptiveNodes = f.Adaptive;
   plan.Tables.Gradients = f.IsoSmooth;

@@ -6,7 +6,7 @@
 #ifndef PsiIntegratorSources_h
 #define PsiIntegratorSources_h
 
-#include "PsiVolumeRepresentationsModule.h"
+#include "PsiVolumeRenderingModule.h"
 
 #include <string>
 #include <vector>
@@ -15,10 +15,10 @@ namespace psi
 {
 /// The source of Shaders/<baseName>.glsl (e.g. "PsiIntegrateAverage"), or null if no such
 /// integrator was embedded.
-PSIVOLUMEREPRESENTATIONS_EXPORT const char* IntegratorGlslSource(const char* baseName);
+PSIVOLUMERENDERING_EXPORT const char* IntegratorGlslSource(const char* baseName);
 
 /// The base names of every embedded Shaders/PsiIntegrate*.glsl, sorted.
-PSIVOLUMEREPRESENTATIONS_EXPORT const std::vector<std::string>& IntegratorGlslNames();
+PSIVOLUMERENDERING_EXPORT const std::vector<std::string>& IntegratorGlslNames();
 } // namespace psi
 
 #endif

@@ -1,4 +1,4 @@
-// PsiVolumeLOD: the interactive level of detail of 'Psi Volume', a volume: the image of
+// PsiLevelOfDetail: the interactive level of detail of 'Psi Volume', a volume: the image of
 // PsiLODImage (this process's piece sampled once on a coarse lattice), drawn by VTK's GPU ray
 // caster (vtkSmartVolumeMapper) with the same vtkVolumeProperty, hence the same color map,
 // opacity function and unit distance. Each process samples its own piece alone (ParaView's
@@ -10,8 +10,8 @@
 // build takes a fraction of a still frame (docs/decisions.md "Interaction" has the figures and
 // the build on a thread of its own that it replaced), so no thread outlives a render and no VTK
 // object is shared with one.
-#ifndef PsiVolumeLOD_h
-#define PsiVolumeLOD_h
+#ifndef PsiLevelOfDetail_h
+#define PsiLevelOfDetail_h
 
 #include "PsiLODImage.h"
 #include "PsiVolumeRepresentationsModule.h"
@@ -25,11 +25,11 @@
 
 class vtkDataSet;
 
-class PSIVOLUMEREPRESENTATIONS_EXPORT PsiVolumeLOD
+class PSIVOLUMEREPRESENTATIONS_EXPORT PsiLevelOfDetail
 {
 public:
-  PsiVolumeLOD();
-  ~PsiVolumeLOD();
+  PsiLevelOfDetail();
+  ~PsiLevelOfDetail();
 
   using Scalars = psi::LODScalars;
   using Region = psi::LODRegion;
@@ -64,8 +64,8 @@ public:
   void Reset();
 
 private:
-  PsiVolumeLOD(const PsiVolumeLOD&) = delete;
-  void operator=(const PsiVolumeLOD&) = delete;
+  PsiLevelOfDetail(const PsiLevelOfDetail&) = delete;
+  void operator=(const PsiLevelOfDetail&) = delete;
 
   /// What an image was built from.
   struct Key

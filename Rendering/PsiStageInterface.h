@@ -13,7 +13,7 @@
 #ifndef PsiStageInterface_h
 #define PsiStageInterface_h
 
-#include "PsiVolumeRepresentationsModule.h"
+#include "PsiVolumeRenderingModule.h"
 
 #include <string>
 #include <vector>
@@ -40,11 +40,11 @@ struct ShaderVariable
 
 /// The members of struct PsiTetrahedron for `f`: the four view-space points, and the point ids
 /// or the opacity scalars when a feature reads them.
-PSIVOLUMEREPRESENTATIONS_EXPORT std::vector<ShaderVariable> TetrahedronMembers(
+PSIVOLUMERENDERING_EXPORT std::vector<ShaderVariable> TetrahedronMembers(
   const ShaderFeatures& f);
 /// The geometry code's per-vertex outputs for `f`, in declaration order. The fragment shader
 /// declares each as an input of the same name and qualifiers.
-PSIVOLUMEREPRESENTATIONS_EXPORT std::vector<ShaderVariable> GeometryOutputs(const ShaderFeatures& f);
+PSIVOLUMERENDERING_EXPORT std::vector<ShaderVariable> GeometryOutputs(const ShaderFeatures& f);
 /// The shape of a GLSL type the stages hand on (float, int, uint, [iu]vec2-4, mat2-4): `Columns`
 /// columns of `Size` components of `Kind` ("float", "int" or "uint").
 struct TypeShape
@@ -54,11 +54,11 @@ struct TypeShape
   int Columns = 1;
 };
 /// The shape of `type`; throws std::logic_error for another type.
-PSIVOLUMEREPRESENTATIONS_EXPORT TypeShape ShapeOf(const std::string& type);
+PSIVOLUMERENDERING_EXPORT TypeShape ShapeOf(const std::string& type);
 /// Components of `type` (Size x Columns of ShapeOf).
-PSIVOLUMEREPRESENTATIONS_EXPORT int Components(const std::string& type);
+PSIVOLUMERENDERING_EXPORT int Components(const std::string& type);
 /// The declaration of `v` as an output of a shader stage: `[Qualifiers]out <Type> <Name>;`.
-PSIVOLUMEREPRESENTATIONS_EXPORT std::string OutputDeclaration(const ShaderVariable& v);
+PSIVOLUMERENDERING_EXPORT std::string OutputDeclaration(const ShaderVariable& v);
 
 /// The vertex code's declarations (its //PSI::Stage::Dec): the attribute tetPointIds and tetOut.
 std::string VertexStageDeclarations(const ShaderFeatures& f, StageForm form);

@@ -4,7 +4,7 @@
 #ifndef PsiShaderFeatures_h
 #define PsiShaderFeatures_h
 
-#include "PsiVolumeRepresentationsModule.h"
+#include "PsiVolumeCoreModule.h"
 
 #include <string>
 
@@ -12,7 +12,7 @@ namespace psi
 {
 
 /// The features one shader program is composed from.
-struct PSIVOLUMEREPRESENTATIONS_EXPORT ShaderFeatures
+struct PSIVOLUMECORE_EXPORT ShaderFeatures
 {
   /// Integration method, 0..6 (psi::Method, Core/PsiIntegrationMethods.h; the same numbering as
   /// vtkPsiVolumeMapper's IntegrationMethod).
@@ -66,21 +66,21 @@ struct PSIVOLUMEREPRESENTATIONS_EXPORT ShaderFeatures
 
 /// Whether `f` draws a separate opacity array: with silhouettes and without adaptive sampling (the
 /// mapper chooses so); another feature set ignores it.
-PSIVOLUMEREPRESENTATIONS_EXPORT bool SeparateOpacityDrawn(const ShaderFeatures& f);
+PSIVOLUMECORE_EXPORT bool SeparateOpacityDrawn(const ShaderFeatures& f);
 
 /// Whether `f` draws within depth peeling: only with silhouettes (the frame plan chooses so).
-PSIVOLUMEREPRESENTATIONS_EXPORT bool DepthPeelDrawn(const ShaderFeatures& f);
+PSIVOLUMECORE_EXPORT bool DepthPeelDrawn(const ShaderFeatures& f);
 
 /// Geometry-shader output vertices: the largest projected decomposition (the fan's 8 vertices:
 /// class 2, a strip of 5 and one of 3; the silhouette and the near-plane screen box have 4), and
 /// with marching tetrahedra that once per volume piece (IsoCount + 1) plus a 4-vertex strip per
 /// surface.
-PSIVOLUMEREPRESENTATIONS_EXPORT int GeometryOutputVertices(const ShaderFeatures& f);
+PSIVOLUMECORE_EXPORT int GeometryOutputVertices(const ShaderFeatures& f);
 /// Triangles one tetrahedron emits at most: 4 for its fan (class 2; 2 for its silhouette or the
 /// near-plane screen box), and with marching
 /// tetrahedra 4 per volume piece plus 2 per surface. The compute-shader projector sizes its
 /// slots with it.
-PSIVOLUMEREPRESENTATIONS_EXPORT int ProjectedTrianglesMax(const ShaderFeatures& f);
+PSIVOLUMECORE_EXPORT int ProjectedTrianglesMax(const ShaderFeatures& f);
 
 } // namespace psi
 

@@ -10,7 +10,9 @@
 
 #include "PsiSettings.h"
 #include "PsiShaderFeatures.h"
-#include "PsiVolumeRepresentationsModule.h"
+#include "PsiVolumeCoreModule.h"
+
+#include <functional>
 
 /// What the frame finds in the scene and in its data.
 struct PsiSceneFacts
@@ -24,8 +26,10 @@ struct PsiSceneFacts
   bool ZeroOpacity = false;          ///< the opacity function has zero regions over the range
   bool NodesFaithful = true;         ///< the adaptive nodes follow the function (PsiAdaptiveNodes)
   double TableDeviation = 0;         ///< how far the sampled table misses the nodes
-  int MaxGeometryOutputVertices = 0; ///< GL_MAX_GEOMETRY_OUTPUT_VERTICES (0: not asked)
-  int MaxGeometryOutputComponents = 0; ///< GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS
+  /// Whether the geometry shader composed for these features fits the driver's output limits
+  /// (the mapper asks psi::FitsGeometryOutputLimits with GL_MAX_GEOMETRY_OUTPUT_VERTICES and
+  /// GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS); empty: not asked, it fits.
+  std::function<bool(const psi::ShaderFeatures&)> GeometryOutputFits;
 };
 
 struct PsiFramePlan
@@ -35,7 +39,7 @@ struct PsiFramePlan
   struct
   {
     bool OpacityPrefix = false;  ///< early discard's prefix counts
-    bool PsiTable = false;       ///< partial pre-integration's Psi table
+    bool PartialPreIntegrationTable = false;       ///< partial pre-integration's Psi table
     bool PreIntegration = false; ///< Röttger's 3D table
     bool AdaptiveNodes = false;  ///< the nodes as uniforms
     bool Gradients = false;      ///< smoothed point gradients (smooth isosurfaces)
@@ -48,14 +52,14 @@ struct PsiFramePlan
 };
 
 /// The frame's plan (the rules are commented where they are applied, PsiFramePlan.cxx).
-PSIVOLUMEREPRESENTATIONS_EXPORT PsiFramePlan PlanFrame(
+PSIVOLUMECORE_EXPORT PsiFramePlan PlanFrame(
   const psi::Settings& settings, const PsiSceneFacts& facts);
 /// Whether the scene calls for the adaptive nodes to be computed before the plan: adaptive
 /// sampling is on or 'Auto' (the nodes' deviation decides 'Auto').
-PSIVOLUMEREPRESENTATIONS_EXPORT bool NeedsAdaptiveNodes(const psi::Settings& settings);
+PSIVOLUMECORE_EXPORT bool NeedsAdaptiveNodes(const psi::Settings& settings);
 /// Whether isosurfaces may be drawn by marching tetrahedra (then the facts need the driver's
 /// geometry-shader limits).
-PSIVOLUMEREPRESENTATIONS_EXPORT bool MayUseIsoTriangles(
+PSIVOLUMECORE_EXPORT bool MayUseIsoTriangles(
   const psi::Settings& settings, const PsiSceneFacts& facts);
 
 #endif

@@ -1,4 +1,4 @@
-#include "PsiVolumeLOD.h"
+#include "PsiLevelOfDetail.h"
 
 #include "vtkDataSet.h"
 #include "vtkGPUVolumeRayCastMapper.h"
@@ -48,7 +48,7 @@ vtkStandardNewMacro(PsiTimedVolumeMapper);
 
 } // namespace
 
-PsiVolumeLOD::PsiVolumeLOD()
+PsiLevelOfDetail::PsiLevelOfDetail()
   : Mapper(vtkSmartPointer<PsiTimedVolumeMapper>::New())
 {
   // the image's one array: the scalar the full frame draws (a component or the magnitude
@@ -67,27 +67,27 @@ PsiVolumeLOD::PsiVolumeLOD()
   this->Mapper->SetInteractiveUpdateRate(VTK_FLOAT_MAX);
 }
 
-double PsiVolumeLOD::GetLastDrawSeconds() const
+double PsiLevelOfDetail::GetLastDrawSeconds() const
 {
   return static_cast<PsiTimedVolumeMapper*>(this->Mapper.Get())->LastSeconds;
 }
 
-PsiVolumeLOD::~PsiVolumeLOD() = default;
+PsiLevelOfDetail::~PsiLevelOfDetail() = default;
 
-void PsiVolumeLOD::Reset()
+void PsiLevelOfDetail::Reset()
 {
   this->Image = nullptr;
   this->Built = Key();
   this->Mapper->RemoveAllInputs();
 }
 
-bool PsiVolumeLOD::Key::operator==(const Key& o) const
+bool PsiLevelOfDetail::Key::operator==(const Key& o) const
 {
   return Piece == o.Piece && PieceTime == o.PieceTime && BuiltScalars == o.BuiltScalars &&
     BuiltRegion == o.BuiltRegion && Resolution == o.Resolution;
 }
 
-PsiVolumeLOD::Key PsiVolumeLOD::KeyOf(
+PsiLevelOfDetail::Key PsiLevelOfDetail::KeyOf(
   vtkDataSet* piece, const Scalars& scalars, const Region& region, int resolution)
 {
   Key key;
@@ -99,12 +99,12 @@ PsiVolumeLOD::Key PsiVolumeLOD::KeyOf(
   return key;
 }
 
-bool PsiVolumeLOD::Drawable(vtkDataSet* piece, const Scalars& scalars)
+bool PsiLevelOfDetail::Drawable(vtkDataSet* piece, const Scalars& scalars)
 {
   return piece && piece->GetNumberOfCells() > 0 && !scalars.Array.empty();
 }
 
-bool PsiVolumeLOD::NeedsUpdate(
+bool PsiLevelOfDetail::NeedsUpdate(
   vtkDataSet* piece, const Scalars& scalars, const Region& region, int resolution) const
 {
   if (!Drawable(piece, scalars))
@@ -115,7 +115,7 @@ bool PsiVolumeLOD::NeedsUpdate(
   return !(this->Image && key == this->Built) && !(!this->Error.empty() && key == this->Failed);
 }
 
-bool PsiVolumeLOD::Update(vtkDataSet* piece, const Scalars& scalars, const Region& region,
+bool PsiLevelOfDetail::Update(vtkDataSet* piece, const Scalars& scalars, const Region& region,
   int resolution, const std::function<void(double)>& progress)
 {
   if (!Drawable(piece, scalars))
@@ -146,7 +146,7 @@ bool PsiVolumeLOD::Update(vtkDataSet* piece, const Scalars& scalars, const Regio
   return this->Image != nullptr;
 }
 
-void PsiVolumeLOD::SetViewDirection(const double direction[3])
+void PsiLevelOfDetail::SetViewDirection(const double direction[3])
 {
   if (this->Image)
   {
@@ -155,14 +155,14 @@ void PsiVolumeLOD::SetViewDirection(const double direction[3])
   }
 }
 
-std::string PsiVolumeLOD::TakeNewError()
+std::string PsiLevelOfDetail::TakeNewError()
 {
   const bool fresh = !this->ErrorTaken;
   this->ErrorTaken = true;
   return fresh ? this->Error : std::string();
 }
 
-void PsiVolumeLOD::Install(const psi::LODImage& lod, const Key& key, double seconds)
+void PsiLevelOfDetail::Install(const psi::LODImage& lod, const Key& key, double seconds)
 {
   this->LastBuildSeconds = seconds;
   if (!lod.Image)
@@ -177,7 +177,7 @@ void PsiVolumeLOD::Install(const psi::LODImage& lod, const Key& key, double seco
 
 // In parallel each process draws only its piece's box: the neighbours' images abut there, as
 // ordered compositing requires.
-void PsiVolumeLOD::Crop(const Region& region)
+void PsiLevelOfDetail::Crop(const Region& region)
 {
   this->Mapper->SetCropping(region.Parallel ? 1 : 0);
   if (region.Parallel)

@@ -15,7 +15,7 @@
 
 #include "PsiShaderFeatures.h"
 #include "PsiStageInterface.h"
-#include "PsiVolumeRepresentationsModule.h"
+#include "PsiVolumeRenderingModule.h"
 
 #include <string>
 #include <vector>
@@ -24,16 +24,16 @@ namespace psi
 {
 
 /// Output components per geometry-shader vertex: gl_Position plus psi::GeometryOutputs(f).
-PSIVOLUMEREPRESENTATIONS_EXPORT int GeometryOutputComponentsPerVertex(const ShaderFeatures& f);
+PSIVOLUMERENDERING_EXPORT int GeometryOutputComponentsPerVertex(const ShaderFeatures& f);
 /// Whether the composed geometry shader fits GL_MAX_GEOMETRY_OUTPUT_VERTICES and
 /// GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS.
-PSIVOLUMEREPRESENTATIONS_EXPORT bool FitsGeometryOutputLimits(
+PSIVOLUMERENDERING_EXPORT bool FitsGeometryOutputLimits(
   const ShaderFeatures& f, int maxVertices, int maxTotalComponents);
 
 /// The GLSL of integration method `method` (Shaders/PsiIntegrate*.glsl), which defines
 /// vec4 integrateSegment(float sf, float sb, float D); methods out of range give partial
 /// pre-integration, the mapper's default.
-PSIVOLUMEREPRESENTATIONS_EXPORT const char* IntegratorSource(int method);
+PSIVOLUMERENDERING_EXPORT const char* IntegratorSource(int method);
 
 struct ShaderSources
 {
@@ -46,7 +46,7 @@ struct ShaderSources
 /// `form` (PsiStageInterface.h): Vertex and Geometry as shaders, or as the functions
 /// psiVertexMain and psiGeometryMain of the compute-shader projector; Fragment is the same.
 /// Throws std::logic_error when a section finds no tag to replace (a template error).
-PSIVOLUMEREPRESENTATIONS_EXPORT ShaderSources ComposeShaders(const ShaderFeatures& f,
+PSIVOLUMERENDERING_EXPORT ShaderSources ComposeShaders(const ShaderFeatures& f,
   const char* integratorSource = nullptr, StageForm form = StageForm::Stages);
 
 } // namespace psi

@@ -7,9 +7,9 @@
 
 #include "PsiFramePlan.h"
 #include "PsiSceneQueries.h"
+#include "PsiShaderComposer.h"
 #include "PsiShaderParameters.h"
 
-#include "vtkPVLogger.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 #include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
@@ -73,8 +73,11 @@ PsiSceneFacts vtkPsiVolumeMapper::SceneFacts(
   facts.TableDeviation = I.AdaptiveNodes.GetTableDeviation();
   if (MayUseIsoTriangles(this->Settings, facts))
   {
-    glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &facts.MaxGeometryOutputVertices);
-    glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &facts.MaxGeometryOutputComponents);
+    int vertices = 0, components = 0;
+    glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &vertices);
+    glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &components);
+    facts.GeometryOutputFits = [vertices, components](const psi::ShaderFeatures& f)
+    { return psi::FitsGeometryOutputLimits(f, vertices, components); };
   }
   return facts;
 }
@@ -84,7 +87,7 @@ void vtkPsiVolumeMapper::NotePlan(const PsiFramePlan& plan)
 {
   Internals& I = *this->Impl;
   const psi::ShaderFeatures& f = plan.Features;
-  vtkVLogF(PARAVIEW_LOG_RENDERING_VERBOSITY(), "Psi Volume: plan %s", OneLine(f.Key()).c_str());
+  vtkVLogF(this->LogVerbosity, "Psi Volume: plan %s", OneLine(f.Key()).c_str());
   this->LastUsedNearPlaneClipping = f.NearClip;
   this->LastUsedOpaqueClipping = f.OpaqueClip;
   this->LastUsedIsosurfaceMethod =
@@ -114,9 +117,9 @@ std::vector<PsiGpuTable*> vtkPsiVolumeMapper::TablesOf(const PsiFramePlan& plan)
   {
     tables.push_back(&I.Tables.OpacityPrefix);
   }
-  if (plan.Tables.PsiTable)
+  if (plan.Tables.PartialPreIntegrationTable)
   {
-    tables.push_back(&I.Tables.PsiTable);
+    tables.push_back(&I.Tables.PartialPreIntegrationTable);
   }
   if (plan.Tables.PreIntegration)
   {
@@ -134,7 +137,7 @@ std::vector<PsiGpuTable*> vtkPsiVolumeMapper::TablesOf(const PsiFramePlan& plan)
 void vtkPsiVolumeMapper::UpdateTables(vtkOpenGLRenderWindow* renWin, const PsiFramePlan& plan,
   const std::vector<PsiGpuTable*>& tables, const PsiTableSources& sources)
 {
-  vtkVLogScopeF(PARAVIEW_LOG_RENDERING_VERBOSITY(), "Psi Volume: tables");
+  vtkVLogScopeF(this->LogVerbosity, "Psi Volume: tables");
   Internals& I = *this->Impl;
   psi::UpdateTables(tables, renWin, sources);
   if (plan.Tables.PreIntegration)

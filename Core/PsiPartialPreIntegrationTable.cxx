@@ -1,4 +1,4 @@
-#include "PsiTable.h"
+#include "PsiPartialPreIntegrationTable.h"
 
 #include "PsiIntegration.h"
 #include "PsiParallel.h"
@@ -21,7 +21,7 @@ double TauDOfWarp(double u)
   return u >= 1.0 ? std::numeric_limits<double>::infinity() : 1.0 / ((1.0 - u) * (1.0 - u)) - 1.0;
 }
 
-double PsiTable::Lookup(double gammab, double gammaf) const
+double PartialPreIntegrationTable::Lookup(double gammab, double gammaf) const
 {
   auto coord = [this](double g, int& i0, double& w) {
     const double x = WarpOfGamma(std::min(std::max(g, 0.0), 1.0)) * (this->N - 1);
@@ -38,10 +38,10 @@ double PsiTable::Lookup(double gammab, double gammaf) const
   return a * (1 - wj) + b * wj;
 }
 
-PsiTable BuildPsiTable(int n)
+PartialPreIntegrationTable BuildPsiTable(int n)
 {
   const auto t0 = std::chrono::steady_clock::now();
-  PsiTable t;
+  PartialPreIntegrationTable t;
   t.N = std::max(n, 2);
   t.Values.resize(static_cast<size_t>(t.N) * t.N);
   // Rows on vtkSMPTools' threads (psi::Parallel): as many as the process allows, not one per core
@@ -63,9 +63,9 @@ PsiTable BuildPsiTable(int n)
   return t;
 }
 
-const PsiTable& GetDefaultPsiTable()
+const PartialPreIntegrationTable& GetDefaultPsiTable()
 {
-  static const PsiTable table = BuildPsiTable(512);
+  static const PartialPreIntegrationTable table = BuildPsiTable(512);
   return table;
 }
 

@@ -1,4 +1,4 @@
-// PsiTable: the partial pre-integration table Psi(gamma_b, gamma_f) (Moreland & Angel 2004 §4, Eq. 12).
+// PartialPreIntegrationTable: the partial pre-integration table Psi(gamma_b, gamma_f) (Moreland & Angel 2004 §4, Eq. 12).
 //
 // gamma = tau D / (tau D + 1) maps tau D in [0, inf) onto [0, 1), so one finite table covers every
 // cell size. Sampling gamma uniformly, as Moreland does, leaves a square-root singularity at the
@@ -9,8 +9,8 @@
 // in which Psi is linear near the edge and still smooth near 0 (u ~ gamma / 2). Samples sit at
 // u = i / (N - 1), both ends included (u = 1 is tau D -> inf, Psi = 0); bilinear filtering with
 // texcoord = (u (N - 1) + 0.5) / N interpolates between exact samples over the whole domain.
-#ifndef PsiTable_h
-#define PsiTable_h
+#ifndef PsiPartialPreIntegrationTable_h
+#define PsiPartialPreIntegrationTable_h
 
 #include "PsiVolumeCoreModule.h"
 
@@ -19,7 +19,7 @@
 namespace psi
 {
 
-struct PSIVOLUMECORE_EXPORT PsiTable
+struct PSIVOLUMECORE_EXPORT PartialPreIntegrationTable
 {
   int N = 0;
   /// Row-major: Values[j * N + i] = Psi(u_b = i/(N-1), u_f = j/(N-1)), u = WarpOfGamma(gamma).
@@ -36,12 +36,12 @@ PSIVOLUMECORE_EXPORT double WarpOfGamma(double gamma);
 PSIVOLUMECORE_EXPORT double TauDOfWarp(double u);
 
 /// Builds the table by quadrature (psi::Psi), using all hardware threads.
-PSIVOLUMECORE_EXPORT PsiTable BuildPsiTable(int n);
+PSIVOLUMECORE_EXPORT PartialPreIntegrationTable BuildPsiTable(int n);
 
 /// One table per process, built on first use at 512^2. With the warped samples 512^2 looks up
 /// Psi within 2e-5 everywhere (TestPsiMath), far below an 8-bit step; a finer table costs build
 /// time and memory for nothing an image shows (docs/decisions.md, "The Ψ table").
-PSIVOLUMECORE_EXPORT const PsiTable& GetDefaultPsiTable();
+PSIVOLUMECORE_EXPORT const PartialPreIntegrationTable& GetDefaultPsiTable();
 
 } // namespace psi
 
