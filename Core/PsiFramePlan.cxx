@@ -4,17 +4,13 @@
 
 namespace
 {
-const psi::IntegrationMethodInfo& MethodInfo(int method)
-{
-  return psi::GetIntegrationMethodInfo(static_cast<psi::Method>(method));
-}
-
 // Röttger's table tabulates one scalar for color and opacity: with a separate opacity array full
 // pre-integration draws as partial pre-integration (the tables and the program both follow).
-int DrawnMethod(const psi::Settings& s, const PsiSceneFacts& facts)
+psi::Method DrawnMethod(const psi::Settings& s, const PsiSceneFacts& facts)
 {
-  return facts.SeparateOpacity && MethodInfo(s.IntegrationMethod).NeedsPreIntegrationTable
-    ? static_cast<int>(psi::Method::PartialPreIntegration)
+  return facts.SeparateOpacity &&
+      psi::GetIntegrationMethodInfo(s.IntegrationMethod).NeedsPreIntegrationTable
+    ? psi::Method::PartialPreIntegration
     : s.IntegrationMethod;
 }
 
@@ -45,8 +41,8 @@ PsiFramePlan PlanFrame(const psi::Settings& s, const PsiSceneFacts& facts)
 {
   PsiFramePlan plan;
   psi::ShaderFeatures& f = plan.Features;
-  f.Method = DrawnMethod(s, facts);
-  plan.MethodReplaced = f.Method != s.IntegrationMethod;
+  f.Method = static_cast<int>(DrawnMethod(s, facts));
+  plan.MethodReplaced = DrawnMethod(s, facts) != s.IntegrationMethod;
   f.ExactSegments = !facts.Parallel && s.ExactPerspectiveSegments;
   // within depth peeling, the silhouettes' exact segments are clipped to the pass's intervals
   f.DepthPeel = facts.DepthPeeled;
@@ -76,8 +72,8 @@ PsiFramePlan PlanFrame(const psi::Settings& s, const PsiSceneFacts& facts)
     f.EarlyDiscard = f.EarlyDiscard && !f.IsoTriangles;
   }
   plan.Tables.OpacityPrefix = f.EarlyDiscard;
-  plan.Tables.PartialPreIntegrationTable = MethodInfo(f.Method).NeedsPsiTable;
-  plan.Tables.PreIntegration = MethodInfo(f.Method).NeedsPreIntegrationTable;
+  plan.Tables.PartialPreIntegrationTable = psi::GetIntegrationMethodInfo(f.Method).NeedsPsiTable;
+  plan.Tables.PreIntegration = psi::GetIntegrationMethodInfo(f.Method).NeedsPreIntegrationTable;
   plan.Tables.AdaptiveNodes = f.Adaptive;
   plan.Tables.Gradients = f.IsoSmooth;
   plan.SceneDepth = facts.SceneOpaque || f.NearClip || f.OpaqueClip;

@@ -94,6 +94,11 @@ PSIVOLUMECORE_EXPORT int NumberOfIntegrationMethods();
 /// The row of `m`; for a value outside the table, a row named "Unknown" whose integrator
 /// returns zero and which needs no table.
 PSIVOLUMECORE_EXPORT const IntegrationMethodInfo& GetIntegrationMethodInfo(Method m);
+/// The row of method number `method` (a shader feature's or the XML's number).
+inline const IntegrationMethodInfo& GetIntegrationMethodInfo(int method)
+{
+  return GetIntegrationMethodInfo(static_cast<Method>(method));
+}
 /// The row of an IntegrationMethod property value, or null outside the table.
 PSIVOLUMECORE_EXPORT const IntegrationMethodInfo* FindIntegrationMethod(int value);
 /// The row whose panel name is `name` (exact match), or null.

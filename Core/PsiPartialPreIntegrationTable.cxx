@@ -4,7 +4,7 @@
 #include "PsiParallel.h"
 
 #include <algorithm>
-#include <chrono>
+#include "PsiStopwatch.h"
 #include <cmath>
 #include <limits>
 
@@ -40,7 +40,7 @@ double PartialPreIntegrationTable::Lookup(double gammab, double gammaf) const
 
 PartialPreIntegrationTable BuildPsiTable(int n)
 {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   PartialPreIntegrationTable t;
   t.N = std::max(n, 2);
   t.Values.resize(static_cast<size_t>(t.N) * t.N);
@@ -59,7 +59,7 @@ PartialPreIntegrationTable BuildPsiTable(int n)
       }
     });
   });
-  t.BuildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  t.BuildSeconds = clock.Seconds();
   return t;
 }
 

@@ -6,7 +6,7 @@
 #include "PsiTransferFunctionTable.h"
 
 #include <algorithm>
-#include <chrono>
+#include "PsiStopwatch.h"
 #include <cmath>
 #include <vector>
 
@@ -92,7 +92,7 @@ void PreIntegrationTable::Lookup(double sf, double sb, double D, double out[4]) 
 PreIntegrationTable BuildPreIntegrationTable(const TransferFunctionTable& tf, const PartialPreIntegrationTable& psi,
   const PreIntegrationLengthAxis& axis, int scalarSamples)
 {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   PreIntegrationTable t;
   t.ScalarSamples = std::max(scalarSamples, 2);
   t.Axis = axis;
@@ -148,7 +148,7 @@ PreIntegrationTable BuildPreIntegrationTable(const TransferFunctionTable& tf, co
   // Rows of back scalars on vtkSMPTools' threads (psi::Parallel), in chunks small enough that
   // the costly rows (far from the diagonal: more pieces) spread over the threads.
   psi::Parallel([&] { vtkSMPTools::For(0, ns, std::max(1, ns / 64), work); });
-  t.BuildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  t.BuildSeconds = clock.Seconds();
   return t;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <type_traits>
 
 namespace psi
 {
@@ -15,18 +16,47 @@ IsosurfaceList Settings::Isosurfaces() const
     this->IsosurfaceValues, this->IsosurfaceOpacities, this->IsosurfaceOpacity);
 }
 
+// The value of a member, unclamped (SetClamped clamps first).
+void SetValue(Settings& s, Setting id, double value);
+void SetValue(InteractionSettings& s, Setting id, double value);
+
 namespace
 {
-SettingInfo Int(
-  Setting id, const char* name, int Settings::*member, int lo, int hi, bool property = true)
+// A member's value as a number, and a number as a member's value: the XML's numbers meet the
+// typed enumerations here and in the setters only.
+template <typename T>
+double AsNumber(T value)
 {
-  return { id, name, member, nullptr, double(lo), double(hi), property };
+  if constexpr (std::is_enum<T>::value)
+  {
+    return static_cast<double>(static_cast<int>(value));
+  }
+  else
+  {
+    return static_cast<double>(value);
+  }
 }
 
-SettingInfo Real(Setting id, const char* name, double Settings::*member, double lo, double hi,
-  bool property = true)
+template <typename T>
+void Assign(T& member, double value)
 {
-  return { id, name, nullptr, member, lo, hi, property };
+  if constexpr (std::is_enum<T>::value)
+  {
+    member = static_cast<T>(static_cast<int>(value));
+  }
+  else if constexpr (std::is_same<T, bool>::value)
+  {
+    member = value != 0;
+  }
+  else
+  {
+    member = static_cast<T>(value);
+  }
+}
+
+constexpr bool IsProperty(const char* where)
+{
+  return where[0] == 'P'; // PROPERTY, not MAPPER
 }
 
 std::string Number(double v)
@@ -35,32 +65,55 @@ std::string Number(double v)
   s << v;
   return s.str();
 }
+
+// The clamp of one member (SetClamped): `member` is the setting's member in its struct.
+template <typename Struct>
+std::string Clamp(Struct& s, Setting id, double value)
+{
+  const SettingInfo& info = GetSettingInfo(id);
+  if (info.Interaction != std::is_same<Struct, InteractionSettings>::value)
+  {
+    return std::string("'Psi Volume' ") + info.Name + " is not a setting of this kind.";
+  }
+  // NaN is out of every range; it becomes the lower bound
+  const double used = std::isnan(value) ? info.Min : std::min(std::max(value, info.Min), info.Max);
+  const bool whole = info.Kind != SettingKind::Real;
+  const double kept = whole ? std::floor(used) : used;
+  SetValue(s, id, kept);
+  if (kept == value)
+  {
+    return "";
+  }
+  return std::string("'Psi Volume' ") + info.Name + " = " + Number(value) +
+    (whole ? " is not one of its values (" : " is outside its range (") + Number(info.Min) +
+    " to " + Number(info.Max) + "): " + Number(ValueOf(s, id)) + " is used.";
+}
 } // namespace
+
+#define PSI_SETTING_ROW_ENUM(Name, Type, Default, Last)                                           \
+  { Setting::Name, #Name, SettingKind::Enumeration, AsNumber(Type::Default), 0,                   \
+    AsNumber(Type::Last), true, interaction },
+#define PSI_SETTING_ROW_NUMBER(Name, Type, Default, Min, Max, Where)                              \
+  { Setting::Name, #Name,                                                                         \
+    std::is_integral<Type>::value ? SettingKind::Integer : SettingKind::Real, Default, Min, Max,  \
+    IsProperty(#Where), interaction },
+#define PSI_SETTING_ROW_BOOL(Name, Default, Where)                                                \
+  { Setting::Name, #Name, SettingKind::Boolean, AsNumber(Default), 0, 1, IsProperty(#Where),      \
+    interaction },
 
 const std::vector<SettingInfo>& SettingTable()
 {
-  using S = Setting;
-  static const std::vector<SettingInfo> table{
-    Int(S::IntegrationMethod, "IntegrationMethod", &Settings::IntegrationMethod, 0,
-      NumberOfIntegrationMethods() - 1),
-    Int(S::SortMethod, "SortMethod", &Settings::SortMethod, Sorts::Centroid, Sorts::MPVONC),
-    Int(S::Projector, "Projector", &Settings::Projector, Projectors::GeometryShader,
-      Projectors::Auto),
-    Int(S::Decomposition, "Decomposition", &Settings::Decomposition, Decompositions::Silhouette,
-      Decompositions::Auto),
-    Int(S::TransferFunctionSamples, "TransferFunctionSamples", &Settings::TransferFunctionSamples,
-      2, 1 << 16, false),
-    Int(S::AdaptiveSampling, "AdaptiveSampling", &Settings::AdaptiveSampling, AdaptiveModes::Off,
-      AdaptiveModes::Auto),
-    Int(S::IsosurfaceMethod, "IsosurfaceMethod", &Settings::IsosurfaceMethod,
-      IsosurfaceMethods::MarchingTetrahedra, IsosurfaceMethods::Auto),
-    Int(S::IsosurfaceShading, "IsosurfaceShading", &Settings::IsosurfaceShading,
-      IsosurfaceShadings::Smooth, IsosurfaceShadings::Unlit),
-    Int(S::InteractionMode, "InteractionMode", &Settings::InteractionMode,
-      InteractionModes::Auto, InteractionModes::FullFrame),
-    Real(S::IsosurfaceOpacity, "IsosurfaceOpacity", &Settings::IsosurfaceOpacity, 0, 1),
-    Real(S::InteractiveBudget, "InteractiveBudget", &Settings::InteractiveBudget, 0, 60),
-  };
+  static const std::vector<SettingInfo> table = []
+  {
+    bool interaction = false;
+    std::vector<SettingInfo> rows{ PSI_RENDER_SETTINGS(
+      PSI_SETTING_ROW_ENUM, PSI_SETTING_ROW_NUMBER, PSI_SETTING_ROW_BOOL) };
+    interaction = true;
+    const std::vector<SettingInfo> more{ PSI_INTERACTION_SETTINGS(
+      PSI_SETTING_ROW_ENUM, PSI_SETTING_ROW_NUMBER, PSI_SETTING_ROW_BOOL) };
+    rows.insert(rows.end(), more.begin(), more.end());
+    return rows;
+  }();
   return table;
 }
 
@@ -69,42 +122,62 @@ const SettingInfo& GetSettingInfo(Setting id)
   return SettingTable()[static_cast<size_t>(id)];
 }
 
+#define PSI_SETTING_GET(Name, ...)                                                                \
+  case Setting::Name:                                                                             \
+    return AsNumber(s.Name);
+#define PSI_SETTING_SET(Name, ...)                                                                \
+  case Setting::Name:                                                                             \
+    Assign(s.Name, value);                                                                        \
+    return;
+
 double ValueOf(const Settings& s, Setting id)
 {
-  const SettingInfo& info = GetSettingInfo(id);
-  return info.Int ? s.*info.Int : s.*info.Double;
+  switch (id)
+  {
+    PSI_RENDER_SETTINGS(PSI_SETTING_GET, PSI_SETTING_GET, PSI_SETTING_GET)
+    default:
+      return std::nan("");
+  }
+}
+
+double ValueOf(const InteractionSettings& s, Setting id)
+{
+  switch (id)
+  {
+    PSI_INTERACTION_SETTINGS(PSI_SETTING_GET, PSI_SETTING_GET, PSI_SETTING_GET)
+    default:
+      return std::nan("");
+  }
+}
+
+void SetValue(Settings& s, Setting id, double value)
+{
+  switch (id)
+  {
+    PSI_RENDER_SETTINGS(PSI_SETTING_SET, PSI_SETTING_SET, PSI_SETTING_SET)
+    default:
+      return;
+  }
+}
+
+void SetValue(InteractionSettings& s, Setting id, double value)
+{
+  switch (id)
+  {
+    PSI_INTERACTION_SETTINGS(PSI_SETTING_SET, PSI_SETTING_SET, PSI_SETTING_SET)
+    default:
+      return;
+  }
 }
 
 std::string SetClamped(Settings& s, Setting id, double value)
 {
-  const SettingInfo& info = GetSettingInfo(id);
-  // NaN is out of every range; it becomes the lower bound
-  const double used = std::isnan(value) ? info.Min : std::min(std::max(value, info.Min), info.Max);
-  if (info.Int)
-  {
-    s.*info.Int = static_cast<int>(used);
-  }
-  else
-  {
-    s.*info.Double = used;
-  }
-  if (used == value && (!info.Int || used == std::floor(used)))
-  {
-    return "";
-  }
-  return std::string("'Psi Volume' ") + info.Name + " = " + Number(value) +
-    (info.Int ? " is not one of its values (" : " is outside its range (") + Number(info.Min) +
-    " to " + Number(info.Max) + "): " + Number(ValueOf(s, id)) + " is used.";
+  return Clamp(s, id, value);
 }
 
-const std::vector<BoolSettingInfo>& BoolSettingTable()
+std::string SetClamped(InteractionSettings& s, Setting id, double value)
 {
-  static const std::vector<BoolSettingInfo> table{
-    { "ExactPerspectiveSegments", &Settings::ExactPerspectiveSegments, false },
-    { "EarlyDiscard", &Settings::EarlyDiscard },
-    { "IsosurfaceUseColorMap", &Settings::IsosurfaceUseColorMap },
-  };
-  return table;
+  return Clamp(s, id, value);
 }
 
 bool UsesComputeProjector(const Settings& s)
@@ -129,7 +202,7 @@ bool UsesAdaptiveSampling(const Settings& s, double tableDeviation)
     (s.AdaptiveSampling == AdaptiveModes::Auto && tableDeviation > AdaptiveAutoDeviation);
 }
 
-bool UsesVolumeLOD(const Settings& s, double lastStillSeconds)
+bool UsesVolumeLOD(const InteractionSettings& s, double lastStillSeconds)
 {
   return s.InteractionMode == InteractionModes::VolumeLOD ||
     (s.InteractionMode == InteractionModes::Auto && lastStillSeconds > s.InteractiveBudget);

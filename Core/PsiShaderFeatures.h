@@ -4,19 +4,22 @@
 #ifndef PsiShaderFeatures_h
 #define PsiShaderFeatures_h
 
+#include "PsiIntegrationMethods.h"
+#include "PsiSettings.h" // psi::MaxAdaptiveNodes
 #include "PsiVolumeCoreModule.h"
 
 #include <string>
 
+// Plain C++ for the planner, the composers and the tests; VTK's wrappers need none of it.
+#ifndef __VTK_WRAP__
 namespace psi
 {
 
 /// The features one shader program is composed from.
 struct PSIVOLUMECORE_EXPORT ShaderFeatures
 {
-  /// Integration method, 0..6 (psi::Method, Core/PsiIntegrationMethods.h; the same numbering as
-  /// vtkPsiVolumeMapper's IntegrationMethod).
-  int Method = 1;
+  /// Integration method, 0..6 (the numbers of psi::Method, Core/PsiIntegrationMethods.h).
+  int Method = static_cast<int>(psi::Method::PartialPreIntegration);
   /// Perspective: exact segments from the front point and the back plane (PsiExactSegments*.glsl)
   /// instead of the screen-linear (s_f, s_b, l) triple (PsiHAPTSegments*.glsl).
   bool ExactSegments = false;
@@ -46,7 +49,7 @@ struct PSIVOLUMECORE_EXPORT ShaderFeatures
   /// Drawn within VTK's dual depth peeling: each draw integrates the segments' parts inside a
   /// depth interval the pass gives per pixel (PsiDepthPeelFS.glsl); needs Silhouette.
   bool DepthPeel = false;
-  int MaxAdaptiveNodes = 64;
+  int MaxAdaptiveNodes = psi::MaxAdaptiveNodes;
   int MaxLights = 8;
 
   bool operator==(const ShaderFeatures& o) const;
@@ -83,5 +86,7 @@ PSIVOLUMECORE_EXPORT int GeometryOutputVertices(const ShaderFeatures& f);
 PSIVOLUMECORE_EXPORT int ProjectedTrianglesMax(const ShaderFeatures& f);
 
 } // namespace psi
+
+#endif // __VTK_WRAP__
 
 #endif

@@ -10,6 +10,7 @@
 #define PsiGpuTable_h
 
 #include "PsiPreIntegrationTable.h"
+#include "PsiSettings.h" // the defaults of the table sizes
 
 #include <vector>
 
@@ -25,12 +26,12 @@ struct PsiTableSources
   vtkVolumeProperty* Property = nullptr;
   const double* ScalarRange = nullptr;  ///< the color scalars' range: the tables' domain
   const double* OpacityRange = nullptr; ///< a separate opacity array's range; nullptr: none
-  int Samples = 1024;                   ///< of the sampled transfer function
+  int Samples = psi::Settings().TransferFunctionSamples; ///< of the sampled transfer function
   /// The sampled transfer function the other tables derive from (updated before them).
   const PsiTransferFunctionTexture* Transfer = nullptr;
   psi::PreIntegrationLengthAxis LengthAxis; ///< the mesh's segment lengths (full pre-integration)
-  int MaxNodes = 64;                        ///< adaptive sampling's node budget
-  double NodeTolerance = 1.0 / 512;         ///< and how closely the nodes follow the function
+  int MaxNodes = psi::MaxAdaptiveNodes;     ///< adaptive sampling's node budget
+  double NodeTolerance = psi::AdaptiveNodeTolerance; ///< how closely the nodes follow the function
 };
 
 class PsiGpuTable

@@ -7,7 +7,7 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
+#include "PsiStopwatch.h"
 #include <utility>
 
 namespace
@@ -35,14 +35,14 @@ PsiVisibilityOrder::~PsiVisibilityOrder()
 }
 
 bool PsiVisibilityOrder::NeedsUpdate(
-  int meshVersion, int method, const double mcvc[16], bool parallel) const
+  int meshVersion, psi::Sorts method, const double mcvc[16], bool parallel) const
 {
   return !this->OnGPU || meshVersion != this->MeshVersion || method != this->Method ||
     parallel != this->Parallel || !std::equal(mcvc, mcvc + 16, this->View.begin());
 }
 
 void PsiVisibilityOrder::Update(const psi::TetMesh& mesh, int meshVersion,
-  std::vector<int32_t> faceNeighbors, int method, const double mcvc[16], bool parallel)
+  std::vector<int32_t> faceNeighbors, psi::Sorts method, const double mcvc[16], bool parallel)
 {
   this->Finish();
   if (this->NeedsMesh(meshVersion, method))
@@ -64,11 +64,10 @@ void PsiVisibilityOrder::Update(const psi::TetMesh& mesh, int meshVersion,
   std::array<double, 3> eye;
   EyeInModel(mcvc, parallel, eye.data());
   this->Worker = std::thread([this, eye, parallel]() {
-    const auto t0 = std::chrono::steady_clock::now();
+    const psi::Stopwatch clock;
     const size_t cycles =
       this->Sort->Sort(eye.data(), parallel, this->Order, [this](size_t n) { this->Emitted(n); });
-    const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double seconds = clock.Seconds();
     std::lock_guard<std::mutex> guard(this->Lock);
     this->LastCycles = cycles;
     this->LastSortSeconds = seconds;

@@ -10,6 +10,7 @@
 #ifndef PsiVisibilityOrder_h
 #define PsiVisibilityOrder_h
 
+#include "PsiSettings.h" // psi::Sorts
 #include "PsiTetSort.h"
 
 #include <array>
@@ -29,11 +30,11 @@ public:
   PsiVisibilityOrder();
   ~PsiVisibilityOrder();
 
-  /// method: psi::Sorts (Core/PsiSettings.h). mcvc: model (shifted) to view matrix, row-major.
-  bool NeedsUpdate(int meshVersion, int method, const double mcvc[16], bool parallel) const;
+  /// mcvc: model (shifted) to view matrix, row-major.
+  bool NeedsUpdate(int meshVersion, psi::Sorts method, const double mcvc[16], bool parallel) const;
   /// Whether the next Update takes a new mesh (the mesh or the method changed): only then does it
   /// use the face neighbours it is offered.
-  bool NeedsMesh(int meshVersion, int method) const
+  bool NeedsMesh(int meshVersion, psi::Sorts method) const
   {
     return !this->Sort || meshVersion != this->MeshVersion || method != this->Method;
   }
@@ -41,7 +42,7 @@ public:
   /// this order draws it. `faceNeighbors` (may be empty) are offered to the sort when the mesh
   /// or the method changed (see psi::TetSort::SetMesh).
   void Update(const psi::TetMesh& mesh, int meshVersion, std::vector<int32_t> faceNeighbors,
-    int method, const double mcvc[16], bool parallel);
+    psi::Sorts method, const double mcvc[16], bool parallel);
   /// Streams the tetrahedra in order, chunk by chunk, each as soon as the sort has finished it:
   /// writes the chunk's four point ids per tetrahedron to the stream buffer (GetStreamBuffer)
   /// and calls drawChunk(first, count), `first` being the chunk's first tetrahedron there.
@@ -93,7 +94,7 @@ private:
   std::mutex Lock;
   std::condition_variable Progress;
   size_t Final = 0;    ///< entries of Order the sort has emitted (guarded by Lock)
-  int Method = -1;
+  psi::Sorts Method = psi::Sorts::MPVONC; ///< the sort's, once there is one
   int MeshVersion = -1;
   std::array<double, 16> View{};
   bool Parallel = false;

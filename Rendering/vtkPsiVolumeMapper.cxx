@@ -32,23 +32,12 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
+#include "PsiStopwatch.h"
 #include <string>
 #include <vector>
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point t0)
-{
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-const psi::IntegrationMethodInfo& MethodInfo(int method)
-{
-  return psi::GetIntegrationMethodInfo(static_cast<psi::Method>(method));
-}
 } // namespace
 
 vtkStandardNewMacro(vtkPsiVolumeMapper);
@@ -64,11 +53,10 @@ void vtkPsiVolumeMapper::SetSettings(const psi::Settings& settings)
 {
   for (const psi::SettingInfo& info : psi::SettingTable())
   {
-    this->SetRanged(info.Id, psi::ValueOf(settings, info.Id));
-  }
-  for (const psi::BoolSettingInfo& info : psi::BoolSettingTable())
-  {
-    this->SetBool(info.Member, settings.*info.Member);
+    if (!info.Interaction)
+    {
+      this->SetRanged(info.Id, psi::ValueOf(settings, info.Id));
+    }
   }
   this->SetIsosurfaceColor(
     settings.IsosurfaceColor[0], settings.IsosurfaceColor[1], settings.IsosurfaceColor[2]);
@@ -95,15 +83,6 @@ void vtkPsiVolumeMapper::SetRanged(psi::Setting id, double value)
   }
 }
 
-void vtkPsiVolumeMapper::SetBool(bool psi::Settings::*member, bool on)
-{
-  if (this->Settings.*member != on)
-  {
-    this->Settings.*member = on;
-    this->Modified();
-  }
-}
-
 const char* vtkPsiVolumeMapper::GetIntegrationMethodName(int method)
 {
   const psi::IntegrationMethodInfo* info = psi::FindIntegrationMethod(method);
@@ -121,7 +100,7 @@ void vtkPsiVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
 void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
   vtkVLogScopeF(this->LogVerbosity, "Psi Volume: frame");
-  const auto t0 = Clock::now();
+  const psi::Stopwatch clock;
   Internals& I = *this->Impl;
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   vtkUnstructuredGridBase* input = this->GetInput();
@@ -169,7 +148,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     this->Stats.LastSortCycles = static_cast<vtkIdType>(I.Order.GetLastCycles());
   }
   const PsiDepthPeelingCalls::Stage stage = I.Peeling.GetStage();
-  this->Stats.LastRenderSeconds = this->Frame.Add(SecondsSince(t0),
+  this->Stats.LastRenderSeconds = this->Frame.Add(clock.Seconds(),
     stage == PsiDepthPeelingCalls::Plain || stage == PsiDepthPeelingCalls::OutsideLayers);
   if (!psi::IsInteractiveRender(renWin))
   {
@@ -183,7 +162,7 @@ bool vtkPsiVolumeMapper::UpdateVisibilityOrder(
   vtkUnstructuredGridBase* input, const PsiFrameCamera& cam)
 {
   Internals& I = *this->Impl;
-  const int method = this->Settings.SortMethod;
+  const psi::Sorts method = this->Settings.SortMethod;
   if (!I.Order.NeedsUpdate(I.Mesh.GetVersion(), method, cam.MCVC, cam.Parallel))
   {
     return false;
@@ -212,8 +191,8 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   const psi::ShaderFeatures& features = plan.Features;
   const bool gradients = plan.Tables.Gradients;
   const bool compute = PsiComputeProjector::Chosen(psi::UsesComputeProjector(this->Settings), renWin);
-  this->LastUsedProjector =
-    compute ? psi::Projectors::ComputeShader : psi::Projectors::GeometryShader;
+  this->LastUsedProjector = static_cast<int>(
+    compute ? psi::Projectors::ComputeShader : psi::Projectors::GeometryShader);
   vtkShaderProgram* program = this->ReadyProjection(renWin, features, compute);
   if (!program)
   {
@@ -329,7 +308,7 @@ vtkShaderProgram* vtkPsiVolumeMapper::ReadyProjection(
   {
     vtkErrorMacro("Psi Volume: " << (integrator ? error
                                                 : std::string("no GLSL integrator ") +
-                         MethodInfo(features.Method).GlslName + ".glsl embedded."));
+                         psi::GetIntegrationMethodInfo(features.Method).GlslName + ".glsl embedded."));
   }
   return program;
 }
@@ -399,11 +378,10 @@ void vtkPsiVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   for (const psi::SettingInfo& info : psi::SettingTable())
   {
-    os << indent << info.Name << ": " << psi::ValueOf(this->Settings, info.Id) << "\n";
-  }
-  for (const psi::BoolSettingInfo& info : psi::BoolSettingTable())
-  {
-    os << indent << info.Name << ": " << (this->Settings.*info.Member ? "on" : "off") << "\n";
+    if (!info.Interaction)
+    {
+      os << indent << info.Name << ": " << psi::ValueOf(this->Settings, info.Id) << "\n";
+    }
   }
   os << indent << "NumberOfTetrahedra: " << this->Stats.NumberOfTetrahedra << "\n";
   os << indent << "NumberOfSkippedCells: " << this->Stats.NumberOfSkippedCells << "\n";

@@ -32,6 +32,7 @@
 
 #include "PsiFrameStats.h"
 #include "PsiIsosurfaceList.h"
+#include "PsiSettingList.h" // PSI_RENDER_SETTINGS: the setters below
 #include "PsiSettings.h"
 #include "vtkLogger.h" // for vtkLogger::Verbosity
 
@@ -70,48 +71,38 @@ public:
   ///@}
 
   ///@{
-  /// Ray integration within each cell: a psi::Method value, i.e. a row of
-  /// psi::IntegrationMethodTable() (PsiIntegrationMethods.h), which documents each.
-  void SetIntegrationMethod(int method) { this->SetRanged(psi::Setting::IntegrationMethod, method); }
-  int GetIntegrationMethod() const { return this->Settings.IntegrationMethod; }
+  /// One Set/Get per setting of PSI_RENDER_SETTINGS (Core/PsiSettingList.h documents each, its
+  /// values and its default): an enumeration by its number (the XML's, for ParaView and Python)
+  /// or, from C++, by its typed enumerator; clamped to its range with one warning
+  /// (psi::SetClamped); a boolean also with On/Off.
+#ifdef __VTK_WRAP__
+#define PSI_MAPPER_TYPED_SETTER(Name, Type)
+#else
+#define PSI_MAPPER_TYPED_SETTER(Name, Type)                                                       \
+  void Set##Name(psi::Type value) { this->Set##Name(static_cast<int>(value)); }
+#endif
+#define PSI_MAPPER_ENUM(Name, Type, Default, Last)                                                \
+  void Set##Name(int value) { this->SetRanged(psi::Setting::Name, value); }                       \
+  PSI_MAPPER_TYPED_SETTER(Name, Type)                                                             \
+  int Get##Name() const { return static_cast<int>(this->Settings.Name); }
+#define PSI_MAPPER_NUMBER(Name, Type, Default, Min, Max, Where)                                   \
+  void Set##Name(Type value) { this->SetRanged(psi::Setting::Name, value); }                      \
+  Type Get##Name() const { return this->Settings.Name; }
+#define PSI_MAPPER_BOOL(Name, Default, Where)                                                     \
+  void Set##Name(bool on) { this->SetRanged(psi::Setting::Name, on); }                            \
+  bool Get##Name() const { return this->Settings.Name; }                                          \
+  vtkBooleanMacro(Name, bool);
+  PSI_RENDER_SETTINGS(PSI_MAPPER_ENUM, PSI_MAPPER_NUMBER, PSI_MAPPER_BOOL)
+#undef PSI_MAPPER_ENUM
+#undef PSI_MAPPER_NUMBER
+#undef PSI_MAPPER_BOOL
+#undef PSI_MAPPER_TYPED_SETTER
+  /// The name of integration method `method` (psi::IntegrationMethodTable()).
   static const char* GetIntegrationMethodName(int method);
-  /// Visibility order: psi::Sorts.
-  void SetSortMethod(int method) { this->SetRanged(psi::Setting::SortMethod, method); }
-  int GetSortMethod() const { return this->Settings.SortMethod; }
-  /// Which stage projects the tetrahedra (psi::Projectors; both run the same classification and
-  /// emission code, Shaders/PsiVolumeGS.glsl with its features). The compute shader asked for
-  /// where OpenGL 4.3 is missing draws with the geometry shader, with a warning.
-  void SetProjector(int projector) { this->SetRanged(psi::Setting::Projector, projector); }
-  int GetProjector() const { return this->Settings.Projector; }
   /// The projector the last frame used (psi::Projectors::GeometryShader or ComputeShader).
   vtkGetMacro(LastUsedProjector, int);
-  /// How each projection is drawn: psi::Decompositions.
-  void SetDecomposition(int d) { this->SetRanged(psi::Setting::Decomposition, d); }
-  int GetDecomposition() const { return this->Settings.Decomposition; }
-  /// With the fan in perspective: exact segments from the face planes (default on).
-  void SetExactPerspectiveSegments(bool on) { this->SetBool(&psi::Settings::ExactPerspectiveSegments, on); }
-  bool GetExactPerspectiveSegments() const { return this->Settings.ExactPerspectiveSegments; }
-  vtkBooleanMacro(ExactPerspectiveSegments, bool);
-  /// Maximo et al. 2010 §3.5: drop tetrahedra whose scalar range sees zero opacity only, in the
-  /// geometry shader (default on; used only when the opacity function has zero regions; with
-  /// marching-tetrahedra isosurfaces only the transparent pieces of a cell are dropped).
-  void SetEarlyDiscard(bool on) { this->SetBool(&psi::Settings::EarlyDiscard, on); }
-  bool GetEarlyDiscard() const { return this->Settings.EarlyDiscard; }
-  vtkBooleanMacro(EarlyDiscard, bool);
   /// Whether the last frame used early discard.
   vtkGetMacro(LastUsedEarlyDiscard, bool);
-  /// Number of samples of the transfer function table (default 1024).
-  void SetTransferFunctionSamples(int n) { this->SetRanged(psi::Setting::TransferFunctionSamples, n); }
-  int GetTransferFunctionSamples() const { return this->Settings.TransferFunctionSamples; }
-  /// Adaptive transfer-function sampling (Moreland's dissertation §4.3): psi::AdaptiveModes.
-  void SetAdaptiveSampling(int mode) { this->SetRanged(psi::Setting::AdaptiveSampling, mode); }
-  int GetAdaptiveSampling() const { return this->Settings.AdaptiveSampling; }
-  /// What an interactive render draws (psi::InteractionModes) and its budget in seconds: read by
-  /// vtkPsiVolumeRepresentation, which draws the level of detail (psi::UsesVolumeLOD).
-  void SetInteractionMode(int mode) { this->SetRanged(psi::Setting::InteractionMode, mode); }
-  int GetInteractionMode() const { return this->Settings.InteractionMode; }
-  void SetInteractiveBudget(double s) { this->SetRanged(psi::Setting::InteractiveBudget, s); }
-  double GetInteractiveBudget() const { return this->Settings.InteractiveBudget; }
   ///@}
 
   ///@{
@@ -124,9 +115,6 @@ public:
   void SetIsosurfaceValue(int i, double value);
   double GetIsosurfaceValue(int i) const;
   void SetIsosurfaceValues(const std::vector<double>& values);
-  /// Opacity of every isosurface, 0..1 (default 1: opaque, hides what is behind it).
-  void SetIsosurfaceOpacity(double opacity);
-  double GetIsosurfaceOpacity() const { return this->Settings.IsosurfaceOpacity; }
   /// Each isosurface's own opacity, in the order of the isovalues as given: entry i applies to
   /// isovalue i; isovalues without an entry use IsosurfaceOpacity. Values are clamped to 0..1.
   void SetNumberOfIsosurfaceOpacities(int n);
@@ -136,20 +124,8 @@ public:
   /// Solid color of the isosurfaces, used when IsosurfaceUseColorMap is off.
   void SetIsosurfaceColor(double r, double g, double b);
   const double* GetIsosurfaceColor() const { return this->Settings.IsosurfaceColor; }
-  /// Color each isosurface through the color map at its value (default on).
-  void SetIsosurfaceUseColorMap(bool on) { this->SetBool(&psi::Settings::IsosurfaceUseColorMap, on); }
-  bool GetIsosurfaceUseColorMap() const { return this->Settings.IsosurfaceUseColorMap; }
-  vtkBooleanMacro(IsosurfaceUseColorMap, bool);
-  /// How isosurfaces are drawn: psi::IsosurfaceMethods. Marching tetrahedra grow the geometry
-  /// shader's output with the number of isovalues, within the GL limit
-  /// (GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS); beyond it the per-fragment method is used.
-  void SetIsosurfaceMethod(int method) { this->SetRanged(psi::Setting::IsosurfaceMethod, method); }
-  int GetIsosurfaceMethod() const { return this->Settings.IsosurfaceMethod; }
   /// Method the last frame used for its isosurfaces, -1 when it drew none.
   vtkGetMacro(LastUsedIsosurfaceMethod, int);
-  /// psi::IsosurfaceShadings: smooth (default), flat, unlit.
-  void SetIsosurfaceShading(int shading) { this->SetRanged(psi::Setting::IsosurfaceShading, shading); }
-  int GetIsosurfaceShading() const { return this->Settings.IsosurfaceShading; }
   ///@}
 
   void Render(vtkRenderer* ren, vtkVolume* vol) override;
@@ -212,7 +188,7 @@ protected:
 
   psi::Settings Settings;
   vtkLogger::Verbosity LogVerbosity = vtkLogger::VERBOSITY_TRACE;
-  int LastUsedProjector = psi::Projectors::GeometryShader;
+  int LastUsedProjector = 0; ///< psi::Projectors::GeometryShader
   bool LastUsedEarlyDiscard = false;
   bool LastUsedNearPlaneClipping = false;
   bool LastUsedOpaqueClipping = false;
@@ -231,7 +207,6 @@ private:
 
 #ifndef __VTK_WRAP__
   void SetRanged(psi::Setting id, double value);
-  void SetBool(bool psi::Settings::*member, bool on);
 #endif
   void SetIsosurfaceVector(std::vector<double>& member, std::vector<double> v);
   void UpdateIsosurfaceList();

@@ -91,9 +91,9 @@ void vtkPsiVolumeMapper::NotePlan(const PsiFramePlan& plan)
   this->LastUsedNearPlaneClipping = f.NearClip;
   this->LastUsedOpaqueClipping = f.OpaqueClip;
   this->LastUsedIsosurfaceMethod =
-    f.IsoCount == 0               ? -1
-    : f.IsoTriangles ? psi::IsosurfaceMethods::MarchingTetrahedra
-                     : psi::IsosurfaceMethods::PerFragment;
+    f.IsoCount == 0 ? -1
+                    : static_cast<int>(f.IsoTriangles ? psi::IsosurfaceMethods::MarchingTetrahedra
+                                                      : psi::IsosurfaceMethods::PerFragment);
   this->LastUsedEarlyDiscard = f.EarlyDiscard;
   this->LastUsedAdaptiveSampling = f.Adaptive;
   this->LastNumberOfAdaptiveNodes = f.Adaptive ? I.AdaptiveNodes.Size() : 0;

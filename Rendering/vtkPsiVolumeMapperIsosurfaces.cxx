@@ -7,11 +7,6 @@
 #include <utility>
 #include <vector>
 
-void vtkPsiVolumeMapper::SetIsosurfaceOpacity(double opacity)
-{
-  this->SetRanged(psi::Setting::IsosurfaceOpacity, opacity);
-}
-
 void vtkPsiVolumeMapper::SetIsosurfaceColor(double r, double g, double b)
 {
   double* c = this->Settings.IsosurfaceColor;

@@ -4,18 +4,12 @@
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkObjectFactory.h"
 
-#include <chrono>
+#include "PsiStopwatch.h"
 #include <exception>
 #include <utility>
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point t0)
-{
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // VTK's smart volume mapper (the GPU ray caster where there is one), timed.
 class PsiTimedVolumeMapper : public vtkSmartVolumeMapper
@@ -38,9 +32,9 @@ public:
   }
   void Render(vtkRenderer* ren, vtkVolume* vol) override
   {
-    const Clock::time_point t0 = Clock::now();
+    const psi::Stopwatch clock;
     this->Superclass::Render(ren, vol);
-    this->LastSeconds = SecondsSince(t0);
+    this->LastSeconds = clock.Seconds();
   }
   double LastSeconds = 0;
 };
@@ -132,9 +126,9 @@ bool PsiLevelOfDetail::Update(vtkDataSet* piece, const Scalars& scalars, const R
   this->Error.clear();
   try
   {
-    const Clock::time_point t0 = Clock::now();
+    const psi::Stopwatch clock;
     const psi::LODImage lod = psi::ResampleForLOD(piece, scalars, region, resolution, progress);
-    this->Install(lod, key, SecondsSince(t0));
+    this->Install(lod, key, clock.Seconds());
   }
   catch (const std::exception& e)
   {

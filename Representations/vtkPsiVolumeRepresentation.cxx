@@ -106,54 +106,56 @@ void vtkPsiVolumeRepresentation::Forward(Setter set, Values... values)
   }
 }
 
-void vtkPsiVolumeRepresentation::SetIntegrationMethod(int method)
-{
-  this->Forward(&vtkPsiVolumeMapper::SetIntegrationMethod, method);
-}
+// The setters of PSI_RENDER_SETTINGS forward to the mapper, whose clamp warns once.
+#define PSI_FORWARD_ENUM(Name, Type, Default, Last)                                               \
+  void vtkPsiVolumeRepresentation::Set##Name(int value)                                           \
+  {                                                                                               \
+    using NumberSetter = void (vtkPsiVolumeMapper::*)(int);                                       \
+    this->Forward(static_cast<NumberSetter>(&vtkPsiVolumeMapper::Set##Name), value);              \
+  }
+#define PSI_FORWARD_NUMBER(Name, Type, Default, Min, Max, Where)                                  \
+  void vtkPsiVolumeRepresentation::Set##Name(Type value)                                          \
+  {                                                                                               \
+    this->Forward(&vtkPsiVolumeMapper::Set##Name, value);                                         \
+  }
+#define PSI_FORWARD_BOOL(Name, Default, Where)                                                    \
+  void vtkPsiVolumeRepresentation::Set##Name(int on)                                              \
+  {                                                                                               \
+    this->Forward(&vtkPsiVolumeMapper::Set##Name, on != 0);                                       \
+  }
+PSI_RENDER_SETTINGS(PSI_FORWARD_ENUM, PSI_FORWARD_NUMBER, PSI_FORWARD_BOOL)
 
-int vtkPsiVolumeRepresentation::GetIntegrationMethod()
-{
-  return this->PsiMapper->GetIntegrationMethod();
-}
+// The setters of PSI_INTERACTION_SETTINGS set the representation's own.
+#define PSI_INTERACTION_ENUM(Name, Type, Default, Last)                                           \
+  void vtkPsiVolumeRepresentation::Set##Name(int value)                                           \
+  {                                                                                               \
+    this->SetInteraction(psi::Setting::Name, value);                                              \
+  }
+#define PSI_INTERACTION_NUMBER(Name, Type, Default, Min, Max, Where)                              \
+  void vtkPsiVolumeRepresentation::Set##Name(Type value)                                          \
+  {                                                                                               \
+    this->SetInteraction(psi::Setting::Name, value);                                              \
+  }
+#define PSI_INTERACTION_BOOL(Name, Default, Where)                                                \
+  void vtkPsiVolumeRepresentation::Set##Name(int on)                                              \
+  {                                                                                               \
+    this->SetInteraction(psi::Setting::Name, on);                                                 \
+  }
+PSI_INTERACTION_SETTINGS(PSI_INTERACTION_ENUM, PSI_INTERACTION_NUMBER, PSI_INTERACTION_BOOL)
 
-void vtkPsiVolumeRepresentation::SetEarlyDiscard(bool on)
+// The one clamp of an interaction setting, with its one warning (psi::SetClamped).
+void vtkPsiVolumeRepresentation::SetInteraction(psi::Setting id, double value)
 {
-  this->Forward(&vtkPsiVolumeMapper::SetEarlyDiscard, on);
-}
-
-bool vtkPsiVolumeRepresentation::GetEarlyDiscard()
-{
-  return this->PsiMapper->GetEarlyDiscard();
-}
-
-void vtkPsiVolumeRepresentation::SetSortMethod(int method)
-{
-  this->Forward(&vtkPsiVolumeMapper::SetSortMethod, method);
-}
-
-int vtkPsiVolumeRepresentation::GetSortMethod()
-{
-  return this->PsiMapper->GetSortMethod();
-}
-
-void vtkPsiVolumeRepresentation::SetProjector(int projector)
-{
-  this->Forward(&vtkPsiVolumeMapper::SetProjector, projector);
-}
-
-int vtkPsiVolumeRepresentation::GetProjector()
-{
-  return this->PsiMapper->GetProjector();
-}
-
-void vtkPsiVolumeRepresentation::SetDecomposition(int decomposition)
-{
-  this->Forward(&vtkPsiVolumeMapper::SetDecomposition, decomposition);
-}
-
-int vtkPsiVolumeRepresentation::GetDecomposition()
-{
-  return this->PsiMapper->GetDecomposition();
+  const double before = psi::ValueOf(this->Interaction, id);
+  const std::string warning = psi::SetClamped(this->Interaction, id, value);
+  if (!warning.empty())
+  {
+    vtkWarningMacro(<< warning);
+  }
+  if (psi::ValueOf(this->Interaction, id) != before)
+  {
+    this->Modified();
+  }
 }
 
 void vtkPsiVolumeRepresentation::SetNumberOfIsosurfaces(int n)
@@ -164,11 +166,6 @@ void vtkPsiVolumeRepresentation::SetNumberOfIsosurfaces(int n)
 void vtkPsiVolumeRepresentation::SetIsosurfaceValue(int i, double value)
 {
   this->Forward(&vtkPsiVolumeMapper::SetIsosurfaceValue, i, value);
-}
-
-void vtkPsiVolumeRepresentation::SetIsosurfaceOpacity(double opacity)
-{
-  this->Forward(&vtkPsiVolumeMapper::SetIsosurfaceOpacity, opacity);
 }
 
 void vtkPsiVolumeRepresentation::SetNumberOfIsosurfaceOpacities(int n)
@@ -186,21 +183,6 @@ void vtkPsiVolumeRepresentation::SetIsosurfaceColor(double r, double g, double b
   this->Forward(&vtkPsiVolumeMapper::SetIsosurfaceColor, r, g, b);
 }
 
-void vtkPsiVolumeRepresentation::SetIsosurfaceUseColorMap(int on)
-{
-  this->Forward(&vtkPsiVolumeMapper::SetIsosurfaceUseColorMap, on != 0);
-}
-
-void vtkPsiVolumeRepresentation::SetIsosurfaceShading(int shading)
-{
-  this->Forward(&vtkPsiVolumeMapper::SetIsosurfaceShading, shading);
-}
-
-void vtkPsiVolumeRepresentation::SetIsosurfaceMethod(int method)
-{
-  this->Forward(&vtkPsiVolumeMapper::SetIsosurfaceMethod, method);
-}
-
 int vtkPsiVolumeRepresentation::GetLastUsedIsosurfaceMethod()
 {
   return this->PsiMapper->GetLastUsedIsosurfaceMethod();
@@ -209,36 +191,6 @@ int vtkPsiVolumeRepresentation::GetLastUsedIsosurfaceMethod()
 int vtkPsiVolumeRepresentation::GetLastNumberOfAdaptiveNodes()
 {
   return this->PsiMapper->GetLastNumberOfAdaptiveNodes();
-}
-
-void vtkPsiVolumeRepresentation::SetAdaptiveSampling(int mode)
-{
-  this->Forward(&vtkPsiVolumeMapper::SetAdaptiveSampling, mode);
-}
-
-int vtkPsiVolumeRepresentation::GetAdaptiveSampling()
-{
-  return this->PsiMapper->GetAdaptiveSampling();
-}
-
-void vtkPsiVolumeRepresentation::SetInteractionMode(int mode)
-{
-  this->Forward(&vtkPsiVolumeMapper::SetInteractionMode, mode);
-}
-
-int vtkPsiVolumeRepresentation::GetInteractionMode()
-{
-  return this->PsiMapper->GetInteractionMode();
-}
-
-void vtkPsiVolumeRepresentation::SetInteractiveBudget(double seconds)
-{
-  this->Forward(&vtkPsiVolumeMapper::SetInteractiveBudget, seconds);
-}
-
-double vtkPsiVolumeRepresentation::GetInteractiveBudget()
-{
-  return this->PsiMapper->GetInteractiveBudget();
 }
 
 double vtkPsiVolumeRepresentation::GetLastPreIntegrationSeconds()
@@ -284,5 +236,12 @@ psi::FrameStats vtkPsiVolumeRepresentation::GetFrameStats() const
 void vtkPsiVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  for (const psi::SettingInfo& info : psi::SettingTable())
+  {
+    if (info.Interaction)
+    {
+      os << indent << info.Name << ": " << psi::ValueOf(this->Interaction, info.Id) << "\n";
+    }
+  }
   this->PsiMapper->PrintSelf(os, indent.GetNextIndent());
 }

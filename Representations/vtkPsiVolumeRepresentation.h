@@ -16,6 +16,8 @@
 
 #include "PsiVolumeRepresentationsModule.h"
 #include "PsiFrameStats.h"
+#include "PsiSettingList.h" // PSI_RENDER_SETTINGS, PSI_INTERACTION_SETTINGS: the setters below
+#include "PsiSettings.h"
 #include "vtkNew.h"
 #include "vtkUnstructuredGridVolumeRepresentation.h"
 
@@ -43,63 +45,38 @@ public:
   vtkAlgorithmOutput* GetInternalOutputPort(int port, int conn) override;
 
   ///@{
-  /// A psi::Method value: a row of psi::IntegrationMethodTable() (PsiIntegrationMethods.h).
-  void SetIntegrationMethod(int method);
-  int GetIntegrationMethod();
+  /// One setter per setting of PSI_RENDER_SETTINGS and PSI_INTERACTION_SETTINGS
+  /// (Core/PsiSettingList.h documents each): the XML's numbers, clamped with one warning. The
+  /// first go to the mapper; the second, what an interactive render (the camera moving) draws,
+  /// stay here (psi::InteractionSettings): 'Auto' draws the volume level of detail
+  /// (PsiLevelOfDetail: this process's piece resampled on a coarse lattice, drawn by VTK's GPU
+  /// ray caster with the same color map, opacity function and unit distance) when the last still
+  /// frame took longer than InteractiveBudget seconds. Still renders and screenshots are always
+  /// the full frame.
+#define PSI_REPRESENTATION_ENUM(Name, Type, Default, Last) void Set##Name(int value);
+#define PSI_REPRESENTATION_NUMBER(Name, Type, Default, Min, Max, Where) void Set##Name(Type value);
+#define PSI_REPRESENTATION_BOOL(Name, Default, Where) void Set##Name(int on);
+  PSI_RENDER_SETTINGS(PSI_REPRESENTATION_ENUM, PSI_REPRESENTATION_NUMBER, PSI_REPRESENTATION_BOOL)
+  PSI_INTERACTION_SETTINGS(
+    PSI_REPRESENTATION_ENUM, PSI_REPRESENTATION_NUMBER, PSI_REPRESENTATION_BOOL)
+#undef PSI_REPRESENTATION_ENUM
+#undef PSI_REPRESENTATION_NUMBER
+#undef PSI_REPRESENTATION_BOOL
   ///@}
 
   ///@{
-  /// See vtkPsiVolumeMapper::SetEarlyDiscard (HAPT §3.5).
-  void SetEarlyDiscard(bool on);
-  bool GetEarlyDiscard();
-  ///@}
-
-  ///@{
-  /// See vtkPsiVolumeMapper::SortMethods.
-  void SetSortMethod(int method);
-  int GetSortMethod();
-  ///@}
-
-  ///@{
-  /// See vtkPsiVolumeMapper::Projectors.
-  void SetProjector(int projector);
-  int GetProjector();
-  /// See vtkPsiVolumeMapper::Decompositions.
-  void SetDecomposition(int decomposition);
-  int GetDecomposition();
-  ///@}
-
-  ///@{
-  /// Isosurfaces and adaptive sampling: see vtkPsiVolumeMapper.
+  /// Isosurfaces: see vtkPsiVolumeMapper.
   void SetNumberOfIsosurfaces(int n);
   void SetIsosurfaceValue(int i, double value);
-  void SetIsosurfaceOpacity(double opacity);
   void SetNumberOfIsosurfaceOpacities(int n);
   void SetIsosurfaceOpacityValue(int i, double opacity);
   void SetIsosurfaceColor(double r, double g, double b);
-  void SetIsosurfaceUseColorMap(int on);
-  /// psi::IsosurfaceShadings: 0 smooth, 1 flat (both lit by the view's lights), 2 unlit.
-  void SetIsosurfaceShading(int shading);
-  void SetIsosurfaceMethod(int method);
   int GetLastUsedIsosurfaceMethod();
-  void SetAdaptiveSampling(int mode);
-  int GetAdaptiveSampling();
   /// Nodes adaptive sampling used in the last frame (0: it was not used).
   int GetLastNumberOfAdaptiveNodes();
   ///@}
 
   ///@{
-  /// What an interactive render (the camera moving) draws: psi::InteractionModes (0 'Auto': the
-  /// volume level of detail when the last still frame took longer than InteractiveBudget
-  /// seconds; 1 'Volume LOD': always; 2 'ParaView surface': ParaView's own surface level of detail
-  /// past its LODThreshold; 3 'Full frame': never a level of detail). The level of detail is a
-  /// volume (PsiLevelOfDetail): this process's piece resampled on a coarse lattice, drawn by VTK's GPU
-  /// ray caster with the same color map, opacity function and unit distance. Still renders and
-  /// screenshots are always the full frame.
-  void SetInteractionMode(int mode);
-  int GetInteractionMode();
-  void SetInteractiveBudget(double seconds);
-  double GetInteractiveBudget();
   /// What drew the last interactive frame: psi::InteractiveImages (-1 no interactive frame yet).
   vtkGetMacro(LastInteractiveImage, int);
   /// Seconds the last interactive frame's volume took to draw on this process.
@@ -145,6 +122,7 @@ protected:
   bool TetrahedralizeInput = false;
 #ifndef __VTK_WRAP__
   std::unique_ptr<PsiLevelOfDetail> LOD;
+  psi::InteractionSettings Interaction;
 #endif
   bool VolumeLODInstalled = false;
   int LastInteractiveImage = -1;
@@ -154,6 +132,7 @@ private:
 #ifndef __VTK_WRAP__
   template <typename Setter, typename... Values>
   void Forward(Setter set, Values... values);
+  void SetInteraction(psi::Setting id, double value);
 #endif
   void operator=(const vtkPsiVolumeRepresentation&) = delete;
 };

@@ -68,7 +68,7 @@ int vtkPsiVolumeRepresentation::ProcessViewRequest(
   vtkInformationRequestKey* request_type, vtkInformation* inInfo, vtkInformation* outInfo)
 {
   if (request_type == vtkPVView::REQUEST_UPDATE_LOD() &&
-    this->PsiMapper->GetInteractionMode() != psi::InteractionModes::ParaViewSurface)
+    this->Interaction.InteractionMode != psi::InteractionModes::ParaViewSurface)
   {
     return this->UpdateUnusedSurfaceLOD(inInfo, outInfo);
   }
@@ -108,7 +108,7 @@ void vtkPsiVolumeRepresentation::ChooseInteractiveImage(vtkInformation* inInfo)
   vtkPVRenderView* view = vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW()));
   const bool interactive = view && psi::IsInteractiveRender(view->GetRenderWindow()) &&
     !view->GetUseInteractiveRenderingForScreenshots();
-  const psi::Settings& s = this->PsiMapper->GetSettings();
+  const psi::InteractionSettings& s = this->Interaction;
   const bool surface = s.InteractionMode == psi::InteractionModes::ParaViewSurface;
   this->InstallLODMapper(!surface);
   if (!this->Actor->GetMapper())
@@ -130,9 +130,9 @@ void vtkPsiVolumeRepresentation::ChooseInteractiveImage(vtkInformation* inInfo)
   }
   if (interactive)
   {
-    this->LastInteractiveImage = !lod ? psi::InteractiveImages::FullFrame
-      : surface                       ? psi::InteractiveImages::ParaViewSurface
-                                      : psi::InteractiveImages::VolumeLOD;
+    this->LastInteractiveImage = static_cast<int>(!lod ? psi::InteractiveImages::FullFrame
+        : surface                                      ? psi::InteractiveImages::ParaViewSurface
+                                                       : psi::InteractiveImages::VolumeLOD);
   }
 }
 
@@ -199,7 +199,7 @@ bool vtkPsiVolumeRepresentation::UpdateVolumeLOD(vtkInformation* inInfo, vtkPVRe
 
 double vtkPsiVolumeRepresentation::GetLastInteractiveSeconds()
 {
-  switch (this->LastInteractiveImage)
+  switch (static_cast<psi::InteractiveImages>(this->LastInteractiveImage))
   {
     case psi::InteractiveImages::FullFrame:
       return this->PsiMapper->GetLastRenderSeconds();

@@ -89,3 +89,17 @@ set_tests_properties(PsiRendering.ShaderComposition PROPERTIES
 add_executable(TestMapperSettings Cxx/TestMapperSettings.cxx)
 target_link_libraries(TestMapperSettings PRIVATE PsiVolume::Rendering)
 add_test(NAME PsiRendering.MapperSettings COMMAND TestMapperSettings)
+
+# The mapper from plain VTK Python (the interpreter VTK was built for, not pvpython): the wrapped
+# Rendering module (cmake/PsiVolumeWrapPython.cmake) renders a tetrahedral mesh with VTK's
+# vtkmodules alone, like VTK's own projected tetrahedra, and no ParaView module or library is
+# loaded into the process.
+if (TARGET PsiVolumeVTKPython)
+  find_package(Python3 ${Python3_VERSION} EXACT COMPONENTS Interpreter)
+endif ()
+if (TARGET PsiVolumeVTKPython AND Python3_Interpreter_FOUND)
+  add_test(NAME PsiRendering.PlainVTKPython
+    COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_plain_vtk.py"
+      "${CMAKE_BINARY_DIR}/${PSI_PYTHON_DESTINATION}")
+  set_tests_properties(PsiRendering.PlainVTKPython PROPERTIES TIMEOUT 120)
+endif ()

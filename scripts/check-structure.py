@@ -1,12 +1,15 @@
 #!/usr/bin/env python3
 """Checks the size limits of the code layout (docs/architecture.md):
-  - no C++ function in Core/, Representations/, Filters/ or Readers/ longer than 150 lines;
+  - no C++ function in Core/, Rendering/, Representations/, Filters/ or Readers/ longer than
+    150 lines;
   - no C++ file there longer than 600 lines, and vtkPsiVolumeMapper.cxx at most 500;
   - the same two limits for the test code (Testing/Cxx, Reference, Testing/Fuzz): a test is
     one named function per check, and a test file past 600 lines holds more than one concept
     (its mesh builders or checkers belong in a header of their own);
   - no shader file (Shaders/*.glsl) longer than 300 lines;
-  - Filters/vtk.module does not depend on the Representations module;
+  - the modules' dependencies along VTK's line: Core, Rendering and Filters depend on no ParaView
+    module (Rendering renders from plain VTK), Core on neither Rendering nor Representations, and
+    Rendering and Filters not on Representations;
   - every XML file of the source (server-manager XML, GUI test scripts, templates) is well-formed:
     ParaView's readers of test scripts stop, or crash, where Python's parser reports the error.
 Function bodies are found by brace matching on the source with comments and strings removed:
@@ -19,7 +22,7 @@ import xml.dom.minidom
 from xml.parsers.expat import ExpatError
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-FOLDERS = ["Core", "Representations", "Filters", "Readers",
+FOLDERS = ["Core", "Rendering", "Representations", "Filters", "Readers",
            "Testing/Cxx", "Reference", "Testing/Fuzz"]
 MAX_FUNCTION, MAX_FILE, MAX_MAPPER, MAX_SHADER = 150, 600, 500, 300
 
@@ -103,8 +106,14 @@ def main():
         n = path.read_text().count("\n")
         if n > MAX_SHADER:
             errors.append("%s: %d lines (limit %d)" % (path.relative_to(ROOT), n, MAX_SHADER))
-    if "Representations" in (ROOT / "Filters" / "vtk.module").read_text():
-        errors.append("Filters/vtk.module depends on the Representations module")
+    forbidden = {"Core": ["ParaView::", "PsiVolume::Rendering", "PsiVolume::Representations"],
+                 "Rendering": ["ParaView::", "PsiVolume::Representations"],
+                 "Filters": ["ParaView::", "PsiVolume::Rendering", "PsiVolume::Representations"]}
+    for module, names in forbidden.items():
+        text = (ROOT / module / "vtk.module").read_text()
+        for name in names:
+            if name in text:
+                errors.append("%s/vtk.module depends on %s" % (module, name.rstrip(":")))
     for e in errors:
         print(e)
     print("structure: %d violation(s)" % len(errors))

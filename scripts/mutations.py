@@ -7,21 +7,21 @@ from collections import namedtuple
 
 Mutation = namedtuple("Mutation", "name file original replacement tests")
 
-GL = ["PsiRepresentations.VolumeRender"]
-GLSL = ["PsiRepresentations.IntegrationGLSL"]
-DEGENERATE = ["PsiRepresentations.DegenerateProjections"]
-ORDER = ["PsiRepresentations.VisibilityOrder"]
+GL = ["PsiRendering.VolumeRender"]
+GLSL = ["PsiRendering.IntegrationGLSL"]
+DEGENERATE = ["PsiRendering.DegenerateProjections"]
+ORDER = ["PsiRendering.VisibilityOrder"]
 # Geometry: the degenerate-projection test (about 10 s) first, then the full image test.
 GEOMETRY = DEGENERATE + GL
 # The fan (Decomposition 'Fan'): the same tests drawn with Shirley and Tuchman's triangles; the
 # default silhouettes never reach the thick vertex or the fan's emission.
-DEGENERATE_FAN = ["PsiRepresentations.DegenerateProjections.fan"]
-GEOMETRY_FAN = DEGENERATE_FAN + ["PsiRepresentations.VolumeRender.fan"]
+DEGENERATE_FAN = ["PsiRendering.DegenerateProjections.fan"]
+GEOMETRY_FAN = DEGENERATE_FAN + ["PsiRendering.VolumeRender.fan"]
 SEPARATE = ["PsiPython.separate_opacity"]
 TRANSLUCENT = ["PsiPython.translucent_geometry"]
-PEELED = ["PsiRepresentations.TranslucentGeometry"]
+PEELED = ["PsiRendering.TranslucentGeometry"]
 SCALAR_RANGES = ["PsiPython.scalar_ranges"]
-CYCLIC = ["PsiRepresentations.CyclicOrder"]
+CYCLIC = ["PsiRendering.CyclicOrder"]
 
 MUTATIONS = [
     # --- Integrators (Shaders/PsiIntegrate*.glsl): Moreland & Angel 2004; Moreland's dissertation.
@@ -183,17 +183,23 @@ MUTATIONS = [
     # the scene calls for it.
     Mutation("plan_discard_with_per_fragment_isosurfaces", "Core/PsiFramePlan.cxx",
              "f.EarlyDiscard = s.EarlyDiscard && facts.ZeroOpacity && (f.IsoCount == 0 || f.IsoTriangles);",
-             "f.EarlyDiscard = s.EarlyDiscard && facts.ZeroOpacity;", ["PsiRepresentations.FramePlan"]),
+             "f.EarlyDiscard = s.EarlyDiscard && facts.ZeroOpacity;", ["PsiCore.FramePlan"]),
     Mutation("plan_prefix_table_not_read", "Core/PsiFramePlan.cxx",
              "plan.Tables.OpacityPrefix = f.EarlyDiscard;", "plan.Tables.OpacityPrefix = false;",
-             ["PsiRepresentations.FramePlan"]),
+             ["PsiCore.FramePlan"]),
     Mutation("plan_scene_depth_only_when_sampled", "Core/PsiFramePlan.cxx",
              "plan.SceneDepth = facts.SceneOpaque || f.NearClip || f.OpaqueClip;",
-             "plan.SceneDepth = f.NearClip || f.OpaqueClip;", ["PsiRepresentations.FramePlan"]),
+             "plan.SceneDepth = f.NearClip || f.OpaqueClip;", ["PsiCore.FramePlan"]),
     # --- The one settings type (Core/PsiSettings.cxx): the clamp, its warning, each 'Auto'.
     Mutation("settings_clamp_silent", "Core/PsiSettings.cxx",
-             "if (used == value && (!info.Int || used == std::floor(used)))",
+             "if (kept == value)",
              "if (true)", ["PsiCore.Settings"]),
+    Mutation("setting_list_default_not_xml", "Core/PsiSettingList.h",
+             "NUMBER(IsosurfaceOpacity, double, 1, 0, 1, PROPERTY)",
+             "NUMBER(IsosurfaceOpacity, double, 0.5, 0, 1, PROPERTY)", ["PsiCore.Settings"]),
+    Mutation("setting_list_property_as_mapper_only", "Core/PsiSettingList.h",
+             "BOOL(EarlyDiscard, true, PROPERTY)",
+             "BOOL(EarlyDiscard, true, MAPPER)", ["PsiCore.Settings"]),
     Mutation("settings_auto_projector_compute", "Core/PsiSettings.cxx",
              "return s.Projector == Projectors::ComputeShader;",
              "return s.Projector != Projectors::GeometryShader;", ["PsiCore.Settings"]),
@@ -262,7 +268,7 @@ MUTATIONS = [
     # 'Auto' weighs a depth-peeled still frame by all its stages
     Mutation("still_frame_last_stage_only", "Rendering/vtkPsiVolumeMapper.cxx",
              "    stage == PsiDepthPeelingCalls::Plain || stage == PsiDepthPeelingCalls::OutsideLayers);",
-             "    true);", ["PsiRepresentations.TranslucentGeometry"]),
+             "    true);", ["PsiRendering.TranslucentGeometry"]),
     # in parallel: one lattice over the whole mesh, each rank drawing its own cut of it
     Mutation("lod_rank_own_lattice", "Representations/PsiLODImage.cxx",
              "GlobalLattice(region.Parallel ? region.Global : piece->GetBounds(), resolution)",
@@ -279,9 +285,9 @@ MUTATIONS = [
     Mutation("texture_buffer_limit_unchecked", "Rendering/PsiMeshBuffers.cxx",
              "if (static_cast<long long>(this->Mesh.NumberOfPoints()) > maxTexels ||",
              "if (static_cast<long long>(this->Mesh.NumberOfPoints()) > 2 * maxTexels ||",
-             ["PsiRepresentations.DriverLimits"]),
+             ["PsiRendering.DriverLimits"]),
     Mutation("storage_block_limit_unchecked", "Rendering/PsiComputeProjector.cxx",
-             "  if (blockTets < 64)\n", "  if (blockTets < 1)\n", ["PsiRepresentations.DriverLimits"]),
+             "  if (blockTets < 64)\n", "  if (blockTets < 1)\n", ["PsiRendering.DriverLimits"]),
     # --- Translucent geometry with depth peeling for volumes (Rendering/PsiDepthPeelingCalls,
     # PsiRenderTarget).
     Mutation("peeling_stages_ignored", "Rendering/PsiDepthPeelingCalls.cxx",
@@ -327,7 +333,7 @@ MUTATIONS = [
              "includePoint(mix(viewP[j], viewP[i], di / (di - dj)), lo, hi);", GL),
     Mutation("time_step_keeps_gradients", "Rendering/PsiMeshBuffers.cxx",
              "  this->UploadPoints(renWin);\n  this->GradientsOnGPU = false;\n  return true;",
-             "  this->UploadPoints(renWin);\n  return true;", ["PsiRepresentations.Isosurfaces"]),
+             "  this->UploadPoints(renWin);\n  return true;", ["PsiRendering.Isosurfaces"]),
     Mutation("near_cull_needs_two_in_front", "Shaders/PsiNearClipGS.glsl",
              "nearClipped = inFront > 0;", "nearClipped = inFront > 1;", GL),
     Mutation("near_box_clamped_too_far", "Shaders/PsiNearClipGS.glsl",
@@ -352,12 +358,12 @@ MUTATIONS = [
     Mutation("iso_eye_piece_first", "Shaders/PsiIsoTrianglesGS.glsl",
              "  for (int j = last + 1; j > e; --j)\n",
              "  emitPiece(e, smin, smax, nearClipped);\n  for (int j = last + 1; j > e; --j)\n",
-             ["PsiRepresentations.Isosurfaces"]),
+             ["PsiRendering.Isosurfaces"]),
     Mutation("iso_surface_at_wrong_end", "Shaders/PsiIsoTrianglesGS.glsl",
-             "emitSurface(j - 1);", "emitSurface(j);", ["PsiRepresentations.Isosurfaces"]),
+             "emitSurface(j - 1);", "emitSurface(j);", ["PsiRendering.Isosurfaces"]),
     Mutation("iso_parallel_eye_side", "Shaders/PsiIsoTrianglesGS.glsl",
              "(gradient.z < 0.0 ? -big : big)", "(gradient.z < 0.0 ? big : -big)",
-             ["PsiRepresentations.Isosurfaces"]),
+             ["PsiRendering.Isosurfaces"]),
     # --- Psi table and pre-integration table (Moreland & Angel 2004 §4; Röttger et al. 2000 §4).
     Mutation("psi_table_lookup_unwarped", "Core/PsiPartialPreIntegrationTable.cxx",
              "return 1.0 - std::sqrt(std::max(1.0 - gamma, 0.0));", "return gamma;", ["PsiCore.Math"]),
@@ -449,7 +455,7 @@ MUTATIONS = [
     # pieces are tested on the colored scalar, and visible pieces of the opacity array vanish.
     Mutation("separate_opacity_discard_with_iso_triangles", "Core/PsiFramePlan.cxx",
              "    f.EarlyDiscard = f.EarlyDiscard && !f.IsoTriangles;\n", "",
-             ["PsiRepresentations.FramePlan"] + SEPARATE),
+             ["PsiCore.FramePlan"] + SEPARATE),
     # --- The .off parser (Readers/).
     Mutation("off_index_equal_to_count_accepted", "Readers/PsiOFFParser.cxx",
              "ids[k] >= this->NumberOfVertices", "ids[k] > this->NumberOfVertices", ["PsiReaders.OFFReader"]),
@@ -471,10 +477,10 @@ MUTATIONS = [
     # prefix that sees spikes between samples, and the piece's node interval in the shader.
     Mutation("adaptive_piece_interval_off_by_one", "Shaders/PsiAdaptiveFS.glsl",
              "tfPiece = nStep > 0 ? ni - 1 : ni;", "tfPiece = nStep > 0 ? ni : ni;",
-             ["PsiRepresentations.Isosurfaces"]),
+             ["PsiRendering.Isosurfaces"]),
     Mutation("adaptive_search_descending_bound", "Shaders/PsiAdaptiveFS.glsl",
              "int ni = ds >= 0.0 ? lo : lo - 1;", "int ni = ds >= 0.0 ? lo : lo;",
-             ["PsiRepresentations.Isosurfaces"]),
+             ["PsiRendering.Isosurfaces"]),
     Mutation("nodes_step_not_split", "Core/PsiTransferFunctionNodes.cxx",
              "if (Distance(left, right) > 1e-6)", "if (Distance(left, right) > 1e6)",
              ["PsiCore.TransferFunctionNodes"]),
@@ -494,10 +500,10 @@ MUTATIONS = [
              ["PsiCore.TetMesh"] + SCALAR_RANGES),
     # --- The stages' two forms (Rendering/PsiStageInterface.cxx, Shaders/PsiProjectCS.glsl).
     Mutation("compute_tetrahedron_not_handed_on", "Shaders/PsiProjectCS.glsl",
-             "  tetIn[0] = tetOut;\n", "", ["PsiRepresentations.VolumeRender.compute"]),
+             "  tetIn[0] = tetOut;\n", "", ["PsiRendering.VolumeRender.compute"]),
     Mutation("tetrahedron_ids_only_for_isosurfaces", "Rendering/PsiStageInterface.cxx",
              "if (f.IsoCount > 0 || f.NearClip)", "if (f.IsoCount > 0)",
-             ["PsiRepresentations.ShaderComposition"]),
+             ["PsiRendering.ShaderComposition"]),
     Mutation("prefix_spike_between_samples_ignored", "Core/PsiTransferFunctionAnalysis.cxx",
              "if (n[1] > 0 && x >= 0 && x <= table.Size - 1)",
              "if (n[1] > 1 && x >= 0 && x <= table.Size - 1)",

@@ -44,7 +44,7 @@ void TestMethodTables()
   for (int m = 0; m < psi::NumberOfIntegrationMethods(); ++m)
   {
     psi::Settings s = Settings();
-    s.IntegrationMethod = m;
+    s.IntegrationMethod = psi::Method(m);
     const PsiFramePlan plan = PlanFrame(s, Facts());
     const psi::IntegrationMethodInfo& info = psi::GetIntegrationMethodInfo(psi::Method(m));
     PSI_CHECK(plan.Features.Method == m, "method %d drawn as %d", m, plan.Features.Method);
@@ -128,7 +128,7 @@ void TestSeparateOpacityAndPeeling()
   psi::Settings s = Settings();
   s.Decomposition = psi::Decompositions::Fan;
   s.AdaptiveSampling = psi::AdaptiveModes::On;
-  s.IntegrationMethod = static_cast<int>(psi::Method::FullPreIntegration);
+  s.IntegrationMethod = psi::Method::FullPreIntegration;
   PsiSceneFacts facts = Facts();
   PsiFramePlan plan = PlanFrame(s, facts);
   PSI_CHECK(!plan.Features.Silhouette && plan.Features.Adaptive && plan.Tables.PreIntegration,

@@ -192,10 +192,10 @@ int CheckSettingsTakeTheTable()
   psi::Settings s;
   const int last = psi::NumberOfIntegrationMethods() - 1;
   psi::SetClamped(s, psi::Setting::IntegrationMethod, -3);
-  PSI_CHECK(s.IntegrationMethod == 0, "clamped below");
+  PSI_CHECK(static_cast<int>(s.IntegrationMethod) == 0, "clamped below");
   psi::SetClamped(s, psi::Setting::IntegrationMethod, last + 5);
-  PSI_CHECK(s.IntegrationMethod == last, "clamped above");
-  return psi::Settings().IntegrationMethod;
+  PSI_CHECK(static_cast<int>(s.IntegrationMethod) == last, "clamped above");
+  return static_cast<int>(psi::Settings().IntegrationMethod);
 }
 
 void CheckTable(const char* xmlPath)

@@ -26,8 +26,9 @@ void CheckIntegrationMethod()
       std::string(vtkPsiVolumeMapper::GetIntegrationMethodName(last + 1)) == "Unknown",
     "mapper names");
   const int mapperDefault = vtkNew<vtkPsiVolumeMapper>()->GetIntegrationMethod();
-  PSI_CHECK(mapperDefault == psi::Settings().IntegrationMethod,
-    "mapper default %d, settings default %d", mapperDefault, psi::Settings().IntegrationMethod);
+  const int settingsDefault = static_cast<int>(psi::Settings().IntegrationMethod);
+  PSI_CHECK(mapperDefault == settingsDefault, "mapper default %d, settings default %d",
+    mapperDefault, settingsDefault);
 }
 } // namespace
 

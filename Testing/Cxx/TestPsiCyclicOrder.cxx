@@ -171,7 +171,7 @@ void CheckViews(Fixture& f)
 int main(int argc, char* argv[])
 {
   Fixture f(psitest::ParseArguments(argc, argv));
-  PSI_CHECK(f.Mapper->GetSortMethod() == psi::Sorts::MPVONC, "MPVONC is the default sort");
+  PSI_CHECK(f.Mapper->GetSortMethod() == static_cast<int>(psi::Sorts::MPVONC), "MPVONC is the default sort");
   CheckTwistedMesh(f);
   CheckViews(f);
   psitest::CheckRequestedProjector(f.Mapper->GetLastUsedProjector());

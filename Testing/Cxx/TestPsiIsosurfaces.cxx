@@ -354,7 +354,7 @@ struct IsoCase
   const char* Name;
   std::vector<double> Values;
   double Opacity;
-  int Shading;
+  psi::IsosurfaceShadings Shading;
   bool Gap;
   bool FitsGS; // marching tetrahedra fit the geometry shader's output in every view
   std::vector<double> Opacities; // each surface's own (IsosurfaceOpacities)
@@ -368,18 +368,19 @@ void CheckIsosurfaceMethodsAgreeInView(Scene& s, const IsoCase& k, int index, in
   SetView(s, view);
   mapper->SetIsosurfaceMethod(psi::IsosurfaceMethods::PerFragment);
   const std::vector<double> perFragment = Grab(win);
-  PSI_CHECK(mapper->GetLastUsedIsosurfaceMethod() == psi::IsosurfaceMethods::PerFragment,
+  PSI_CHECK(mapper->GetLastUsedIsosurfaceMethod() == static_cast<int>(psi::IsosurfaceMethods::PerFragment),
     "per-fragment method used");
   mapper->SetIsosurfaceMethod(psi::IsosurfaceMethods::MarchingTetrahedra);
   const std::vector<double> mt = Grab(win);
   const bool usedMT =
-    mapper->GetLastUsedIsosurfaceMethod() == psi::IsosurfaceMethods::MarchingTetrahedra;
+    mapper->GetLastUsedIsosurfaceMethod() ==
+    static_cast<int>(psi::IsosurfaceMethods::MarchingTetrahedra);
   const bool discarded = mapper->GetLastUsedEarlyDiscard();
   mapper->SetIsosurfaceMethod(psi::IsosurfaceMethods::Auto);
   Grab(win);
   PSI_CHECK(mapper->GetLastUsedIsosurfaceMethod() ==
-      (k.Gap && k.FitsGS ? psi::IsosurfaceMethods::MarchingTetrahedra
-                         : psi::IsosurfaceMethods::PerFragment),
+      static_cast<int>(k.Gap && k.FitsGS ? psi::IsosurfaceMethods::MarchingTetrahedra
+                                         : psi::IsosurfaceMethods::PerFragment),
     "%s view %d: Auto uses marching tetrahedra exactly when early discard applies", k.Name, view);
   s.View.Renderer->RemoveActor(s.Plane);
   const Diff d = Compare(mt, perFragment);
@@ -485,7 +486,7 @@ void CheckTimeStepGradients(Scene& s)
   const double iso = s.R[0] + 0.6 * s.Span;
   mapper->SetIsosurfaceValues({ iso });
   mapper->SetIsosurfaceShading(psi::IsosurfaceShadings::Smooth);
-  for (int method : { psi::IsosurfaceMethods::MarchingTetrahedra,
+  for (psi::IsosurfaceMethods method : { psi::IsosurfaceMethods::MarchingTetrahedra,
          psi::IsosurfaceMethods::PerFragment })
   {
     mapper->SetIsosurfaceMethod(method);

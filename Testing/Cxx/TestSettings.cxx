@@ -1,7 +1,9 @@
-// The one settings type (Core/PsiSettings.h), without a GL context:
+// The settings declared once (Core/PsiSettingList.h, Core/PsiSettings.h), without a GL context:
+//  - the table follows the list: one row per setting in order, its default the member's;
 //  - the representation's XML (argv[1]) agrees with it: every setting that is a property has
 //    the XML's default_values as its default, an enumeration's <Entry> values are exactly its
-//    range, a DoubleRangeDomain its range; a setting that is not a property has none in the XML;
+//    range, a boolean a BooleanDomain, a DoubleRangeDomain its range; a setting that is not a
+//    property has none in the XML;
 //  - the clamp: a value in range is kept with no warning; a value out of range, or not a whole
 //    number for an integer, is clamped to the range with one warning naming the setting;
 //  - each 'Auto' resolved in its one place.
@@ -42,21 +44,32 @@ double Attribute(vtkPVXMLElement* e, const char* name)
   return v ? std::stod(v) : std::nan("");
 }
 
-void CheckRanged(vtkPVXMLElement* root)
+// The value of setting `info` in a default-constructed struct of its kind.
+double DefaultOf(const psi::SettingInfo& info)
 {
-  const psi::Settings defaults;
+  return info.Interaction ? psi::ValueOf(psi::InteractionSettings(), info.Id)
+                          : psi::ValueOf(psi::Settings(), info.Id);
+}
+
+void CheckXML(vtkPVXMLElement* root)
+{
   for (const psi::SettingInfo& info : psi::SettingTable())
   {
+    PSI_CHECK(info.Default == DefaultOf(info), "%s: the table's default %g, the member's %g",
+      info.Name, info.Default, DefaultOf(info));
     vtkPVXMLElement* prop = FindProperty(root, info.Name);
     PSI_CHECK((prop != nullptr) == info.Property, "%s: a property in the XML %s", info.Name,
-      info.Property ? "is missing" : "that the table says is the mapper's only");
+      info.Property ? "is missing" : "that the list says is the mapper's only");
     if (!prop)
     {
       continue;
     }
-    const double value = info.Int ? defaults.*info.Int : defaults.*info.Double;
     const double xml = Attribute(prop, "default_values");
-    PSI_CHECK(xml == value, "%s: XML default %g, settings default %g", info.Name, xml, value);
+    PSI_CHECK(xml == info.Default, "%s: XML default %g, settings default %g", info.Name, xml,
+      info.Default);
+    PSI_CHECK((prop->FindNestedElementByName("BooleanDomain") != nullptr) ==
+        (info.Kind == psi::SettingKind::Boolean),
+      "%s: a BooleanDomain exactly for a boolean", info.Name);
     if (vtkPVXMLElement* domain = prop->FindNestedElementByName("EnumerationDomain"))
     {
       std::set<double> entries, range;
@@ -68,8 +81,13 @@ void CheckRanged(vtkPVXMLElement* root)
       {
         range.insert(v);
       }
-      PSI_CHECK(info.Int && entries == range, "%s: the XML's entries are not the values %g to %g",
-        info.Name, info.Min, info.Max);
+      PSI_CHECK(info.Kind == psi::SettingKind::Enumeration && entries == range,
+        "%s: the XML's entries are not the values %g to %g", info.Name, info.Min, info.Max);
+    }
+    else
+    {
+      PSI_CHECK(info.Kind != psi::SettingKind::Enumeration, "%s: an enumeration without entries",
+        info.Name);
     }
     if (vtkPVXMLElement* domain = prop->FindNestedElementByName("DoubleRangeDomain"))
     {
@@ -81,42 +99,55 @@ void CheckRanged(vtkPVXMLElement* root)
   }
 }
 
-void CheckBooleans(vtkPVXMLElement* root)
+// The clamp of one setting in the struct of its kind.
+template <typename Struct>
+void CheckClampOf(const psi::SettingInfo& info)
 {
-  const psi::Settings defaults;
-  for (const psi::BoolSettingInfo& info : psi::BoolSettingTable())
-  {
-    vtkPVXMLElement* prop = FindProperty(root, info.Name);
-    PSI_CHECK((prop != nullptr) == info.Property, "%s: XML property presence", info.Name);
-    PSI_CHECK(!prop || Attribute(prop, "default_values") == (defaults.*info.Member ? 1 : 0),
-      "%s: XML default differs", info.Name);
-  }
+  Struct s;
+  PSI_CHECK(psi::SetClamped(s, info.Id, info.Max).empty(), "%s: its maximum is valid", info.Name);
+  PSI_CHECK(psi::SetClamped(s, info.Id, info.Min).empty(), "%s: its minimum is valid", info.Name);
+  const std::string high = psi::SetClamped(s, info.Id, info.Max + 7);
+  PSI_CHECK(psi::ValueOf(s, info.Id) == info.Max && high.find(info.Name) != std::string::npos,
+    "%s: above its range: %g used, warning '%s'", info.Name, psi::ValueOf(s, info.Id),
+    high.c_str());
+  const std::string low = psi::SetClamped(s, info.Id, info.Min - 1);
+  PSI_CHECK(psi::ValueOf(s, info.Id) == info.Min && !low.empty(), "%s: below its range",
+    info.Name);
+  PSI_CHECK(!psi::SetClamped(s, info.Id, std::nan("")).empty() &&
+      psi::ValueOf(s, info.Id) == info.Min,
+    "%s: NaN", info.Name);
 }
 
 void CheckClamp()
 {
   for (const psi::SettingInfo& info : psi::SettingTable())
   {
-    psi::Settings s;
-    PSI_CHECK(psi::SetClamped(s, info.Id, info.Max).empty(), "%s: its maximum is valid", info.Name);
-    PSI_CHECK(psi::SetClamped(s, info.Id, info.Min).empty(), "%s: its minimum is valid", info.Name);
-    const std::string high = psi::SetClamped(s, info.Id, info.Max + 7);
-    const double used = info.Int ? s.*info.Int : s.*info.Double;
-    PSI_CHECK(used == info.Max && high.find(info.Name) != std::string::npos,
-      "%s: above its range: %g used, warning '%s'", info.Name, used, high.c_str());
-    const std::string low = psi::SetClamped(s, info.Id, info.Min - 1);
-    PSI_CHECK((info.Int ? s.*info.Int : s.*info.Double) == info.Min && !low.empty(),
-      "%s: below its range", info.Name);
-    PSI_CHECK(!psi::SetClamped(s, info.Id, std::nan("")).empty() &&
-        (info.Int ? s.*info.Int : s.*info.Double) == info.Min,
-      "%s: NaN", info.Name);
+    if (info.Interaction)
+    {
+      CheckClampOf<psi::InteractionSettings>(info);
+      psi::Settings other;
+      PSI_CHECK(!psi::SetClamped(other, info.Id, info.Min).empty() &&
+          std::isnan(psi::ValueOf(other, info.Id)),
+        "%s: not a setting of the mapper's struct", info.Name);
+    }
+    else
+    {
+      CheckClampOf<psi::Settings>(info);
+    }
   }
   psi::Settings s;
   const std::string w = psi::SetClamped(s, psi::Setting::Projector, 7);
   PSI_CHECK(w == "'Psi Volume' Projector = 7 is not one of its values (0 to 2): 2 is used.",
     "the warning reads '%s'", w.c_str());
-  PSI_CHECK(!psi::SetClamped(s, psi::Setting::SortMethod, 0.5).empty() && s.SortMethod == 0,
+  PSI_CHECK(!psi::SetClamped(s, psi::Setting::SortMethod, 0.5).empty() &&
+      s.SortMethod == psi::Sorts::Centroid,
     "an integer setting given a fraction");
+  PSI_CHECK(psi::SettingTable().size() == static_cast<size_t>(psi::Setting::Count),
+    "one row per setting");
+  for (size_t i = 0; i < psi::SettingTable().size(); ++i)
+  {
+    PSI_CHECK(psi::SettingTable()[i].Id == static_cast<psi::Setting>(i), "row %zu in order", i);
+  }
 }
 
 void CheckAuto()
@@ -137,15 +168,16 @@ void CheckAuto()
     "'Auto' adaptive sampling follows the table's deviation");
   s.AdaptiveSampling = psi::AdaptiveModes::Off;
   PSI_CHECK(!psi::UsesAdaptiveSampling(s, 1), "adaptive sampling off");
-  const double budget = s.InteractiveBudget;
-  PSI_CHECK(!psi::UsesVolumeLOD(s, 0.5 * budget) && psi::UsesVolumeLOD(s, 2 * budget),
+  psi::InteractionSettings i;
+  const double budget = i.InteractiveBudget;
+  PSI_CHECK(!psi::UsesVolumeLOD(i, 0.5 * budget) && psi::UsesVolumeLOD(i, 2 * budget),
     "'Auto' interaction follows the budget");
-  s.InteractionMode = psi::InteractionModes::FullFrame;
-  PSI_CHECK(!psi::UsesVolumeLOD(s, 100), "'Full frame' never draws the level of detail");
-  s.InteractionMode = psi::InteractionModes::ParaViewSurface;
-  PSI_CHECK(!psi::UsesVolumeLOD(s, 100), "'ParaView surface' leaves the choice to ParaView");
-  s.InteractionMode = psi::InteractionModes::VolumeLOD;
-  PSI_CHECK(psi::UsesVolumeLOD(s, 0), "'Volume LOD' always");
+  i.InteractionMode = psi::InteractionModes::FullFrame;
+  PSI_CHECK(!psi::UsesVolumeLOD(i, 100), "'Full frame' never draws the level of detail");
+  i.InteractionMode = psi::InteractionModes::ParaViewSurface;
+  PSI_CHECK(!psi::UsesVolumeLOD(i, 100), "'ParaView surface' leaves the choice to ParaView");
+  i.InteractionMode = psi::InteractionModes::VolumeLOD;
+  PSI_CHECK(psi::UsesVolumeLOD(i, 0), "'Volume LOD' always");
 }
 } // namespace
 
@@ -161,8 +193,7 @@ int main(int argc, char* argv[])
   PSI_CHECK(parser->Parse() != 0, "%s does not parse", argv[1]);
   if (vtkPVXMLElement* root = parser->GetRootElement())
   {
-    CheckRanged(root);
-    CheckBooleans(root);
+    CheckXML(root);
   }
   CheckClamp();
   CheckAuto();
