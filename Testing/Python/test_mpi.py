@@ -84,7 +84,7 @@ def render(src, view_size=SIZE):
 
 
 def serial_main(out):
-    data.load_plugin(globals())
+    data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
     src, _ = build(False)
     view, d = render(src)
     np.save(out, capture(view))
@@ -158,7 +158,7 @@ def parallel_main():
     cov_ref = testing.covered(ref, BG)
     t.check(cov_ref > 0.2 * SIZE * SIZE, "serial image not empty (%d pixels)" % cov_ref)
 
-    data.load_plugin(globals())
+    data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
     for redistribute in (False, True):
         label = "RedistributeDataSet" if redistribute else "Wavelet pieces"
         src, ids = build(redistribute)

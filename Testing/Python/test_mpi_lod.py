@@ -63,7 +63,7 @@ def lod_frame(src):
 
 
 def serial_main(out):
-    data.load_plugin(globals())
+    data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
     src, _ = test_mpi.build(False, EXTENT)
     still, img, used = lod_frame(src)
     np.save(out, img)
@@ -87,7 +87,7 @@ def parallel_main():
             "the serial level of detail is not the still frame (mean |diff| %.3f/255)"
             % (255 * testing.mean_error(ref, ref_still)))
 
-    data.load_plugin(globals())
+    data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
     for redistribute in (False, True):
         label = "RedistributeDataSet" if redistribute else "Wavelet pieces"
         src, _ = test_mpi.build(redistribute, EXTENT)

@@ -314,7 +314,7 @@ def main():
     t0 = time.time()
     display = hold_display()  # noqa: F841 -- held until the process exits
     faulthandler.dump_traceback_later(WATCHDOG, exit=True, file=open("/dev/stderr", "w"))
-    plugin = data.find_plugin()
+    plugin = data.find_plugin(os.environ.get("PSI_PLUGIN"))
     port = free_port()
     tmp = tempfile.mkdtemp(prefix="psi_pvserver_")
     logpath = os.path.join(tmp, "pvserver.log")
