@@ -2,7 +2,7 @@
 to `mpiexec -n 2 pvserver` renders the scene of test_mpi.py with remote rendering (ParaView's
 ordered compositing, IceT on the server) and the image it receives must match a serial render.
 
-Run: pvpython --force-offscreen-rendering test_pvserver.py   (under an X server, e.g. xvfb-run)
+Run: pvpython --force-offscreen-rendering test_pvserver.py   (under an X server, e.g. bash scripts/lib/with-xvfb.sh pvpython ...)
 Environment: PSI_PLUGIN (the plugin), PSI_PVSERVER, PSI_MPIEXEC (default: from PATH).
 
 0. Holds one X connection for the whole run (see hold_display: Xvfb resets, and refuses
