@@ -185,9 +185,9 @@ def parallel_main():
                 % (label, mean, MEAN_TOL))
         t.check(frac <= OUTLIER_FRACTION, "%s: %.3f%% of pixels differ by more than %.0f/255 "
                 "(<= %.0f%%)" % (label, 100 * frac, OUTLIER, 100 * OUTLIER_FRACTION))
-        if os.environ.get("PSI_MPI_SAVE"):
-            np.save(os.path.join(os.environ["PSI_MPI_SAVE"], "mpi_%d.npy" % redistribute), img)
-            np.save(os.path.join(os.environ["PSI_MPI_SAVE"], "serial.npy"), ref)
+        if os.environ.get("PSI_TEST_OUTPUT"):
+            np.save(os.path.join(os.environ["PSI_TEST_OUTPUT"], "mpi_%d.npy" % redistribute), img)
+            np.save(os.path.join(os.environ["PSI_TEST_OUTPUT"], "mpi_serial.npy"), ref)
         simple.Delete(d)
         simple.Delete(view)
     finish(t)

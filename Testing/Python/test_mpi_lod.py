@@ -99,8 +99,8 @@ def parallel_main():
               "2-rank still frame %.3f/255" % (label, mean, mx, 255 * testing.mean_error(img, still)))
         t.check(mean <= MEAN_TOL, "%s: mean |diff| %.3f/255 <= %.2f/255" % (label, mean, MEAN_TOL))
         t.check(mx <= MAX_TOL, "%s: max |diff| %.0f/255 <= %.0f/255" % (label, mx, MAX_TOL))
-        if os.environ.get("PSI_MPI_SAVE"):
-            save = os.environ["PSI_MPI_SAVE"]
+        if os.environ.get("PSI_TEST_OUTPUT"):
+            save = os.environ["PSI_TEST_OUTPUT"]
             np.save(os.path.join(save, "lod_mpi_%d.npy" % redistribute), img)
             np.save(os.path.join(save, "lod_serial.npy"), ref)
     test_mpi.finish(t)

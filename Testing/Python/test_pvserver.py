@@ -291,10 +291,10 @@ def remote_checks(t, port, plugin, ref, n_serial, ref_lod, logpath):
             t.check(frac <= test_mpi.OUTLIER_FRACTION, "%s: %.3f%% of pixels differ by more "
                     "than %.0f/255 (<= %.0f%%)" % (label, 100 * frac, test_mpi.OUTLIER,
                                                    100 * test_mpi.OUTLIER_FRACTION))
-            if os.environ.get("PSI_PVSERVER_SAVE"):
-                out = os.environ["PSI_PVSERVER_SAVE"]
+            if os.environ.get("PSI_TEST_OUTPUT"):
+                out = os.environ["PSI_TEST_OUTPUT"]
                 np.save(os.path.join(out, "pvserver_%d.npy" % redistribute), img)
-                np.save(os.path.join(out, "serial.npy"), ref)
+                np.save(os.path.join(out, "pvserver_serial.npy"), ref)
         lod_checks(t, label, view, d, img, ref_lod, logpath)
         simple.Delete(d)
         simple.Delete(view)
