@@ -26,10 +26,6 @@
 # writes it beside ParaView's own modules.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-if [ "${1:-}" = --fresh ]; then
-  shift
-  exec bash "$root/scripts/lib/check-deb-fresh.sh" "$@"
-fi
 # lintian on DEB (its version: this machine's): fails on an error or warning not overridden.
 lint() {
   command -v lintian >/dev/null || { echo "FAILED: lintian is not installed (apt-get install lintian)"; exit 1; }
@@ -43,6 +39,11 @@ lint() {
     "($(dpkg-deb --fsys-tarfile "$1" | tar -xOf - ./usr/share/lintian/overrides/paraview-psivolume 2>/dev/null |
       grep -c '^[^#]') overridden, each with its reason)"
 }
+if [ "${1:-}" = --fresh ]; then
+  shift
+  lint "${@: -1}"
+  exec bash "$root/scripts/lib/check-deb-fresh.sh" "$@"
+fi
 if [ "${1:-}" = --paraview ]; then
   source "$root/scripts/lib/deb-elsewhere.sh"
   suite=$(psi_deb_suite "${2:?--paraview takes 5.11, 5.13 or 6.1}")

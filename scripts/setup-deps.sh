@@ -7,7 +7,7 @@
 # apt-get (`apt-get update`, then `apt-get install --no-install-recommends` of the missing ones);
 # nothing else. Building needs no root: scripts/build-deb.sh asks
 #   bash scripts/setup-deps.sh --missing
-# which changes nothing, needs no root and prints the missing packages, one a line.
+# which changes nothing, needs no root and prints the missing packages of the build, one a line.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/lib/paraview-versions.sh"
@@ -71,6 +71,8 @@ case "$series" in
   *) echo "[setup] ParaView $series: not a version this plugin is built for (5.11, 5.13, 6.1)" >&2
      exit 1 ;;
 esac
+# scripts/check-deb.sh's lintian: for checking the package, not for building it.
+[ "$only_list" = 1 ] || PKGS+=(lintian)
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
