@@ -1,7 +1,8 @@
 """Benchmark (not a test): what accuracy costs in time, for every integration method.
 
 pvpython Benchmarks/bench_integration.py [--data bluntfin] [--size 512] [--frames 6]
-                                         [--plot integration_cost.png]
+                                         [--plot integration_cost.png] [--build-dir build]
+                                         [--cpu-program FILE]
 For each method: CPU ns per segment and max/mean error over Moreland's sweeps (from
 bench_integration_cpu, against each method's own optical-model reference), frame time of
 'Psi Volume' on the dataset (median over interleaved rounds with 'Projected tetra',
@@ -27,17 +28,19 @@ p.add_argument("--frames", type=int, default=6)
 p.add_argument("--error-views", type=int, default=2)
 p.add_argument("--budget", type=float, default=300, help="seconds of interleaved timing rounds")
 p.add_argument("--plot", default="integration_cost.png")
+p.add_argument("--build-dir", default=os.path.join(here, "..", "build"),
+               help="the build holding the plugin and bench_integration_cpu (default: build/)")
+p.add_argument("--cpu-program", help="bench_integration_cpu (default: in the build's bin/)")
 args = p.parse_args()
 
-build = os.environ.get("PSI_BUILD_DIR") or os.path.join(here, "..", "build")
-exe = os.environ.get("PSI_BENCH_CPU") or (glob.glob(os.path.join(build, "bin",
-                                                                  "bench_integration_cpu")) or [""])[0]
+exe = args.cpu_program or (glob.glob(os.path.join(args.build_dir, "bin",
+                                                  "bench_integration_cpu")) or [""])[0]
 if not exe:
     raise SystemExit("bench_integration_cpu not built (scripts/build.sh)")
 cpu = {row["method"]: row for row in csv.DictReader(io.StringIO(
     subprocess.run([exe, "--csv"], check=True, capture_output=True, text=True).stdout))}
 
-data.load_plugin(globals())
+data.load_plugin(globals(), build_dir=args.build_dir)
 src, array = bench.load(args.data)
 scene = bench.Scene(src, array, args.size, args.frames)
 refs, ref_seconds = scene.references([int(i * args.frames / args.error_views)

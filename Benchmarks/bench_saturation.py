@@ -4,7 +4,7 @@ benchmarks' own scenes. Each scene is written by psivolume.accuracy.Capture (the
 mesh.vtu and scene file) in a child pvpython, then build/bin/bench_saturation walks every pixel's
 ray front to back with the reference's rays and prints the shares (bench_saturation.cxx).
 
-PYTHONPATH=Python pvpython Benchmarks/bench_saturation.py [--size 256] [--scenes wavelet20 ...]
+PYTHONPATH=Python pvpython Benchmarks/bench_saturation.py [--size 256] [--scenes wavelet20 ...] [--program FILE]
                                                            [--no-check] [--out FILE.md]
 Scenes:
   wavelet20, wavelet40  ParaView's Wavelet [-h, h]^3 tetrahedralized (320,000 and 2,560,000
@@ -61,12 +61,12 @@ def capture(scene, size, work):
     testing.exit_now(0)
 
 
-def find_program():
+def find_program(program=None):
+    """`program` (--program) when given, else bench_saturation beside the reference renderer."""
     from psivolume import accuracy
 
-    if os.environ.get("PSI_BENCH_SATURATION"):
-        return os.environ["PSI_BENCH_SATURATION"]
-    return os.path.join(os.path.dirname(accuracy.find_reference_renderer()), "bench_saturation")
+    return program or os.path.join(os.path.dirname(accuracy.find_reference_renderer()),
+                                   "bench_saturation")
 
 
 def measure(scene, args):
@@ -80,7 +80,7 @@ def measure(scene, args):
         if not os.path.exists(os.path.join(work, "scene.txt")):
             print("# %s: SKIP (its data is absent)" % scene, flush=True)
             return None
-        argv = [find_program(), os.path.join(work, "mesh.vtu"), os.path.join(work, "scene.txt")]
+        argv = [find_program(args.program), os.path.join(work, "mesh.vtu"), os.path.join(work, "scene.txt")]
         out = subprocess.run(argv + (["--no-check"] if args.no_check else []),
                              capture_output=True, text=True)
     sys.stdout.write("# %s\n%s" % (scene, out.stdout))
@@ -108,6 +108,7 @@ def main():
     p.add_argument("--no-check", action="store_true",
                    help="skip the comparison with psi::RenderReference (halves the time)")
     p.add_argument("--out")
+    p.add_argument("--program", help="bench_saturation (default: beside psi_reference_render)")
     args = p.parse_args()
     if args.capture:
         capture(args.capture, args.size, args.work)

@@ -76,12 +76,12 @@ def main():
     p.add_argument("--frames", type=int, default=4)
     p.add_argument("--size", type=int, default=512)
     p.add_argument("--bin", type=float, default=0.05)
+    p.add_argument("--pvpython", help="the worker's pvpython (default: PATH's)")
     args = p.parse_args()
     if args.worker:
         worker(args)
         return
-    pvpython = os.environ.get("PVPYTHON", "pvpython")
-    cmd = [pvpython, "--force-offscreen-rendering", os.path.abspath(__file__), "--worker",
+    cmd = [timing.pvpython(args.pvpython), "--force-offscreen-rendering", os.path.abspath(__file__), "--worker",
            "--data", args.data, "--mapper", args.mapper, "--frames", str(args.frames),
            "--size", str(args.size)]
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, text=True,

@@ -17,7 +17,7 @@ add_test(NAME PsiHeadless.plugin_basics
   COMMAND ${psi_headless} "${PVBATCH_EXECUTABLE}"
           "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_plugin_basics.py")
 set_tests_properties(PsiHeadless.plugin_basics PROPERTIES
-  ENVIRONMENT "PSI_PLUGIN=$<TARGET_FILE:PsiVolume>;${PSI_PYTHONPATH}"
+  ENVIRONMENT "PSI_PLUGIN=$<TARGET_FILE:PsiVolume>;${PSI_PYTHONPATH};PSI_DATA_DIR=${PSI_DATA_DIR}"
   SKIP_RETURN_CODE 77
   TIMEOUT 600)
 if (MPIEXEC_EXECUTABLE)
@@ -26,7 +26,7 @@ if (MPIEXEC_EXECUTABLE)
             --allow-run-as-root -n 2
             "${PVBATCH_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_mpi.py")
   set_tests_properties(PsiHeadless.mpi PROPERTIES
-    ENVIRONMENT "PSI_PLUGIN=$<TARGET_FILE:PsiVolume>;${PSI_PYTHONPATH};PSI_PVBATCH=${PVBATCH_EXECUTABLE};OMPI_MCA_rmaps_base_oversubscribe=1"
+    ENVIRONMENT "PSI_PLUGIN=$<TARGET_FILE:PsiVolume>;${PSI_PYTHONPATH};PSI_DATA_DIR=${PSI_DATA_DIR};PSI_PVBATCH=${PVBATCH_EXECUTABLE};OMPI_MCA_rmaps_base_oversubscribe=1"
     SKIP_RETURN_CODE 77
     TIMEOUT ${PSI_MPI_TEST_TIMEOUT}
     RUN_SERIAL ON)

@@ -10,7 +10,7 @@ add_test(NAME PsiInstalled.install
 set_tests_properties(PsiInstalled.install PROPERTIES FIXTURES_SETUP PsiInstallTree)
 # After the test's own ENVIRONMENT, so that these win over any PSI_* it names.
 set(_psi_installed_environment "PYTHONPATH=${_psi_tree}/${PSI_PYTHON_DESTINATION}" "PSI_PLUGIN="
-  "PSI_REFERENCE_RENDER=" "PSI_BUILD_DIR=" "PSI_DATA_DIR=${PSI_DATA_DIR}")
+  "PSI_REFERENCE_RENDER=" "PSI_DATA_DIR=${PSI_DATA_DIR}")
 
 # psi_add_installed_test(NAME TIMEOUT s [ENVIRONMENT ...] COMMAND ...): PsiInstalled.NAME, the
 # command of PsiPython.NAME run from the install tree.

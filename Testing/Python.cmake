@@ -43,8 +43,7 @@ foreach (case IN ITEMS nontet surface cellscalars nonfinite empty degenerate qua
   if (case STREQUAL "reader")  # ParaView's reader factory offers the installed readers
     set(installed INSTALLED)
   endif ()
-  psi_add_python_test(bad_input.${case} SCRIPT bad_input ARGS ${case} TIMEOUT 240 ${installed}
-    ENVIRONMENT "PSI_DATA_DIR=${PSI_DATA_DIR}")
+  psi_add_python_test(bad_input.${case} SCRIPT bad_input ARGS ${case} TIMEOUT 240 ${installed})
 endforeach ()
 # More than one draw call (5.1M tetrahedra, ~15-20 s here): run alone, it is the heaviest.
 set_tests_properties(PsiPython.bad_input.large PROPERTIES RUN_SERIAL ON)
@@ -53,7 +52,8 @@ set_tests_properties(PsiPython.bad_input.large PROPERTIES RUN_SERIAL ON)
 # the interactive level of detail (mpi_lod). Under the MPI watchdog (PSI_MPI_WATCHDOG_COMMAND,
 # Testing/CMakeLists.txt): a hang ends with each rank's stacks, well before CTest's timeout.
 if (PVBATCH_EXECUTABLE AND MPIEXEC_EXECUTABLE)
-  set(environment "PSI_PVBATCH=${PVBATCH_EXECUTABLE}" "OMPI_MCA_rmaps_base_oversubscribe=1")
+  set(environment "PSI_PVBATCH=${PVBATCH_EXECUTABLE}" "OMPI_MCA_rmaps_base_oversubscribe=1"
+    "PSI_DATA_DIR=${PSI_DATA_DIR}")
   foreach (name IN ITEMS mpi mpi_lod)
     set(command ${PSI_MPI_WATCHDOG_COMMAND} "${MPIEXEC_EXECUTABLE}" --allow-run-as-root -n 2
       "${PVBATCH_EXECUTABLE}" --force-offscreen-rendering
@@ -98,8 +98,8 @@ psi_add_python_test(random_scenes ARGS --first 0 --seeds 16 TIMEOUT 900
 psi_add_python_test(lod_inputs TIMEOUT 300)
 
 # The accuracy report as the GUI runs it (psivolume.gui), after `import psivolume` by the
-# package's name once the plugin is loaded: no PYTHONPATH, nor any PSI_* override (the report
-# finds the plugin ParaView loaded, and its reference renderer beside the build's).
+# package's name once the plugin is loaded: no PYTHONPATH and no path given (the report finds
+# the plugin ParaView loaded, and its reference renderer beside the build's).
 add_test(NAME PsiPython.gui_report
   COMMAND "${PVPYTHON_EXECUTABLE}" --force-offscreen-rendering
           "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_gui_report.py"
@@ -107,7 +107,7 @@ add_test(NAME PsiPython.gui_report
 # (the plugin to load, and the reference renderer the report must find, in variables of their
 # own, which the report does not read)
 set_tests_properties(PsiPython.gui_report PROPERTIES
-  ENVIRONMENT "PSI_TEST_PLUGIN=$<TARGET_FILE:PsiVolume>;PSI_TEST_REFERENCE=$<TARGET_FILE:psi_reference_render>;PYTHONPATH=;PSI_PLUGIN=;PSI_REFERENCE_RENDER=;PSI_BUILD_DIR="
+  ENVIRONMENT "PSI_TEST_PLUGIN=$<TARGET_FILE:PsiVolume>;PSI_TEST_REFERENCE=$<TARGET_FILE:psi_reference_render>;PYTHONPATH="
   TIMEOUT 120)
 
 # The install tree: `cmake --install` into a temporary prefix, then pvpython loads the plugin from

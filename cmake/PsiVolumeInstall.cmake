@@ -1,6 +1,6 @@
 # What `cmake --install` puts beside the plugin (docs/install.md): the project's Python package
-# where ParaView's own Python modules are, the reference renderer of the accuracy report in the
-# plugin's directory, and, for a packaged ParaView that has none, bin/paraview.conf.
+# where ParaView's own Python modules are and the reference renderer of the accuracy report in the
+# plugin's directory (the Debian package adds its own files: cmake/PsiVolumePackaging.cmake).
 # paraview_plugin_build (CMakeLists.txt) installs the plugin, its modules and PsiVolume.plugins.xml.
 
 # The Python package (Python/psivolume) at PSI_PYTHON_DESTINATION (CMakeLists.txt).
@@ -30,18 +30,3 @@ set_target_properties(psi_reference_render PROPERTIES INSTALL_RPATH "\$ORIGIN")
 install(TARGETS psi_reference_render
   RUNTIME DESTINATION "${PSI_PLUGINS_DIR}/PsiVolume"
   COMPONENT runtime)
-
-# ParaView 5.10 and later read bin/paraview.conf beside their executables (paraview, pvpython,
-# pvbatch, pvserver): each line a plugins XML whose plugins are listed in the plugin manager
-# and found by name. Kitware's binaries ship their own, which this must not replace; Debian's
-# ParaView ships none, so its package (scripts/build-deb.sh) turns this on.
-option(PSI_INSTALL_PARAVIEW_CONF
-  "Install bin/paraview.conf naming the plugin (only for a ParaView that has no such file)" OFF)
-if (PSI_INSTALL_PARAVIEW_CONF)
-  paraview_plugin_write_conf(
-    NAME                paraview
-    PLUGINS_TARGETS     PsiVolumePlugins
-    BUILD_DESTINATION   "${CMAKE_INSTALL_DATADIR}/psivolume"
-    INSTALL_DESTINATION "${CMAKE_INSTALL_BINDIR}"
-    COMPONENT           runtime)
-endif ()

@@ -9,10 +9,15 @@
 #   bash scripts/accuracy-report.sh [FILE|bluntfin|post|comb|spx] [--array NAME] [--out DIR]
 #                                   [--size 384] [--frames 3] [--resample-dims 64 128 256]
 #                                   [--no-paraview]
+#
+# Under an X server (scripts/lib/with-xvfb.sh: DISPLAY's, else Xvfb). The build: build/ or
+# $PSI_BUILD_DIR; the NASA datasets: ../shared/data or $PSI_DATA_DIR; the report names llvmpipe's
+# thread count, LP_NUM_THREADS (default: all).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 . "$root/scripts/lib/python-path.sh"
 bash "$root/scripts/setup-deps.sh"
 bash "$root/scripts/build.sh" >/dev/null
-xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" pvpython --force-offscreen-rendering \
-  -m psivolume.accuracy "$@"
+bash "$root/scripts/lib/with-xvfb.sh" pvpython --force-offscreen-rendering -m psivolume.accuracy \
+  --build-dir "${PSI_BUILD_DIR:-$root/build}" ${PSI_DATA_DIR:+--data-dir "$PSI_DATA_DIR"} \
+  --threads "${LP_NUM_THREADS:-all}" "$@"

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""The README's accuracy table from accuracy reports (DIR/report.json of scripts/accuracy-report.sh),
-scenes side by side: per method the median s/frame with its minimum-maximum over the rounds, the
-one-time seconds apart from it (the resampling of 'Resample To Image', the level of detail's build),
-the time relative to Average (median of the per-round ratios, +- half their interquartile range),
-and the mean and worst error against the exact reference. Prints Markdown.
+"""Accuracy reports (DIR/report.json of scripts/accuracy-report.sh) as one table, scenes side by
+side (the side-by-side record of docs/benchmarks/ is made so): per method the median s/frame with
+its minimum-maximum over the rounds, the one-time seconds apart from it (the resampling of
+'Resample To Image', the level of detail's build), the time relative to Average (median of the
+per-round ratios, +- half their interquartile range), and the mean and worst error against the
+exact reference. Prints Markdown.
     python3 scripts/accuracy-table.py "coarse Wavelet" A/report.json "Blunt Fin" B/report.json"""
 import json
 import sys

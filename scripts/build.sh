@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Configures and builds the plugin, its tests and benchmarks (Release) into build/, or into
-# $PSI_BUILD_DIR (scripts/test.sh --paraview keeps one build per ParaView there).
+# $PSI_BUILD_DIR (scripts/in-system.sh keeps each Debian system's build elsewhere so), with the
+# shared datasets at ../shared/data or $PSI_DATA_DIR (CMake's PSI_DATA_DIR).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${PSI_BUILD_DIR:-$root/build}
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release \
+  ${PSI_DATA_DIR:+-DPSI_DATA_DIR="$PSI_DATA_DIR"} >/dev/null
 cmake --build "$build" -j"$(nproc)"

@@ -4,16 +4,26 @@
 # commands.
 # The archive is the one this machine's apt uses. Systems are cached under $PSI_SYSTEMS_DIR
 # (default /var/cache/psivolume/systems) and reused; delete a directory there to make it anew.
-#   bash scripts/debian-system.sh trixie
-# PSI_SYSTEM_INCLUDE: the packages added to minbase, comma-separated (default git,ca-certificates;
-# empty: the bare minbase, as scripts/check-deb.sh --fresh makes it). PSI_DEB_CACHE: a directory
+#   bash scripts/debian-system.sh [--include PACKAGES] [--cache-dir DIR] trixie
+# --include: the packages added to minbase, comma-separated (default git,ca-certificates; empty:
+# the bare minbase, as scripts/check-deb.sh --fresh makes it). --cache-dir: a directory
 # debootstrap takes the packages from and keeps those it downloads in (its --cache-dir).
+# (PSI_SYSTEM_INCLUDE and PSI_DEB_CACHE, the same in the environment, are still read when the
+# option is not given.)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-suite=${1:?usage: debian-system.sh SUITE}
+include=${PSI_SYSTEM_INCLUDE-git,ca-certificates}
+deb_cache=${PSI_DEB_CACHE:-}
+while [ "$#" -gt 1 ]; do
+  case "$1" in
+    --include) include=$2; shift 2 ;;
+    --cache-dir) deb_cache=$2; shift 2 ;;
+    *) break ;;
+  esac
+done
+suite=${1:?usage: debian-system.sh [--include PACKAGES] [--cache-dir DIR] SUITE}
 base=${PSI_SYSTEMS_DIR:-/var/cache/psivolume/systems}
 dir="$base/$suite"
-include=${PSI_SYSTEM_INCLUDE-git,ca-certificates}
 # Made in $dir.partial and renamed when complete.
 if [ -d "$dir" ]; then
   echo "$dir"
@@ -29,9 +39,9 @@ mirror=$(bash "$here/lib/debian-mirror.sh")
 mkdir -p "$base"
 rm -rf "$dir.partial"
 options=(--variant=minbase ${include:+--include="$include"})
-if [ -n "${PSI_DEB_CACHE:-}" ]; then
-  mkdir -p "$PSI_DEB_CACHE"
-  options+=(--cache-dir="$PSI_DEB_CACHE")
+if [ -n "$deb_cache" ]; then
+  mkdir -p "$deb_cache"
+  options+=(--cache-dir="$deb_cache")
 fi
 echo "[system] debootstrap ${options[*]} $suite (from this machine's apt archive)" >&2
 start=$SECONDS

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs a command of this checkout inside the Debian system of SUITE (scripts/debian-system.sh),
-# as root, in a private mount namespace: the checkout is seen at /psi/src, ../shared (the test
-# data, when present) read-only at /psi/shared, /proc and a fresh /dev/shm are mounted, and all of
+# as root, in a private mount namespace: the checkout is seen at /psi/src, the shared datasets
+# (../shared/data or $PSI_DATA_DIR, when present) read-only at /psi/shared/data (the checkout's
+# ../shared/data in there), /proc and a fresh /dev/shm are mounted, and all of
 # it is unmounted when the command ends. The build goes to /root/psi-build/<checkout> in that
 # system, one directory per checkout (every checkout is seen at the same /psi/src, and make's time
 # stamps cannot tell one checkout's older sources from another's: objects of a newer checkout
@@ -19,27 +20,24 @@ suite=${1:?usage: in-system.sh [--throwaway] SUITE COMMAND [ARG...]}
 shift
 [ "$#" -gt 0 ] || { echo "usage: in-system.sh [--throwaway] SUITE COMMAND [ARG...]" >&2; exit 2; }
 sys=$(bash "$root/scripts/debian-system.sh" "$suite")
-shared=$(cd "$root/.." && pwd)/shared
+shared=${PSI_DATA_DIR:-$(cd "$root/.." && pwd)/shared/data}  # seen as ../shared/data
 # The system's resolver and host names are the machine's: apt inside needs the resolver, and a
 # chroot keeps the machine's host name, to which ParaView's test driver connects the client of a
 # client/server test (a Debian installed on a machine lists its own name in /etc/hosts).
 cp -L /etc/resolv.conf "$sys/etc/resolv.conf"
 cp -L /etc/hosts "$sys/etc/hosts"
-mkdir -p "$sys/psi/src" "$sys/psi/shared" "$sys/root/psi-build"
+mkdir -p "$sys/psi/src" "$sys/psi/shared/data" "$sys/root/psi-build"
 args=$(printf '%q ' "$@")
-# X display numbers of this system's Xvfb servers: apart from the host's (99 up) and the other
-# systems', since X's abstract sockets are shared across chroots; a system outside the cache
-# (check-deb.sh --fresh) 50 further on, apart from the cached one of its suite.
+# (X servers started in there take a display number whose socket is free, scripts/lib/with-xvfb.sh:
+# X's abstract sockets are shared with the host and the other systems, their lock files are not.)
 checkout=$(printf '%s' "$root" | md5sum | cut -c1-12)
-case "$suite" in bookworm) xvfb=200 ;; trixie) xvfb=300 ;; sid) xvfb=400 ;; *) xvfb=500 ;; esac
-[ -z "${PSI_SYSTEMS_DIR:-}" ] || xvfb=$((xvfb + 50))
 overlay=""
 if [ "$throwaway" = 1 ]; then
   overlay=$(mktemp -d "${TMPDIR:-/var/tmp}/psi-overlay.XXXXXX")
   trap 'rm -rf "$overlay"' EXIT
 fi
 unshare --mount --propagation private -- bash -euo pipefail -c '
-  sys=$1 root=$2 shared=$3 args=$4 xvfb=$5 checkout=$6 overlay=$7
+  sys=$1 root=$2 shared=$3 args=$4 checkout=$5 overlay=$6
   if [ -n "$overlay" ]; then
     mkdir "$overlay/upper" "$overlay/work" "$overlay/root"
     mount -t overlay overlay \
@@ -51,11 +49,11 @@ unshare --mount --propagation private -- bash -euo pipefail -c '
   mount -t tmpfs -o mode=1777 shm "$sys/dev/shm"
   mount --bind "$root" "$sys/psi/src"
   if [ -d "$shared" ]; then
-    mount --bind "$shared" "$sys/psi/shared"
-    mount -o remount,bind,ro "$sys/psi/shared"
+    mount --bind "$shared" "$sys/psi/shared/data"
+    mount -o remount,bind,ro "$sys/psi/shared/data"
   fi
   exec chroot "$sys" /usr/bin/env -i HOME=/root TERM="${TERM:-dumb}" LANG=C.UTF-8 \
     PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin CI="${CI:-}" \
-    PSI_BUILD_DIR="/root/psi-build/$checkout" PSI_XVFB_DISPLAY="$xvfb" \
+    PSI_BUILD_DIR="/root/psi-build/$checkout" \
     bash -c "cd /psi/src && exec $args"
-' in-system "$sys" "$root" "$shared" "$args" "$xvfb" "$checkout" "$overlay"
+' in-system "$sys" "$root" "$shared" "$args" "$checkout" "$overlay"

@@ -4,7 +4,7 @@ and hangs"): runs one scene N times, each under scripts/lib/mpi_watchdog.py, and
 per run (ended, hung, failed; for a hang the innermost VTK/ParaView frame of each rank's main
 thread) and the count.
 
-  xvfb-run -a -s "-noreset -screen 0 1280x1024x24" python3 scripts/mpi_hang_rate.py \\
+  bash scripts/lib/with-xvfb.sh python3 scripts/mpi_hang_rate.py \\
       [--runs 10] [--timeout 60] [--symmetric] [--out DIR] -- [scene options]
 
 Scene options (the scene runs on rank 0, or on every rank with --symmetric):

@@ -5,7 +5,8 @@ Each mutation of scripts/mutations.py is applied, alone, to a scratch copy of th
 (WORKDIR/src, synchronized file by file so that unchanged files keep their time stamps), which has
 its own build directory (WORKDIR/build): configured and built once, then rebuilt incrementally,
 only the test executables the mutation names (the whole build for a test that runs none of
-them, as PsiPython.installed installs the build). The named tests then run (under xvfb-run, niced,
+them, as PsiPython.installed installs the build). The named tests then run (each in an X server
+of its own, scripts/lib/with-xvfb.sh, niced,
 each with a timeout: a hang counts as caught). The mutated file is restored after each mutation.
 
 Prints a table (mutation | caught by | seconds) and the score, and exits 1 when the score is below
@@ -19,7 +20,10 @@ present exactly once, so the list cannot silently rot.
   --only NAME...  run only these mutations
   --jobs N        build jobs (default 2)
   --timeout S     per-test timeout in seconds (default 300)
-  --workdir DIR   scratch tree and build (default $TMPDIR/psi-mutation-$USER)
+  --workdir DIR   scratch tree and build, kept between runs (default
+                  ~/.cache/psivolume/mutation, or under $XDG_CACHE_HOME)
+  --data-dir DIR  the shared datasets (CMake's PSI_DATA_DIR; default: ../shared/data beside the
+                  checkout, which the scratch tree does not have beside it)
 """
 import argparse
 import os
@@ -37,7 +41,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 
 THRESHOLD = 0.95
 SKIP_DIRS = {".git", "__pycache__"}
-XVFB = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24 -noreset"]
+XVFB = ["bash", str(ROOT / "scripts" / "lib" / "with-xvfb.sh"), "--new"]
 NICE = ["nice", "-n", "15"]
 
 
@@ -150,10 +154,12 @@ def run(cmd, log, timeout=None):
             return "timeout"
 
 
-def configure(work, log):
-    """Configures the scratch build (again, so that CTest lists the tests of the tree as it is)."""
+def configure(work, log, data_dir):
+    """Configures the scratch build (again, so that CTest lists the tests of the tree as it is),
+    its tests reading the shared datasets of `data_dir`."""
     src, bld = work / "src", work / "build"
-    return run(NICE + ["cmake", "-S", str(src), "-B", str(bld), "-DCMAKE_BUILD_TYPE=Release"],
+    return run(NICE + ["cmake", "-S", str(src), "-B", str(bld), "-DCMAKE_BUILD_TYPE=Release",
+                       f"-DPSI_DATA_DIR={data_dir.resolve()}"],
                log) == 0
 
 
@@ -194,9 +200,10 @@ def main():
     ap.add_argument("--only", nargs="+", metavar="NAME")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--timeout", type=int, default=300)
+    cache = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
     ap.add_argument("--workdir", type=pathlib.Path,
-                    default=pathlib.Path(os.environ.get("TMPDIR", "/tmp")) /
-                    f"psi-mutation-{os.environ.get('USER', 'user')}")
+                    default=pathlib.Path(cache) / "psivolume" / "mutation")
+    ap.add_argument("--data-dir", type=pathlib.Path, default=ROOT.parent / "shared" / "data")
     args = ap.parse_args()
 
     mutations = MUTATIONS
@@ -222,7 +229,7 @@ def main():
     sync_tree(ROOT, work / "src")
     log = work / "mutation.log"
     log.write_text("")
-    if not configure(work, log):
+    if not configure(work, log, args.data_dir):
         print(f"the scratch tree does not configure: see {log}")
         return 1
     tests = registered_tests(work / "build")

@@ -2,26 +2,37 @@
 # Installs everything needed to build and test the PsiVolume plugin against the ParaView of this
 # Debian: 12 (ParaView 5.11, Qt 5, its own VTK 9.2), 13 (5.13, Qt 6, its own VTK 9.3) or unstable
 # (6.1, Qt 6, on the system VTK 9.6). Idempotent: skips apt when every package is installed.
-# Then mends what Debian's packaging leaves broken for find_package(ParaView) (see
-# scripts/lib/mend-paraview-cmake.sh), saying what it did.
+#   sudo bash scripts/setup-deps.sh
+# Needs root (run as another user it calls sudo). What it changes: the system's packages, by
+# apt-get (`apt-get update`, then `apt-get install --no-install-recommends` of the missing ones);
+# nothing else. Building needs no root: scripts/build-deb.sh asks
+#   bash scripts/setup-deps.sh --missing
+# which changes nothing, needs no root and prints the missing packages of the build, one a line.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/lib/paraview-versions.sh"
 source "$here/lib/apt.sh"
 SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
 
+only_list=0
+[ "${1:-}" = --missing ] && only_list=1
+
 apt_update() {
   # Debian unstable's Release file can be past its Valid-Until date on a mirror that lags; apt
   # then refuses it. Retry once without the check, and say so.
-  if ! psi_apt "$SUDO" update -qq 2>/tmp/psi-apt-update.err; then
-    if grep -qi "is no longer valid\|expired" /tmp/psi-apt-update.err; then
+  local err rc=0
+  err=$(mktemp)
+  if ! psi_apt "$SUDO" update -qq 2>"$err"; then
+    if grep -qi "is no longer valid\|expired" "$err"; then
       echo "[setup] this mirror's Release file is past its Valid-Until date; updating without that check"
-      psi_apt "$SUDO" -o Acquire::Check-Valid-Until=false update -qq
+      psi_apt "$SUDO" -o Acquire::Check-Valid-Until=false update -qq || rc=$?
     else
-      cat /tmp/psi-apt-update.err >&2
-      return 1
+      cat "$err" >&2
+      rc=1
     fi
   fi
+  rm -f "$err"
+  return "$rc"
 }
 
 # The ParaView this Debian ships: installed, else the candidate (after an update on a fresh system).
@@ -30,7 +41,10 @@ paraview_series() {
   v=$(dpkg-query -W -f='${Version}' paraview 2>/dev/null || true)
   if [ -z "$v" ]; then
     v=$(apt-cache policy paraview 2>/dev/null | sed -n 's/^ *Candidate: *//p')
-    if [ -z "$v" ] || [ "$v" = "(none)" ]; then
+    if [ "$only_list" = 1 ] && { [ -z "$v" ] || [ "$v" = "(none)" ]; }; then
+      # no update without root: the series of this Debian's release
+      v=$(system_paraview_series)
+    elif [ -z "$v" ] || [ "$v" = "(none)" ]; then
       apt_update >&2
       v=$(apt-cache policy paraview | sed -n 's/^ *Candidate: *//p')
     fi
@@ -57,14 +71,19 @@ case "$series" in
   *) echo "[setup] ParaView $series: not a version this plugin is built for (5.11, 5.13, 6.1)" >&2
      exit 1 ;;
 esac
+# scripts/check-deb.sh's lintian: for checking the package, not for building it.
+[ "$only_list" = 1 ] || PKGS+=(lintian)
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+if [ "$only_list" = 1 ]; then
+  [ ${#missing[@]} -eq 0 ] || printf '%s\n' "${missing[@]}"
+  exit 0
+fi
 if [ ${#missing[@]} -gt 0 ]; then
   echo "[setup] ParaView $series: installing ${#missing[@]} packages: ${missing[*]}"
   apt_update
   DEBIAN_FRONTEND=noninteractive psi_apt "$SUDO" install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
-$SUDO bash "$here/lib/mend-paraview-cmake.sh"
 echo "[setup] dependencies present (ParaView $series)"

@@ -13,21 +13,17 @@
 #                                             they need); any report fails its test
 # Further arguments go to each ctest call (e.g. -V).
 #
-# Each test gets its own fresh Xvfb server, started with -noreset: by default Xvfb resets
-# whenever its last client disconnects and refuses connections meanwhile, which made a
-# pvpython/pvbatch process (most often a rank of the 2-rank MPI test) fail with "bad X server
-# connection" now and then (measured: two processes opening and closing the display 3,000 times
-# failed 13-17% of the time by default, 0% with -noreset). Up to two retries remain, each in
-# another fresh server, as a guard; a real failure fails every attempt and fails the run.
-# xvfb-run -a takes the first display number from PSI_XVFB_DISPLAY (default 99) whose lock file
-# is free; a Debian system of scripts/in-system.sh has a /tmp of its own but shares X's abstract
-# sockets with the host, so in-system.sh starts each system's numbers elsewhere.
-# A test that passes only on a retry is counted as passed and named in the summary line, so that
-# a flaky test is seen. Every process a test starts is ended when its attempt ends, also when
-# test.sh is interrupted or killed (see the tag below and scripts/lib/end_tagged.py).
+# Each test runs in its own fresh X server (scripts/lib/with-xvfb.sh, which says why it runs
+# with -noreset), under `ctest --repeat until-pass:3`: up to two retries, in the same server, as a
+# guard; a real failure fails every attempt and fails the run. A test that passes only on a retry
+# is counted as passed and named on the summary line (scripts/lib/test-summary.sh), so that a
+# flaky test is seen. Every process a test starts is ended when the test ends, also when test.sh
+# is interrupted or killed (see the tag below and scripts/lib/end_tagged.py).
+# The build: build/, or $PSI_BUILD_DIR (--tsan: the same name with -tsan appended).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 . "$root/scripts/lib/python-path.sh"
+. "$root/scripts/lib/test-summary.sh"
 paraview=""
 only=""
 tsan=""
@@ -46,11 +42,12 @@ if [ -n "$paraview" ]; then
 fi
 
 bash "$root/scripts/setup-deps.sh"
+build=${PSI_BUILD_DIR:-$root/build}
 if [ -n "$tsan" ]; then
-  export PSI_BUILD_DIR=${PSI_BUILD_DIR:-$root/build-tsan}
-  cmake -S "$root" -B "$PSI_BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPSI_SANITIZE_THREAD=ON \
-    -DPSI_BUILD_BENCHMARKS=OFF >/dev/null
-  cmake --build "$PSI_BUILD_DIR" -j"$(nproc)" --target PsiVolume TestLODImage
+  build=$build-tsan
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPSI_SANITIZE_THREAD=ON \
+    -DPSI_BUILD_BENCHMARKS=OFF ${PSI_DATA_DIR:+-DPSI_DATA_DIR="$PSI_DATA_DIR"} >/dev/null
+  cmake --build "$build" -j"$(nproc)" --target PsiVolume TestLODImage
   only=${only:-'^(PsiRepresentations\.LODImage|PsiPython\.(interaction|lod_inputs))$'}
 else
   bash "$root/scripts/build.sh"
@@ -58,7 +55,7 @@ fi
 # pvpython 5.13+ loses buffered output when a script leaves through os._exit into a pipe
 # (psivolume.process): unbuffered, a failing test's check lines reach the log.
 export PYTHONUNBUFFERED=1
-cd "${PSI_BUILD_DIR:-$root/build}"
+cd "$build"
 mapfile -t tests < <(ctest -N | sed -n 's/^ *Test *#[0-9]*: //p' | grep -E -- "${only:-.}" || true)
 [ "${#tests[@]}" -gt 0 ] || { echo "[test.sh] no test matches '${only}'"; exit 1; }
 passed=0
@@ -71,11 +68,11 @@ leaks=()
 out=$(mktemp)
 trap 'rm -f "$out"' EXIT
 
-# Each attempt runs with PSI_TEST_RUN=<run>:<n> in its environment, which every process it starts
+# Each test runs with PSI_TEST_RUN=<run>:<n> in its environment, which every process it starts
 # inherits, also one in a session or process group of its own (each MPI rank, test_pvserver.py's
 # server) or orphaned (a pvserver rank whose smTestDriver was killed waits for its client forever,
-# one rank busy-waiting in MPI at a full core). What is still running when the attempt ends is
-# ended and named; on INT, TERM or HUP test.sh ends the attempt's processes before it exits; a
+# one rank busy-waiting in MPI at a full core). What is still running when the test ends is
+# ended and named; on INT, TERM or HUP test.sh ends the test's processes before it exits; a
 # sentinel in its own session ends them when test.sh itself is killed (SIGKILL reaches no trap).
 run="psi$$.$RANDOM"
 end_tagged() { python3 "$root/scripts/lib/end_tagged.py" "$@"; }
@@ -90,45 +87,49 @@ trap 'interrupted 130' INT
 trap 'interrupted 143' TERM
 trap 'interrupted 129' HUP
 
-# One attempt, tagged $1, at the test matching the CTest regex $2, in its own fresh X server:
-# run in the background and waited for, so that a signal reaches the traps above at once.
-run_attempt() {
+# One test, tagged $1, the one matching the CTest regex $2, in its own fresh X server, its
+# attempts by CTest: run in the background and waited for, so that a signal reaches the traps
+# above at once.
+run_test() {
   local tag=$1 pattern=$2
   (
     export PSI_TEST_RUN="$tag"
-    xvfb-run -a -n "${PSI_XVFB_DISPLAY:-99}" -s "-screen 0 1280x1024x24 -noreset" \
-      ctest --output-on-failure --timeout 900 -R "$pattern" "${ctest_args[@]}" 2>&1 | tee "$out"
+    bash "$root/scripts/lib/with-xvfb.sh" --new ctest --output-on-failure --timeout 900 \
+      --repeat until-pass:3 -R "$pattern" "${ctest_args[@]}" 2>&1 | tee "$out"
   ) &
   wait $!
+}
+
+# The result lines CTest printed for the test named $1, one per attempt: "Passed", "***Failed",
+# "***Skipped", ... (its fixtures' lines left out).
+attempts() {
+  awk -v name="$1" '{ for (i = 1; i < NF; i++) if ($i ~ /^#[0-9]+:$/ && $(i + 1) == name) {
+    for (j = i + 2; j <= NF; j++) { f = $j; sub(/^\.+/, "", f); if (f != "") { print f; next } } } }' \
+    "$out"
 }
 
 n=0
 for t in "${tests[@]}"; do
   pattern="^$(printf '%s' "$t" | sed 's/[.[\*^$()+?{|]/\\&/g')\$"
-  ok=0
-  for attempt in 1 2 3; do
-    n=$((n + 1))
-    run_attempt "$run:$n" "$pattern" && ok=1
-    left=$(end_tagged "$run:$n" || true)
-    if [ -n "$left" ]; then
-      echo "[test.sh] $t left processes running after it ended; ended:"
-      printf '%s\n' "$left" | sed 's/^/[test.sh]   /'
-      leaks+=("$t")
-    fi
-    [ "$ok" = 1 ] && break
-    echo "[test.sh] $t failed (attempt $attempt)"
-  done
-  if [ "$ok" = 1 ] && grep -q "\*\*\*Skipped\|Not Run" "$out"; then
-    # A test that could not run here (SKIP_RETURN_CODE: its data is absent) is not a pass.
-    skipped=$((skipped + 1))
-    skips+=("$t")
-  elif [ "$ok" = 1 ]; then
-    passed=$((passed + 1))
-    [ "$attempt" = 1 ] || retried+=("$t")
-  else
-    failed=$((failed + 1))
-    failures+=("$t")
+  n=$((n + 1))
+  run_test "$run:$n" "$pattern" || true
+  left=$(end_tagged "$run:$n" || true)
+  if [ -n "$left" ]; then
+    echo "[test.sh] $t left processes running after it ended; ended:"
+    printf '%s\n' "$left" | sed 's/^/[test.sh]   /'
+    leaks+=("$t")
   fi
+  mapfile -t results < <(attempts "$t")
+  last=none  # no result line: ctest or the X server did not get to run it
+  [ "${#results[@]}" -eq 0 ] || last=${results[-1]}
+  case "$last" in
+    Passed)
+      passed=$((passed + 1))
+      [ "${#results[@]}" -eq 1 ] || retried+=("$t") ;;
+    # A test that could not run here (SKIP_RETURN_CODE: its data is absent) is not a pass.
+    *Skipped|*Not) skipped=$((skipped + 1)); skips+=("$t") ;;
+    *) failed=$((failed + 1)); failures+=("$t") ;;
+  esac
 done
 echo
 if [ "$skipped" -gt 0 ]; then
@@ -140,7 +141,5 @@ fi
 if [ "${#leaks[@]}" -gt 0 ]; then
   echo "tests that left processes running (ended by test.sh): ${leaks[*]}"
 fi
-# The first words stay "N passed, M failed" (.ci/run and test-paraview.sh read them).
-echo "$passed passed, $failed failed, $skipped skipped," \
-  "${#retried[@]} passed only on a retry${retried[*]:+: ${retried[*]}}"
+test_summary "$passed" "$failed" "$skipped" "${retried[@]}"
 [ "$failed" -eq 0 ]

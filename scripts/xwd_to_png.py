@@ -1,5 +1,5 @@
 """Converts an X window dump (XWD, as Xvfb -fbdir keeps its screen) of 32 bits per pixel to PNG,
-with the project's PNG writer (psivolume.testing.write_png, VTK's): pvpython
+with the project's PNG writer (psivolume.images.write_png, VTK's): pvpython
 scripts/xwd_to_png.py SCREEN.xwd OUT.png [WIDTH HEIGHT] (crops to the top-left WIDTH x HEIGHT when
 given)."""
 import struct
@@ -7,7 +7,7 @@ import sys
 
 import numpy as np
 
-from psivolume.testing import write_png
+from psivolume.images import write_png
 
 
 def read_xwd(path):

@@ -15,6 +15,11 @@ As a command (scripts/accuracy-report.sh wraps it under Xvfb), with PYTHONPATH=P
                                    [--unit-distance U] [--no-paraview] [--paraview-timeout 120]
                                    [--paraview-mappers 'Projected tetra' 'Z sweep' ...]
                                    [--resample-dims 64 128 256] [--budget 300]
+                                   [--data-dir DIR] [--plugin FILE] [--build-dir DIR]
+                                   [--reference-renderer FILE] [--pvpython FILE] [--threads N]
+(where things are: the shared datasets, the plugin, the build to find it in, the reference
+renderer, the pvpython of the children; the llvmpipe thread count the report names. Nothing is
+read from the environment.)
 Times come from interleaved rounds (psivolume.timing): every method and mapper once per round,
 medians over the rounds, ratios to Average taken round by round, until every ratio's spread is
 within 5% or the budget is spent. Prints the table and writes DIR/report.md, DIR/accuracy.png (error against time),
@@ -38,7 +43,8 @@ from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
 from vtkmodules.vtkRenderingCore import vtkColorTransferFunction
 
-from . import accuracy_plots, bench, data, restore, testing, timing
+from . import accuracy_plots, data, process, restore, timing
+from .images import grab
 
 PARAVIEW_MAPPERS = ["Projected tetra", "Z sweep", "Bunyk ray cast"]
 RESAMPLE = "Resample To Image"
@@ -51,14 +57,15 @@ TF_SAMPLES = 512  # extra breakpoints where the color map or opacity is not line
 # The colored array's name in the mesh file: the user's own may be any text, which VTK's XML writer
 # writes unescaped (a quote in it makes the file unreadable).
 MESH_ARRAY = "scalars"
+SKIP = 77  # the command's exit code when the shared dataset it names is absent (CTest's skip)
 
 
-def find_reference_renderer():
-    """psi_reference_render beside an installed plugin, else build/bin/ (PSI_REFERENCE_RENDER
-    overrides)."""
-    if os.environ.get("PSI_REFERENCE_RENDER"):
-        return os.environ["PSI_REFERENCE_RENDER"]
-    plugin = data.find_plugin()
+def find_reference_renderer(renderer=None, plugin=None):
+    """`renderer` when given, else psi_reference_render beside the plugin (data.find_plugin(
+    `plugin`)) when installed, else in the bin/ of the plugin's build."""
+    if renderer:
+        return renderer
+    plugin = data.find_plugin(plugin)
     beside = os.path.join(os.path.dirname(plugin), "psi_reference_render")  # installed
     if os.path.exists(beside):
         return beside
@@ -230,10 +237,11 @@ def run_reference_renderer(argv):
                                                    lines[-1] if lines else "no message"))
 
 
-def reference_image(cap, runs=2):
-    """The reference image (float RGB 0..255, rows from the bottom) and its seconds, rendered
-    `runs` times: the error between the runs is the reference's own row (0 when deterministic)."""
-    exe = find_reference_renderer()
+def reference_image(cap, exe=None, runs=2):
+    """The reference image (float RGB 0..255, rows from the bottom) and its seconds, rendered by
+    the reference renderer `exe` (default: find_reference_renderer()) `runs` times: the error
+    between the runs is the reference's own row (0 when deterministic)."""
+    exe = find_reference_renderer(exe)
     scene = os.path.join(cap.work, "reference.txt")
     cap.write_reference_scene(scene)
     images, seconds = [], []
@@ -255,12 +263,12 @@ def psi_contenders(cap, methods):
             name = "%s%s" % (m, " + adaptive" if adaptive == "On" else "")
 
             def prepare(m=m, adaptive=adaptive):
-                bench.set_mapper(cap.rep, "Psi Volume|" + m)
+                data.set_mapper(cap.rep, "Psi Volume|" + m)
                 cap.rep.AdaptiveSampling = adaptive
 
             prepare()
             simple.Render(cap.view)
-            images[name] = testing.grab(cap.view)
+            images[name] = grab(cap.view)
             contenders.append(timing.InProcess(name, cap.view, prepare))
     return contenders, images
 
@@ -271,14 +279,14 @@ def interactive_contender(cap, method):
     frame before it), timed with InteractiveRender. Returns (contender, image, the level of
     detail's build seconds, note)."""
     def prepare():
-        bench.set_mapper(cap.rep, "Psi Volume|" + method)
+        data.set_mapper(cap.rep, "Psi Volume|" + method)
         cap.rep.AdaptiveSampling = "Off"
         cap.rep.InteractionMode = "Volume LOD"
 
     prepare()
     simple.Render(cap.view)
     cap.view.InteractiveRender()
-    image = testing.grab(cap.view)  # the back buffer as drawn, not re-rendered
+    image = grab(cap.view)  # the back buffer as drawn, not re-rendered
     cap.rep.UpdatePropertyInformation()
     drew = cap.rep.GetProperty("LastInteractiveImage").GetElement(0)
     build = cap.rep.GetProperty("LODBuildSeconds").GetElement(0)
@@ -290,11 +298,12 @@ def resample_row(dims):
     return "ParaView %s %d^3" % (RESAMPLE, dims)
 
 
-def paraview_contenders(cap, mappers, timeout=120, resample_dims=()):
+def paraview_contenders(cap, mappers, timeout=120, resample_dims=(), plugin=None, pvpython=None):
     """ParaView's mappers, and 'Resample To Image' at each of `resample_dims`, each in a child
     pvpython that stays up for the rounds (a crash there is a row of the table with its note):
     (contenders, images, once), `once` the first frame's seconds of each 'Resample To Image'
-    (its resampling), apart from its frame time."""
+    (its resampling), apart from its frame time. The children run `pvpython` (default: the one
+    on PATH) and load the plugin `plugin` when they draw 'Psi Volume'."""
     scene = os.path.join(cap.work, "scene.json")
     cap.write_child_scene(scene)
     runs = [("ParaView " + m, m, None) for m in mappers] + \
@@ -302,7 +311,7 @@ def paraview_contenders(cap, mappers, timeout=120, resample_dims=()):
     contenders, images, once = [], {}, {}
     for row, mapper, dims in runs:
         out = os.path.join(cap.work, "pv_%d.npy" % len(contenders))
-        proc = timing.ChildProcess(child_command(mapper, scene, out, dims),
+        proc = timing.ChildProcess(child_command(mapper, scene, out, dims, plugin, pvpython),
                                    env=timing.child_environment(), timeout=timeout)
         images[row] = np.load(out) if proc.ready and os.path.exists(out) else None
         first = proc.line(FIRST_PREFIX)
@@ -312,12 +321,14 @@ def paraview_contenders(cap, mappers, timeout=120, resample_dims=()):
     return contenders, images, once
 
 
-def child_command(mapper, scene, out, dims=None):
-    """The command of a child pvpython drawing `mapper` (with sampling dimensions `dims` cubed,
-    for 'Resample To Image') on the scene written by Capture.write_child_scene to `scene`
-    (child_main)."""
-    argv = [timing.pvpython(), "--force-offscreen-rendering", "-m", __spec__.name,
+def child_command(mapper, scene, out, dims=None, plugin=None, pvpython=None):
+    """The command of a child pvpython (`pvpython`, default: the one on PATH) drawing `mapper`
+    (with sampling dimensions `dims` cubed, for 'Resample To Image') on the scene written by
+    Capture.write_child_scene to `scene` (child_main), loading the plugin `plugin`."""
+    argv = [timing.pvpython(pvpython), "--force-offscreen-rendering", "-m", __spec__.name,
             "--child-mapper", mapper, "--child-scene", scene, "--child-out", out]
+    if plugin:
+        argv += ["--plugin", plugin]
     return argv + (["--child-dims", str(dims)] if dims else [])
 
 
@@ -330,13 +341,18 @@ def errors(img, ref):
 
 def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
            paraview_mappers=PARAVIEW_MAPPERS, title=None, paraview_timeout=120, budget=300.0,
-           resample_dims=RESAMPLE_DIMS, progress=None):
+           resample_dims=RESAMPLE_DIMS, progress=None, plugin=None, reference_renderer=None,
+           pvpython=None, threads="all"):
     """Renders the active (or given) view's volume with every method and mapper, the
     interactive image of 'Psi Volume' and 'Resample To Image' at each of `resample_dims`,
     measures each image against the exact reference at the same view, prints the table and
     writes out_dir/report.md, accuracy.png and methods.png. Returns the rows as dicts.
     `progress(fraction, step)`, when given, is told each step (psivolume.progress.Progress).
-    The display, its maps, the view and its camera are left as they were, also when it fails."""
+    The display, its maps, the view and its camera are left as they were, also when it fails.
+    Where things are: `plugin` (default: the one loaded, data.find_plugin), which the child
+    pvpythons (`pvpython`, default: the one on PATH) load; `reference_renderer` (default:
+    find_reference_renderer beside that plugin). `threads`: the llvmpipe thread count the
+    report names (this process's LP_NUM_THREADS; "all": Mesa's default)."""
     step = progress or (lambda fraction, text: None)
     view = view or simple.GetActiveView()
     src = src or simple.GetActiveSource()
@@ -346,6 +362,9 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
         simple.Render(view)
         step(0.0, "the mesh and the scene")
         cap = Capture(view, rep, src, work)
+        plugin = data.find_plugin(plugin)
+        cap.plugin, cap.pvpython = plugin, pvpython
+        cap.reference_renderer = find_reference_renderer(reference_renderer, plugin)
         rows, ref, timed, method = measure(cap, step, frames, paraview_mappers, paraview_timeout,
                                            budget, resample_dims)
     for r in rows:
@@ -354,7 +373,7 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
     info = dict(title=title or "%s (%s)" % (src.GetXMLLabel(), cap.array), cells=cap.cells,
                 size=cap.size, frames=frames, timing=timed.summary(), baseline=BASELINE,
                 rounds=timed.rounds, converged=timed.converged,
-                threads=os.environ.get("LP_NUM_THREADS", "all"), interactive_method=method)
+                threads=threads, interactive_method=method)
     print(accuracy_plots.table_text(rows, info))
     step(0.95, "the plots")
     accuracy_plots.write_all(rows, ref, info, out_dir)
@@ -371,7 +390,7 @@ def measure(cap, step, frames, paraview_mappers, paraview_timeout, budget, resam
         rep.SetRepresentationType("Psi Volume")
     simple.Render(view)
     step(0.05, "the exact reference")
-    refs, ref_seconds = reference_image(cap)
+    refs, ref_seconds = reference_image(cap, cap.reference_renderer)
     method = rep.GetProperty("IntegrationMethod").GetData()
     methods = list(rep.GetProperty("IntegrationMethod").Available)
     step(0.2, "the images of 'Psi Volume'")
@@ -379,7 +398,7 @@ def measure(cap, step, frames, paraview_mappers, paraview_timeout, budget, resam
     live, images[INTERACTIVE], build, live_note = interactive_contender(cap, method)
     step(0.3, "ParaView's mappers")
     pv, pv_images, once = paraview_contenders(cap, paraview_mappers, paraview_timeout,
-                                              resample_dims)
+                                              resample_dims, cap.plugin, cap.pvpython)
     images.update(pv_images)
     once[INTERACTIVE] = build
     step(0.4, "timing rounds")
@@ -409,7 +428,7 @@ def child_main(args):
     with open(args.child_scene) as f:
         s = json.load(f)
     if args.child_mapper.startswith("Psi Volume"):
-        data.load_plugin(globals())
+        data.load_plugin(globals(), args.plugin, args.build_dir)
     reader = simple.XMLUnstructuredGridReader(FileName=[s["mesh"]])
     view = simple.CreateRenderView()
     view.ViewSize = s["size"]
@@ -426,7 +445,7 @@ def child_main(args):
     lut.VectorMode = s["vector_mode"]
     lut.VectorComponent = s["vector_component"]
     pwf.Points = s["opacity_points"]
-    bench.set_mapper(d, args.child_mapper)
+    data.set_mapper(d, args.child_mapper)
     if args.child_dims:
         d.SamplingDimensions = [args.child_dims] * 3
     d.ScalarOpacityUnitDistance = s["unit"]
@@ -438,20 +457,20 @@ def child_main(args):
     view.CameraParallelScale = c["scale"]
     # the first frame, apart: 'Resample To Image' resamples the mesh in it
     print(FIRST_PREFIX + repr(timing.frame(view)[0]), flush=True)
-    np.save(args.child_out, testing.grab(view))
+    np.save(args.child_out, grab(view))
     timing.serve_rounds(view, d)
-    testing.exit_now(0)
+    process.exit_now(0)
 
 
 def command_scene(args):
     """Source, array and a view for the command line: FILE, a shared dataset or the Wavelet."""
     if args.file:
         name = args.file
-        shared = data.PLOT3D.get(name, data.NAMED_FILES.get(name))
-        if shared and not os.path.exists(os.path.join(data.SHARED_DATA, shared[0])):
-            print("SKIP: %s not found in %s" % (name, data.SHARED_DATA))
-            testing.exit_now(testing.SKIP)
-    src, array = data.open_or_wavelet(args.file, args.array, args.wavelet_half)
+        shared = name in data.PLOT3D or name in data.NAMED_FILES
+        if shared and not os.path.exists(data.shared_file(name, args.data_dir)):
+            print("SKIP: %s not found in %s" % (name, args.data_dir or data.DATA_DIR))
+            process.exit_now(SKIP)
+    src, array = data.open_or_wavelet(args.file, args.array, args.wavelet_half, args.data_dir)
     view, d = data.volume_view(src, array, args.size, args.unit_distance)
     simple.SetActiveView(view)
     simple.SetActiveSource(src)
@@ -480,6 +499,16 @@ def main():
     p.add_argument("--budget", type=float, default=300,
                    help="seconds of timing rounds at most (they stop earlier once every ratio "
                         "to Average is within 5%%)")
+    p.add_argument("--data-dir", help="the shared datasets (default: ../shared/data beside the "
+                   "checkout)")
+    p.add_argument("--plugin", help="the plugin's file (default: the installed one, else the "
+                   "build's)")
+    p.add_argument("--build-dir", help="the build to find the plugin in (default: build/)")
+    p.add_argument("--reference-renderer", help="psi_reference_render (default: beside the "
+                   "plugin, or in the build's bin/)")
+    p.add_argument("--pvpython", help="the pvpython of the child processes (default: PATH's)")
+    p.add_argument("--threads", default="all", help="the llvmpipe thread count the report names "
+                   "(LP_NUM_THREADS; default: all)")
     p.add_argument("--child-mapper", help=argparse.SUPPRESS)
     p.add_argument("--child-scene", help=argparse.SUPPRESS)
     p.add_argument("--child-out", help=argparse.SUPPRESS)
@@ -487,12 +516,15 @@ def main():
     args = p.parse_args()
     if args.child_mapper:
         child_main(args)
-    data.load_plugin(globals())
+    data.load_plugin(globals(), args.plugin, args.build_dir)
     view, rep, src, title = command_scene(args)
     report(view, rep, src, args.out, args.frames,
            [] if args.no_paraview else args.paraview_mappers, title, args.paraview_timeout,
-           args.budget, [] if args.no_paraview else args.resample_dims)
-    testing.exit_now(0)
+           args.budget, [] if args.no_paraview else args.resample_dims,
+           plugin=data.find_plugin(args.plugin, args.build_dir),
+           reference_renderer=args.reference_renderer, pvpython=args.pvpython,
+           threads=args.threads)
+    process.exit_now(0)
 
 
 if __name__ == "__main__":

@@ -1,7 +1,7 @@
 """Outputs of the accuracy report (accuracy.report): the table as text and Markdown, the
 error-against-time plot (accuracy.png) and the images with their error maps (methods.png).
 Uses matplotlib when it imports; otherwise writes the plots with the project's PNG writer
-(testing.write_png: plain points and images, no text) and says so in report.md."""
+(images.write_png: plain points and images, no text) and says so in report.md."""
 import json
 import math
 import os
@@ -10,7 +10,7 @@ import textwrap
 import numpy as np
 
 from . import moreland
-from .testing import write_png
+from .images import write_png
 
 try:
     import matplotlib

@@ -7,31 +7,22 @@ import numpy as np
 from paraview import simple
 from vtkmodules.vtkRenderingVolume import vtkUnstructuredGridLinearRayIntegrator
 
-from . import data, testing, timing
+from . import data, images, process, timing
+from .data import set_mapper  # noqa: F401 (the benchmarks' name for it)
 
 
-def load(name):
-    """Source and array for 'wavelet', a PLOT3D name or a file. A benchmark on a PLOT3D dataset
-    whose files are absent prints SKIP and ends here."""
+def load(name, data_dir=None):
+    """Source and array for 'wavelet', a PLOT3D name or a file (shared datasets from `data_dir`,
+    default data.DATA_DIR). A benchmark on a PLOT3D dataset whose files are absent prints SKIP
+    and ends here."""
     if name == "wavelet":
         return data.wavelet()
     if name in data.PLOT3D:
-        if not os.path.exists(os.path.join(data.SHARED_DATA, data.PLOT3D[name][0])):
-            print("SKIP: %s not found in %s" % (name, data.SHARED_DATA))
-            testing.exit_now(0)
-        return data.plot3d(name)
-    return data.open_any(name)
-
-
-def set_mapper(rep, name):
-    """Puts `rep` on 'Psi Volume|<IntegrationMethod>' or on 'Volume' with one of ParaView's
-    SelectMapper values ('Projected tetra', 'Z sweep', 'Bunyk ray cast', 'Resample To Image')."""
-    if name.startswith("Psi Volume"):
-        rep.SetRepresentationType("Psi Volume")
-        rep.IntegrationMethod = name.split("|")[1]
-    else:
-        rep.SetRepresentationType("Volume")
-        rep.SelectMapper = name
+        if not os.path.exists(data.shared_file(name, data_dir)):
+            print("SKIP: %s not found in %s" % (name, data_dir or data.DATA_DIR))
+            process.exit_now(0)
+        return data.plot3d(name, data_dir)
+    return data.open_any(name, data_dir=data_dir)
 
 
 # 'Psi Volume' with each projector (vtkPsiVolumeMapper::Projectors); plain 'Psi Volume' is Auto.
@@ -136,7 +127,7 @@ class Scene:
         for k in range(self.frames):
             if k in steps:
                 seconds.append(timing.frame(self.view)[0])
-                refs[k] = testing.grab(self.view)
+                refs[k] = images.grab(self.view)
             self.step()
         bunyk.SetRayIntegrator(None)
         return refs, timing.frame_time(seconds) if seconds else float("nan")
@@ -150,7 +141,7 @@ class Scene:
         for k in range(self.frames):
             if k in refs:
                 simple.Render(self.view)
-                img = testing.grab(self.view)
+                img = images.grab(self.view)
                 e = np.abs(img - refs[k])
                 errs.append(e.mean())
                 maxes.append(e.max())

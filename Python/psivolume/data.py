@@ -1,6 +1,10 @@
 """Loading datasets for 'Psi Volume' in pvpython: files of the unstructured-volume literature
 (PLOT3D pairs, legacy/XML VTK, Exodus) and the embedded default (ParaView's Wavelet, split into
-tetrahedra). Shared by the render command, the benchmarks and the tests."""
+tetrahedra). Shared by the render command, the benchmarks and the tests.
+
+Where things are is given by the caller, never read from the environment: `data_dir` (the shared
+datasets; default: ../shared/data beside the checkout), `plugin` (the plugin's file) and
+`build_dir` (the build tree to find it in; default: the checkout's build/)."""
 import glob
 import os
 
@@ -8,8 +12,8 @@ from paraview import servermanager, simple
 
 # The checkout's root: this file is <root>/Python/psivolume/data.py.
 SOURCE_ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-SHARED_DATA = os.environ.get("PSI_DATA") or os.path.normpath(
-    os.path.join(SOURCE_ROOT, "..", "shared", "data"))
+# The shared datasets when no folder is given: ../shared/data beside the checkout.
+DATA_DIR = os.path.normpath(os.path.join(SOURCE_ROOT, "..", "shared", "data"))
 
 # PLOT3D datasets of ../shared/data: grid file, solution file, IBLANK, array to render.
 PLOT3D = {
@@ -34,12 +38,12 @@ def loaded_plugin():
     return None
 
 
-def find_plugin():
-    """Path of the plugin (PSI_PLUGIN overrides): the one this process has loaded (the GUI's, say),
-    else the installed one when this package is installed (`cmake --install` adds
-    installed_paths.py), else the checkout's build."""
-    if os.environ.get("PSI_PLUGIN"):
-        return os.environ["PSI_PLUGIN"]
+def find_plugin(plugin=None, build_dir=None):
+    """Path of the plugin: `plugin` when given, else the one this process has loaded (the GUI's,
+    say), else the installed one when this package is installed (`cmake --install` adds
+    installed_paths.py), else the one in `build_dir` (default: the checkout's build/)."""
+    if plugin:
+        return plugin
     if loaded_plugin():
         return loaded_plugin()
     try:
@@ -48,7 +52,7 @@ def find_plugin():
                                              installed_paths.PLUGIN))
     except ImportError:
         pass
-    build = os.environ.get("PSI_BUILD_DIR") or os.path.join(SOURCE_ROOT, "build")
+    build = build_dir or os.path.join(SOURCE_ROOT, "build")
     # The plugin directory is named for the ParaView it was built against (CMakeLists.txt):
     # only a build for the running ParaView can load.
     sm = servermanager.vtkSMProxyManager
@@ -57,12 +61,13 @@ def find_plugin():
     hits = glob.glob(pattern)
     if not hits:
         raise RuntimeError("PsiVolume plugin for %s not built in %s: run scripts/build.sh "
-                           "(or set PSI_PLUGIN)" % (version, os.path.abspath(build)))
+                           "(or give the plugin's path)" % (version, os.path.abspath(build)))
     return os.path.abspath(hits[0])
 
 
-def load_plugin(ns):
-    simple.LoadPlugin(find_plugin(), remote=False, ns=ns)
+def load_plugin(ns, plugin=None, build_dir=None):
+    """Loads the plugin (find_plugin(`plugin`, `build_dir`)) into the namespace `ns`."""
+    simple.LoadPlugin(find_plugin(plugin, build_dir), remote=False, ns=ns)
 
 
 def wavelet(half=20):
@@ -78,7 +83,17 @@ def with_vector(src):
                              Function="coordsX*iHat + RTData/40*jHat + (coordsZ + 10)*kHat")
 
 
-def plot3d(name, data_dir=SHARED_DATA):
+def shared_file(name, data_dir=None):
+    """The first file of the shared dataset `name` (a key of PLOT3D or NAMED_FILES) in
+    `data_dir` (default DATA_DIR), whether it exists or not."""
+    entry = PLOT3D.get(name) or NAMED_FILES[name]
+    return os.path.join(data_dir or DATA_DIR, entry[0])
+
+
+def plot3d(name, data_dir=None):
+    """The PLOT3D dataset `name` of `data_dir` (default DATA_DIR), tetrahedralized, and its
+    array."""
+    data_dir = data_dir or DATA_DIR
     xyz, q, iblank, array = PLOT3D[name]
     reader = simple.PLOT3DReader(FileName=os.path.join(data_dir, xyz),
                                  QFileName=[os.path.join(data_dir, q)])
@@ -91,16 +106,17 @@ def plot3d(name, data_dir=SHARED_DATA):
     return simple.Tetrahedralize(Input=merged), array
 
 
-def open_any(path, array=None):
+def open_any(path, array=None, data_dir=None):
     """A pipeline producing an unstructured grid from `path`, and the point array to render.
 
     `path` may be a PLOT3D grid file (its solution file is found by replacing 'xyz' with 'q'),
-    one of the short names bluntfin/post/comb/spx, or anything ParaView reads."""
+    one of the short names bluntfin/post/comb/spx (files of `data_dir`, default DATA_DIR), or
+    anything ParaView reads."""
     base = os.path.basename(path)
     if path in PLOT3D:
-        return plot3d(path)
+        return plot3d(path, data_dir)
     if path in NAMED_FILES:
-        path, array = os.path.join(SHARED_DATA, NAMED_FILES[path][0]), array or NAMED_FILES[path][1]
+        path, array = shared_file(path, data_dir), array or NAMED_FILES[path][1]
     if base.endswith("xyz.bin"):
         key = base[: -len("xyz.bin")]
         if key in PLOT3D:
@@ -126,10 +142,10 @@ def open_any(path, array=None):
     return src, array
 
 
-def open_or_wavelet(path=None, array=None, half=20):
-    """open_any(`path`, `array`), or with no path the embedded default (wavelet(`half`)); ends
-    the program with a message when there is no array to render."""
-    src, array = open_any(path, array) if path else wavelet(half)
+def open_or_wavelet(path=None, array=None, half=20, data_dir=None):
+    """open_any(`path`, `array`, `data_dir`), or with no path the embedded default
+    (wavelet(`half`)); ends the program with a message when there is no array to render."""
+    src, array = open_any(path, array, data_dir) if path else wavelet(half)
     if array is None:
         raise SystemExit("%s has no point or cell array to render" % path)
     return src, array
@@ -140,6 +156,17 @@ def association(src, array):
     if src.PointData.GetArray(array) is not None:
         return "POINTS"
     return "CELLS"
+
+
+def set_mapper(rep, name):
+    """Puts `rep` on 'Psi Volume|<IntegrationMethod>' or on 'Volume' with one of ParaView's
+    SelectMapper values ('Projected tetra', 'Z sweep', 'Bunyk ray cast', 'Resample To Image')."""
+    if name.startswith("Psi Volume"):
+        rep.SetRepresentationType("Psi Volume")
+        rep.IntegrationMethod = name.split("|")[1]
+    else:
+        rep.SetRepresentationType("Volume")
+        rep.SelectMapper = name
 
 
 def show_volume(src, array, view, representation="Psi Volume", unit_distance=None,

@@ -1,12 +1,12 @@
-"""Helpers for the pvpython tests: image capture and comparison, checks that count failures, and
-the project's PNG writer (write_png: the accuracy report's plots, the tests' images, the GUI
-tests' strict check, the README's screenshot)."""
-import os
+"""Helpers for the pvpython tests: checks that count failures, image comparison, small scenes.
+Image capture and the PNG writer are psivolume.images (grab and write_png are here too, for the
+tests), leaving the program psivolume.process.exit_now."""
 import sys
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+
+from .images import grab, write_png  # noqa: F401 (the tests' names for them)
+from .process import exit_now
 
 SKIP = 77  # ctest SKIP_RETURN_CODE
 
@@ -25,15 +25,6 @@ class Checks:
     def finish(self):
         print("%s: %s" % (self.name, "FAILED (%d)" % self.failures if self.failures else "passed"))
         exit_now(1 if self.failures else 0)
-
-
-def exit_now(code):
-    """Leaves pvpython with `code`. sys.exit() from a pvpython script under Xvfb makes the
-    teardown fail with GLXBadContext and exit 1 even with ParaView's own mappers (measured with
-    the built-in 'Volume' representation), which would turn every passing test into a failure."""
-    sys.stdout.flush()
-    sys.stderr.flush()
-    os._exit(code)
 
 
 def apply_preset(function, *names):
@@ -60,19 +51,6 @@ def black_view(size):
     return view
 
 
-def grab(view):
-    """The view's current image as float RGB in [0, 255], rows from the bottom."""
-    w2i = vtkWindowToImageFilter()
-    w2i.SetInput(view.GetRenderWindow())
-    w2i.ReadFrontBufferOff()
-    w2i.ShouldRerenderOff()
-    w2i.Update()
-    im = w2i.GetOutput()
-    dims = im.GetDimensions()
-    a = vtk_to_numpy(im.GetPointData().GetScalars()).reshape(dims[1], dims[0], -1)
-    return a[:, :, :3].astype(np.float64)
-
-
 def mean_error(a, b):
     return float(np.abs(a - b).mean()) / 255.0
 
@@ -81,24 +59,6 @@ def covered(img, background):
     """Pixels that differ from the background color by more than 2/255."""
     bg = np.array(background, dtype=np.float64) * 255.0
     return int((np.abs(img - bg).sum(axis=2) > 2.0).sum())
-
-
-def write_png(rgb, path):
-    """Writes `rgb` (rows x columns x 3, bottom row first, as VTK orders images; values 0..255,
-    clipped) to a PNG."""
-    from vtkmodules.util.numpy_support import numpy_to_vtk
-    from vtkmodules.vtkCommonDataModel import vtkImageData
-    from vtkmodules.vtkIOImage import vtkPNGWriter
-
-    h, w, _ = rgb.shape
-    img = vtkImageData()
-    img.SetDimensions(w, h, 1)
-    arr = numpy_to_vtk(np.clip(rgb.reshape(-1, 3), 0, 255).astype(np.uint8), deep=1)
-    img.GetPointData().SetScalars(arr)
-    writer = vtkPNGWriter()
-    writer.SetFileName(path)
-    writer.SetInputData(img)
-    writer.Write()
 
 
 def one_tetrahedron(name="s", size=1.0):

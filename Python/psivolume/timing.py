@@ -306,13 +306,13 @@ def interleaved(contenders, baseline, frames=3, warmup=1, jitter=0.5, min_rounds
 def child_environment(threads=None):
     """The environment of a child pvpython: no MPI-singleton variables, unbuffered, and
     optionally llvmpipe's thread count."""
-    env = process.environment_without_mpi()
-    if threads is not None:
-        env["LP_NUM_THREADS"] = str(threads)
-    return env
+    if threads is None:
+        return process.environment_without_mpi()
+    return process.environment_without_mpi(LP_NUM_THREADS=threads)
 
 
-def pvpython():
+def pvpython(path=None):
+    """The pvpython to start children with: `path` when given, else the one on PATH."""
     import shutil
 
-    return os.environ.get("PSI_PVPYTHON") or shutil.which("pvpython") or "pvpython"
+    return path or shutil.which("pvpython") or "pvpython"

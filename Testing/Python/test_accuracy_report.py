@@ -21,7 +21,11 @@ from psivolume import accuracy, data, testing, timing
 checks = testing.Checks("accuracy_report")
 RESAMPLE_DIMS = [8, 16]
 out = tempfile.mkdtemp(prefix="psi_accuracy_test_")
+# where things are, from the test's ENVIRONMENT (the installed tree's test names none)
+paths = [("--plugin", os.environ.get("PSI_PLUGIN")),
+         ("--reference-renderer", os.environ.get("PSI_REFERENCE_RENDER"))]
 cmd = [timing.pvpython(), "--force-offscreen-rendering", "-m", "psivolume.accuracy",
+       *[word for option, value in paths if value for word in (option, value)],
        "--wavelet-half", "3", "--size", "96", "--frames", "1", "--out", out,
        "--paraview-mappers", "Projected tetra", "--budget", "10",
        # the rows' structure, at sizes that resample in seconds (the report's own 64^3 to 256^3
@@ -40,7 +44,7 @@ if not os.path.exists(os.path.join(out, "report.json")):
 with open(os.path.join(out, "report.json")) as f:
     rows = {r["name"]: r for r in json.load(f)["rows"]}
 md = open(os.path.join(out, "report.md")).read()
-data.load_plugin(globals())
+data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
 # The methods as the plugin offers them (the IntegrationMethod enumeration).
 view = simple.CreateRenderView()
 rep = simple.Show(simple.Tetrahedralize(Input=simple.Wavelet(WholeExtent=[0, 1, 0, 1, 0, 1])),

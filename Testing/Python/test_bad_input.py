@@ -27,7 +27,7 @@ from vtkmodules.vtkCommonCore import vtkPoints
 
 from psivolume import data, testing
 
-DATA = os.environ.get("PSI_DATA_DIR") or data.SHARED_DATA
+DATA = os.environ.get("PSI_DATA_DIR") or data.DATA_DIR
 BG = [0.0, 0.0, 0.0]
 SIZE = 200
 CASE_TIMEOUT = 240  # seconds; a hang prints every thread's stack and fails
@@ -809,7 +809,7 @@ if __name__ == "__main__":
     err = open(os.devnull if sys.__stderr__ is None else "/dev/stderr", "w")
     faulthandler.enable(file=err)
     faulthandler.dump_traceback_later(CASE_TIMEOUT * len(names), exit=True, file=err)
-    data.load_plugin(globals())
+    data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
     for name in names:
         print("== case %s" % name)
         t0 = time.time()

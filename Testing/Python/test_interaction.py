@@ -14,7 +14,7 @@ from paraview import servermanager, simple
 from psivolume import data, testing
 
 t = testing.Checks("test_interaction")
-data.load_plugin(globals())
+data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
 BG = [0.0, 0.0, 0.0]
 FULL, LOD, SURFACE = 0, 1, 2
 SIZE = 200

@@ -11,13 +11,14 @@ from paraview import simple
 
 from psivolume import data, testing
 
-if not os.path.exists(os.path.join(data.SHARED_DATA, data.PLOT3D["bluntfin"][0])):
-    print("SKIP: the Blunt Fin is not in %s" % data.SHARED_DATA)
+DATA_DIR = os.environ.get("PSI_DATA_DIR") or data.DATA_DIR
+if not os.path.exists(data.shared_file("bluntfin", DATA_DIR)):
+    print("SKIP: the Blunt Fin is not in %s" % DATA_DIR)
     testing.exit_now(testing.SKIP)
 
 t = testing.Checks("test_isosurface_coverage")
-data.load_plugin(globals())
-src, array = data.plot3d("bluntfin")
+data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
+src, array = data.plot3d("bluntfin", DATA_DIR)
 tets = simple.Tetrahedralize(Input=src)
 tets.UpdatePipeline()
 lo, hi = tets.PointData[array].GetRange()

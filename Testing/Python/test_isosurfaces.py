@@ -15,7 +15,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from psivolume import data, testing
 
 t = testing.Checks("test_isosurfaces")
-data.load_plugin(globals())
+data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
 BG = [0.0, 0.0, 0.0]
 SIZE = 160
 OUT = os.environ.get("PSI_TEST_OUTPUT", "")

@@ -13,12 +13,14 @@ stands in for (results, never timings), and its build's progress:
 - deleting the representation right after an interactive render, then a new one: no stale image.
 Each level of detail must be nearer its own still frame than the wrong image, and as near as
 the same level of detail on a plain scene."""
+import os
+
 from paraview import simple
 
 from psivolume import data, testing
 
 t = testing.Checks("test_lod_inputs")
-data.load_plugin(globals())
+data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
 SIZE = 160
 FULL, LOD = 0, 1
 

@@ -4,12 +4,14 @@ unstructured grid), wedges and pyramids render exactly as ConformingTetrahedrali
 does (the same tetrahedra, the same image within visibility-sort ties), and a mixed grid of all
 three too. VTK's generic triangulator, used before, gives other tetrahedra."""
 
+import os
+
 from paraview import simple
 
 from psivolume import data, testing
 
 t = testing.Checks("test_mixed_cells")
-data.load_plugin(globals())
+data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
 view = simple.CreateRenderView()
 view.ViewSize = [160, 160]
 view.OrientationAxesVisibility = 0

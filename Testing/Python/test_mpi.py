@@ -84,7 +84,7 @@ def render(src, view_size=SIZE):
 
 
 def serial_main(out):
-    data.load_plugin(globals())
+    data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
     src, _ = build(False)
     view, d = render(src)
     np.save(out, capture(view))
@@ -158,7 +158,7 @@ def parallel_main():
     cov_ref = testing.covered(ref, BG)
     t.check(cov_ref > 0.2 * SIZE * SIZE, "serial image not empty (%d pixels)" % cov_ref)
 
-    data.load_plugin(globals())
+    data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
     for redistribute in (False, True):
         label = "RedistributeDataSet" if redistribute else "Wavelet pieces"
         src, ids = build(redistribute)
@@ -185,9 +185,9 @@ def parallel_main():
                 % (label, mean, MEAN_TOL))
         t.check(frac <= OUTLIER_FRACTION, "%s: %.3f%% of pixels differ by more than %.0f/255 "
                 "(<= %.0f%%)" % (label, 100 * frac, OUTLIER, 100 * OUTLIER_FRACTION))
-        if os.environ.get("PSI_MPI_SAVE"):
-            np.save(os.path.join(os.environ["PSI_MPI_SAVE"], "mpi_%d.npy" % redistribute), img)
-            np.save(os.path.join(os.environ["PSI_MPI_SAVE"], "serial.npy"), ref)
+        if os.environ.get("PSI_TEST_OUTPUT"):
+            np.save(os.path.join(os.environ["PSI_TEST_OUTPUT"], "mpi_%d.npy" % redistribute), img)
+            np.save(os.path.join(os.environ["PSI_TEST_OUTPUT"], "mpi_serial.npy"), ref)
         simple.Delete(d)
         simple.Delete(view)
     finish(t)

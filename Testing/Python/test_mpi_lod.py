@@ -63,7 +63,7 @@ def lod_frame(src):
 
 
 def serial_main(out):
-    data.load_plugin(globals())
+    data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
     src, _ = test_mpi.build(False, EXTENT)
     still, img, used = lod_frame(src)
     np.save(out, img)
@@ -87,7 +87,7 @@ def parallel_main():
             "the serial level of detail is not the still frame (mean |diff| %.3f/255)"
             % (255 * testing.mean_error(ref, ref_still)))
 
-    data.load_plugin(globals())
+    data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
     for redistribute in (False, True):
         label = "RedistributeDataSet" if redistribute else "Wavelet pieces"
         src, _ = test_mpi.build(redistribute, EXTENT)
@@ -99,8 +99,8 @@ def parallel_main():
               "2-rank still frame %.3f/255" % (label, mean, mx, 255 * testing.mean_error(img, still)))
         t.check(mean <= MEAN_TOL, "%s: mean |diff| %.3f/255 <= %.2f/255" % (label, mean, MEAN_TOL))
         t.check(mx <= MAX_TOL, "%s: max |diff| %.0f/255 <= %.0f/255" % (label, mx, MAX_TOL))
-        if os.environ.get("PSI_MPI_SAVE"):
-            save = os.environ["PSI_MPI_SAVE"]
+        if os.environ.get("PSI_TEST_OUTPUT"):
+            save = os.environ["PSI_TEST_OUTPUT"]
             np.save(os.path.join(save, "lod_mpi_%d.npy" % redistribute), img)
             np.save(os.path.join(save, "lod_serial.npy"), ref)
     test_mpi.finish(t)

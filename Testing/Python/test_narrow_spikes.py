@@ -7,13 +7,14 @@ u = 20 w, so that the exact opacity is 1 - 1/e for every width; widths from 10% 
 the range, far below the 1024-sample table's spacing (0.1%). Adaptive sampling On and Auto must
 be within 2% of the exact opacity; Off (the sampled table) is printed for comparison."""
 import math
+import os
 
 from paraview import simple
 
 from psivolume import data, testing
 
 t = testing.Checks("test_narrow_spikes")
-data.load_plugin(globals())
+data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
 grid = simple.Wavelet(WholeExtent=[0, 6, 0, 6, 0, 40])
 calc = simple.Calculator(Input=grid, ResultArrayName="s", Function="coordsZ/40")
 slab = simple.Tetrahedralize(Input=calc)

@@ -15,7 +15,7 @@ from paraview import simple
 from psivolume import data, testing
 
 t = testing.Checks("test_parity")
-data.load_plugin(globals())
+data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
 src, array = data.wavelet(6)
 calc = data.with_vector(src)
 calc2 = simple.Calculator(Input=calc, ResultArrayName="Other", Function="RTData*0.5 + 40*sin(coordsX)")
@@ -171,7 +171,7 @@ for rep in ("Volume", "Psi Volume"):
     state = os.path.join(tempfile.mkdtemp(), "parity.pvsm")
     simple.SaveState(state)
     simple.ResetSession()
-    data.load_plugin(globals())
+    data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
     simple.LoadState(state)
     view = simple.GetActiveViewOrCreate("RenderView")
     view.ViewSize = [120, 120]

@@ -10,7 +10,7 @@ from vtkmodules.vtkRenderingVolume import vtkUnstructuredGridLinearRayIntegrator
 from psivolume import data, testing
 
 t = testing.Checks("test_plugin_basics")
-data.load_plugin(globals())
+data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
 BG = [0.0, 0.0, 0.0]
 
 

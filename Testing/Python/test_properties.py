@@ -1,13 +1,15 @@
 """Every property of 'Psi Volume' from pvpython: each value is accepted, reads back, renders a
 finite, non-empty image, and the ones that should change the picture do (as numbers)."""
 
+import os
+
 import numpy as np
 from paraview import simple
 
 from psivolume import data, testing
 
 t = testing.Checks("test_properties")
-data.load_plugin(globals())
+data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
 src, array = data.wavelet(8)
 view = simple.CreateRenderView()
 view.ViewSize = [160, 160]

@@ -2,7 +2,7 @@
 to `mpiexec -n 2 pvserver` renders the scene of test_mpi.py with remote rendering (ParaView's
 ordered compositing, IceT on the server) and the image it receives must match a serial render.
 
-Run: pvpython --force-offscreen-rendering test_pvserver.py   (under an X server, e.g. xvfb-run)
+Run: pvpython --force-offscreen-rendering test_pvserver.py   (under an X server, e.g. bash scripts/lib/with-xvfb.sh pvpython ...)
 Environment: PSI_PLUGIN (the plugin), PSI_PVSERVER, PSI_MPIEXEC (default: from PATH).
 
 0. Holds one X connection for the whole run (see hold_display: Xvfb resets, and refuses
@@ -291,10 +291,10 @@ def remote_checks(t, port, plugin, ref, n_serial, ref_lod, logpath):
             t.check(frac <= test_mpi.OUTLIER_FRACTION, "%s: %.3f%% of pixels differ by more "
                     "than %.0f/255 (<= %.0f%%)" % (label, 100 * frac, test_mpi.OUTLIER,
                                                    100 * test_mpi.OUTLIER_FRACTION))
-            if os.environ.get("PSI_PVSERVER_SAVE"):
-                out = os.environ["PSI_PVSERVER_SAVE"]
+            if os.environ.get("PSI_TEST_OUTPUT"):
+                out = os.environ["PSI_TEST_OUTPUT"]
                 np.save(os.path.join(out, "pvserver_%d.npy" % redistribute), img)
-                np.save(os.path.join(out, "serial.npy"), ref)
+                np.save(os.path.join(out, "pvserver_serial.npy"), ref)
         lod_checks(t, label, view, d, img, ref_lod, logpath)
         simple.Delete(d)
         simple.Delete(view)
@@ -314,7 +314,7 @@ def main():
     t0 = time.time()
     display = hold_display()  # noqa: F841 -- held until the process exits
     faulthandler.dump_traceback_later(WATCHDOG, exit=True, file=open("/dev/stderr", "w"))
-    plugin = data.find_plugin()
+    plugin = data.find_plugin(os.environ.get("PSI_PLUGIN"))
     port = free_port()
     tmp = tempfile.mkdtemp(prefix="psi_pvserver_")
     logpath = os.path.join(tmp, "pvserver.log")

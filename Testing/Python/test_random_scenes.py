@@ -38,6 +38,8 @@ from paraview import simple
 
 from psivolume import accuracy, data, testing
 
+DATA_DIR = os.environ.get("PSI_DATA_DIR") or data.DATA_DIR  # the shared datasets
+
 METHODS = ["Average", "Partial Pre-Integration", "Linear Exact", "Average Opacity",
            "Linear Luminance Average Opacity", "Linear Opacity Improved", "Full Pre-Integration"]
 # Mean |difference| from the exact reference (/255), per method. The linear-attenuation methods
@@ -108,9 +110,9 @@ def make_mesh(s):
     half = s.rng.choice([3, 4, 5])
     if kind == "bluntfin":
         files = data.PLOT3D["bluntfin"][:2]
-        if all(os.path.exists(os.path.join(data.SHARED_DATA, f)) for f in files):
-            return data.plot3d("bluntfin")
-        s.words[-1] = "mesh=wavelet (no Blunt Fin data in %s)" % data.SHARED_DATA
+        if all(os.path.exists(os.path.join(DATA_DIR, f)) for f in files):
+            return data.plot3d("bluntfin", DATA_DIR)
+        s.words[-1] = "mesh=wavelet (no Blunt Fin data in %s)" % DATA_DIR
         kind = "wavelet"
     if kind == "mixed":  # hexahedra (voxels) beside tetrahedra, in one unstructured grid
         w = simple.Wavelet(WholeExtent=[-half, half] * 3)
@@ -299,7 +301,8 @@ def check_still(t, s, label, view, rep, shown, still, tf, method):
     if not s.comparable or s.empty:
         return None
     with tempfile.TemporaryDirectory() as work:
-        ref = accuracy.reference_image(accuracy.Capture(view, rep, shown, work), runs=1)[0][0]
+        ref = accuracy.reference_image(accuracy.Capture(view, rep, shown, work),
+                                       os.environ.get("PSI_REFERENCE_RENDER"), runs=1)[0][0]
     mean, worst = accuracy.errors(still, ref)
     if BOUNDS[method] is not None:
         t.check(mean <= BOUNDS[method], "%s: the still frame %.3f/255 from the exact "
@@ -386,7 +389,7 @@ def main():
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="a property of the display set after the seed's settings")
     args = p.parse_args()
-    data.load_plugin(globals())
+    data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
     t = testing.Checks("test_random_scenes")
     for seed in range(args.first, args.first + args.seeds):
         print("--- " + check_scene(t, seed, args.size, args.out, args.set))

@@ -17,13 +17,15 @@ t = testing.Checks("test_render_command")
 script = os.path.join(here, "..", "..", "scripts", "psi_render.py")
 pvpython = sys.executable if "pvpython" in os.path.basename(sys.executable) else "pvpython"
 cases = [("default", [], 320000)]
-exodus = os.path.join(data.SHARED_DATA, "disk_out_ref.ex2")
+exodus = os.path.join(os.environ.get("PSI_DATA_DIR") or data.DATA_DIR, "disk_out_ref.ex2")
 if os.path.exists(exodus):
     cases.append(("exodus multiblock hexahedra", [exodus], None))
 else:
     print("skipping the Exodus case: %s not found" % exodus)
 for name, args, expected in cases:
     out = os.path.join(tempfile.mkdtemp(), "image.png")
+    if os.environ.get("PSI_PLUGIN"):
+        args = args + ["--plugin", os.environ["PSI_PLUGIN"]]
     r = subprocess.run([pvpython, "--force-offscreen-rendering", script] + args +
                        ["--out", out, "--size", "128", "--frames", "2"],
                        capture_output=True, text=True, timeout=300)

@@ -26,8 +26,11 @@ from psivolume import accuracy, data, gui, testing, timing
 
 checks = testing.Checks("report_scene")
 SIZE = 64
+# The test's reference renderer (its ENVIRONMENT; none named: the one beside the plugin).
+REFERENCE = os.environ.get("PSI_REFERENCE_RENDER")
 # The report as fast as it goes: one timing round, no child pvpython.
-FAST = dict(frames=1, budget=0.1, paraview_mappers=[], resample_dims=[])
+FAST = dict(frames=1, budget=0.1, paraview_mappers=[], resample_dims=[],
+            reference_renderer=REFERENCE)
 FAKE_REASON = "fake renderer: the mesh has no cells"
 
 
@@ -128,23 +131,6 @@ def failing_renderer(folder):
     return path
 
 
-class Environment:
-    """os.environ[name] = value while the block runs."""
-
-    def __init__(self, name, value):
-        self.name, self.value = name, value
-
-    def __enter__(self):
-        self.saved = os.environ.get(self.name)
-        os.environ[self.name] = self.value
-
-    def __exit__(self, *exc):
-        if self.saved is None:
-            del os.environ[self.name]
-        else:
-            os.environ[self.name] = self.saved
-
-
 class FailingFrames:
     """timing.frame failing at its `n`-th call while the block runs: the report fails in its
     timing rounds, the camera turned and a method set."""
@@ -210,18 +196,17 @@ def settings_scene(src, array, representation="Psi Volume"):
 def case_settings(work):
     src, array = data.wavelet(3)
     reports = {
-        "gui.run_report": lambda view, rep: lambda: gui.run_report(
-            view, src, os.path.join(work, "gui"), **FAST),
-        "accuracy.report": lambda view, rep: lambda: accuracy.report(
-            view, rep, src, os.path.join(work, "report"), **FAST)}
+        "gui.run_report": lambda view, rep, **o: lambda: gui.run_report(
+            view, src, os.path.join(work, "gui"), **dict(FAST, **o)),
+        "accuracy.report": lambda view, rep, **o: lambda: accuracy.report(
+            view, rep, src, os.path.join(work, "report"), **dict(FAST, **o))}
     for name, report in reports.items():
         view, rep = settings_scene(src, array)
         check_kept(name, view, rep, report(view, rep))
         # the display on 'Volume', its reference renderer failing (after the switch to 'Psi Volume')
         view, rep = settings_scene(src, array, "Volume")
-        failing = Environment("PSI_REFERENCE_RENDER", failing_renderer(work))
         check_kept(name + ", its reference renderer failing", view, rep,
-                   under(failing, report(view, rep)), fails=True)
+                   report(view, rep, reference_renderer=failing_renderer(work)), fails=True)
         # failing in the timing rounds, a method set and the camera turned meanwhile
         view, rep = settings_scene(src, array)
         check_kept(name + ", failing in its timing rounds", view, rep,
@@ -237,7 +222,8 @@ def case_settings(work):
 def reference_of(view, rep, src, work):
     """The exact reference image of the display's scene, as the report renders it."""
     folder = tempfile.mkdtemp(dir=work)
-    images, _ = accuracy.reference_image(accuracy.Capture(view, rep, src, folder), runs=1)
+    images, _ = accuracy.reference_image(accuracy.Capture(view, rep, src, folder), REFERENCE,
+                                         runs=1)
     return images[0]
 
 
@@ -323,23 +309,23 @@ def case_failure(work):
     src, array = data.wavelet(3)
     view, rep = user_scene(src, array)
     cap = accuracy.Capture(view, rep, src, work)
-    with Environment("PSI_REFERENCE_RENDER", failing_renderer(work)):
-        check_one_line(raises(lambda: accuracy.reference_image(cap)), [FAKE_REASON],
-                       "a failing renderer")
-        check_one_line(raises(lambda: gui.run_report(view, src, work, **FAST)), [FAKE_REASON],
-                       "the report, its renderer failing")
+    failing = failing_renderer(work)
+    check_one_line(raises(lambda: accuracy.reference_image(cap, failing)), [FAKE_REASON],
+                   "a failing renderer")
+    check_one_line(raises(lambda: gui.run_report(view, src, work, **dict(
+        FAST, reference_renderer=failing))), [FAKE_REASON], "the report, its renderer failing")
     os.remove(cap.mesh)  # the real renderer, its mesh file gone
-    check_one_line(raises(lambda: accuracy.reference_image(cap)), [cap.mesh],
+    check_one_line(raises(lambda: accuracy.reference_image(cap, REFERENCE)), [cap.mesh],
                    "psi_reference_render without its mesh")
-    with Environment("PSI_REFERENCE_RENDER", os.path.join(work, "absent_renderer")):
-        check_one_line(raises(lambda: accuracy.reference_image(cap)), ["absent_renderer"],
-                       "a renderer that is not there")
+    absent = os.path.join(work, "absent_renderer")
+    check_one_line(raises(lambda: accuracy.reference_image(cap, absent)), ["absent_renderer"],
+                   "a renderer that is not there")
 
 
 CASES = dict(settings=case_settings, names=case_names, cells=case_cells, failure=case_failure)
 
 if __name__ == "__main__":
-    data.load_plugin(globals())
+    data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
     case = sys.argv[1]
     with tempfile.TemporaryDirectory(prefix="psi_report_scene_") as folder:
         CASES[case](folder)

@@ -13,6 +13,7 @@ ParaView's own mappers and the exact reference do.
    negative ones. Checked for each path above and for isosurfaces at the same fraction of the
    range (marching tetrahedra and per fragment).
 """
+import os
 import tempfile
 
 import numpy as np
@@ -21,7 +22,7 @@ from paraview import simple
 from psivolume import accuracy, data, testing
 
 t = testing.Checks("test_scalar_ranges")
-data.load_plugin(globals())
+data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
 src, rt = data.wavelet(4)
 src.UpdatePipeline()
 lo, hi = src.PointData[rt].GetRange()
@@ -100,7 +101,7 @@ def reference(source, d):
     """The exact reference's image of the display's scene (psivolume.accuracy's capture)."""
     with tempfile.TemporaryDirectory() as work:
         cap = accuracy.Capture(view, d, source, work)
-        images, _ = accuracy.reference_image(cap, runs=1)
+        images, _ = accuracy.reference_image(cap, os.environ.get("PSI_REFERENCE_RENDER"), runs=1)
     return images[0]
 
 

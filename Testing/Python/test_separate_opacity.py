@@ -14,13 +14,15 @@ function of the opacity array's values).
    isosurfaces, which 'Auto' then draws by marching tetrahedra.
 4. Cell data and a new time step of both arrays."""
 
+import os
+
 import numpy as np
 from paraview import simple
 
 from psivolume import data, testing
 
 t = testing.Checks("test_separate_opacity")
-data.load_plugin(globals())
+data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
 src, array = data.wavelet(6)
 calc = simple.Calculator(Input=src, ResultArrayName="Other",
                          Function="RTData*0.5 + 40*sin(coordsX)")

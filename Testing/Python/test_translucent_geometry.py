@@ -15,13 +15,15 @@ Testing/Cxx/TestPsiTranslucentGeometry.cxx; here ParaView's view checks the same
    image is the sphere's own image S over the volume's V, S + (1 - A) V, with the sphere's
    coverage A read from its red channel (color 1)."""
 
+import os
+
 import numpy as np
 from paraview import simple
 
 from psivolume import data, testing
 
 t = testing.Checks("test_translucent_geometry")
-data.load_plugin(globals())
+data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
 src, array = data.wavelet(8)
 view = testing.black_view(160)
 d = simple.Show(src, view)

@@ -4,12 +4,14 @@ own array, by component Z it equals coloring by the Z array, and the two differ 
 which a mapper reading component 0 would draw, differs from both). The same for cell data, and
 'Volume' reacts the same way."""
 
+import os
+
 from paraview import simple
 
 from psivolume import data, testing
 
 t = testing.Checks("test_vector_coloring")
-data.load_plugin(globals())
+data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
 src, _ = data.wavelet(8)
 calc = data.with_vector(src)
 mag = simple.Calculator(Input=calc, ResultArrayName="Vmag", Function="mag(V)")

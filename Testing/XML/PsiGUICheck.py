@@ -10,7 +10,7 @@
 # pixels differ by more than LEVEL in some channel. Same-method replays differ by 0 on llvmpipe.
 #
 # Loaded with runpy.run_path (no __pycache__ in the source tree). The test image is written by the
-# project's PNG writer, psivolume.testing.write_png (the test's ENVIRONMENT puts the checkout's
+# project's PNG writer, psivolume.images.write_png (the test's ENVIRONMENT puts the checkout's
 # Python/ on the client's PYTHONPATH). Prints one line per check on the process's own
 # stdout/stderr (the shell widget's output is not on the console): Testing/GUI.cmake counts
 # "PsiGUICheck passed:" lines and fails on "PsiGUICheck FAILED".
@@ -59,7 +59,7 @@ def check(baseline_dir, test_dir, name, test_name=None, level=LEVEL, max_pixels=
     try:
         from vtkmodules.vtkIOImage import vtkPNGReader
 
-        from psivolume.testing import write_png
+        from psivolume.images import write_png
 
         tw, th, test = _pixels(_capture(size))
         os.makedirs(test_dir, exist_ok=True)

@@ -22,7 +22,9 @@ rel=$(psi_deb_relative "${1:?usage: check-deb.sh --fresh [--paraview X] DEB}")
 [ "$(id -u)" -eq 0 ] || { echo "check-deb --fresh: needs root (debootstrap, chroot)" >&2; exit 1; }
 tools=(xvfb xauth)
 cache=/var/cache/psivolume/debs/$suite
-in_system() { bash "$root/scripts/in-system.sh" "$suite" env DEBIAN_FRONTEND=noninteractive "$@"; }
+# lintian has run on this machine (check-deb.sh --fresh): the system gets only the check's tools.
+in_system() { bash "$root/scripts/in-system.sh" "$suite" env DEBIAN_FRONTEND=noninteractive \
+  PSI_DEB_LINTED=1 "$@"; }
 # The installed packages, as their archives are named, with their installed sizes (KiB).
 packages() {
   local f='${db:Status-Abbrev}|${Package}_${Version}_${Architecture}.deb ${Installed-Size}\n'

@@ -13,11 +13,11 @@ psi_deb_suite() {
 }
 
 # psi_deb_in_system SUITE SCRIPT [ARG...]: runs scripts/SCRIPT in SUITE's throwaway system, with
-# the maintainer's name and the build date, when given, passed on.
+# the maintainer's name, the build date and whether lintian has run, when given, passed on.
 psi_deb_in_system() {
   local suite=$1 script=$2 v pass=()
   shift 2
-  for v in DEBFULLNAME DEBEMAIL PSI_DEB_MAINTAINER SOURCE_DATE_EPOCH; do
+  for v in DEBFULLNAME DEBEMAIL PSI_DEB_MAINTAINER SOURCE_DATE_EPOCH PSI_DEB_LINTED; do
     [ -z "${!v:-}" ] || pass+=("$v=${!v}")
   done
   bash "$root/scripts/in-system.sh" --throwaway "$suite" env "${pass[@]}" bash "scripts/$script" "$@"

@@ -1,6 +1,6 @@
 """Ends every process a test run started, found by a tag in its environment.
 
-scripts/test.sh starts each test attempt with PSI_TEST_RUN=<run>:<attempt> in its environment,
+scripts/test.sh starts each test (all its attempts) with PSI_TEST_RUN=<run>:<n> in its environment,
 which every process the test starts inherits, wherever it goes: a child that makes its own
 session or process group (test_pvserver.py's server and reaper, Open MPI's singleton daemon),
 each MPI rank (Open MPI puts every rank in a process group of its own), and an orphan whose
