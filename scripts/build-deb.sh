@@ -31,7 +31,7 @@ umask 022  # the package's files and folders as Debian wants them, whatever the 
 
 missing=$(bash "$root/scripts/setup-deps.sh" --missing)
 # the packaging's own commands, and the packages that have them
-for tool in cpack:cmake dpkg-shlibdeps:dpkg-dev dpkg-buildflags:dpkg-dev; do
+for tool in cpack:cmake dpkg-shlibdeps:dpkg-dev dpkg-buildflags:dpkg-dev file:file; do
   command -v "${tool%%:*}" >/dev/null || missing+=$'\n'"${tool#*:}"
 done
 missing=$(printf '%s\n' "$missing" | sed '/^$/d' | sort -u)
