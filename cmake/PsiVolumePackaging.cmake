@@ -126,6 +126,11 @@ file(WRITE "${_psi_deb}/copyright"
 # lintian's overrides, each with its reason (scripts/check-deb.sh fails on any other warning or
 # error); none when the package has nothing to override.
 set(_psi_overrides "")
+if (_psi_codename STREQUAL "unstable")
+  string(APPEND _psi_overrides
+    "# Built from this repository for unstable, not uploaded to Debian: no bug (ITP) to close.\n"
+    "paraview-psivolume: initial-upload-closes-no-bugs *\n")
+endif ()
 if (PSI_DEB_MAINTAINER MATCHES "<psivolume@localhost>$")
   string(APPEND _psi_overrides
     "# Built where no DEBEMAIL was set: the maintainer is the local placeholder\n"

@@ -30,10 +30,11 @@ out=${PSI_DEB_OUT:-$root/dist}
 umask 022  # the package's files and folders as Debian wants them, whatever the caller's umask
 
 missing=$(bash "$root/scripts/setup-deps.sh" --missing)
-for tool in cpack dpkg-shlibdeps dpkg-buildflags; do
-  command -v "$tool" >/dev/null || missing+=$'\n'"(the command $tool)"
+# the packaging's own commands, and the packages that have them
+for tool in cpack:cmake dpkg-shlibdeps:dpkg-dev dpkg-buildflags:dpkg-dev file:file; do
+  command -v "${tool%%:*}" >/dev/null || missing+=$'\n'"${tool#*:}"
 done
-missing=$(printf '%s\n' "$missing" | sed '/^$/d')
+missing=$(printf '%s\n' "$missing" | sed '/^$/d' | sort -u)
 if [ -n "$missing" ]; then
   echo "build-deb: this Debian lacks what the build needs; install it (as root) with" >&2
   echo "  sudo bash scripts/setup-deps.sh" >&2

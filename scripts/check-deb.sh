@@ -9,6 +9,9 @@
 #   bash scripts/check-deb.sh --fresh --paraview 6.1 dist/paraview-psivolume_0.1-1_amd64.deb
 # (--fresh: in a brand-new minimal Debian system made for the check and deleted after it, apt
 # installing ParaView and all it needs from the archive: scripts/lib/check-deb-fresh.sh.)
+#   bash scripts/check-deb.sh --piuparts --paraview 5.13 dist/paraview-psivolume_0.1-1~deb13_amd64.deb
+# (--piuparts: piuparts itself, on a copy of that version's cached Debian system, the plugin run in
+# pvpython and pvbatch after the installation: scripts/lib/check-deb-piuparts.sh.)
 # - lintian: no error or warning that the package does not override (its overrides file);
 # - no file of the package belongs to an installed package (dpkg -S), and a fresh system's apt
 #   resolves every dependency from the archive (simulated with an empty dpkg status);
@@ -39,6 +42,11 @@ lint() {
     "($(dpkg-deb --fsys-tarfile "$1" | tar -xOf - ./usr/share/lintian/overrides/paraview-psivolume 2>/dev/null |
       grep -c '^[^#]') overridden, each with its reason)"
 }
+if [ "${1:-}" = --piuparts ]; then
+  shift
+  lint "${@: -1}"
+  exec bash "$root/scripts/lib/check-deb-piuparts.sh" "$@"
+fi
 if [ "${1:-}" = --fresh ]; then
   shift
   lint "${@: -1}"
@@ -64,15 +72,15 @@ xvfb=(xvfb-run -a -n "${PSI_XVFB_DISPLAY:-99}" -s "-screen 0 1280x1024x24 -nores
 script="$root/Testing/Python/test_installed.py"
 [ "${PSI_DEB_LINTED:-}" = 1 ] || lint "$deb"
 work=$(mktemp -d)
-trap 'psi_apt "" purge -y -qq paraview-psivolume >/dev/null 2>&1 || true; rm -rf "$work"' EXIT
+trap 'dpkg --purge paraview-psivolume >/dev/null 2>&1 || true; rm -rf "$work"' EXIT
 cd "$work"
 # The files and folders a package may leave or change, with what a change shows in: type, mode,
-# size, link target (apt's, dpkg's and its hooks' own state, logs, caches, temporary files, byte code
-# aside, as piuparts leaves them aside).
+# size (not a folder's: it depends on the file system), link target (apt's, dpkg's and its hooks'
+# own state, logs, caches, temporary files, byte code aside, as piuparts leaves them aside).
 snapshot() {
   find /etc /usr /opt /srv /var/lib -xdev \( -path /var/lib/apt -o -path /var/lib/dpkg \
-    -o -path /var/lib/systemd -o -path /var/lib/adequate -o -name __pycache__ \) -prune -o ! -name '*.pyc' \
-    -printf '%p %y %m %s %l\n' 2>/dev/null | sort
+    -o -path /var/lib/systemd -o -path /var/lib/adequate -o -name __pycache__ \) -prune \
+    -o -type d -printf '%p d %m\n' -o ! -name '*.pyc' -printf '%p %y %m %s %l\n' 2>/dev/null | sort
 }
 packages() { dpkg-query -W -f='${db:Status-Abbrev}${Package}\n' | sed -n 's/^ii *//p' | sort; }
 dpkg-deb -c "$deb" | awk '{print $6}' | sed 's|^\./|/|; s|/$||' | grep . | sort > contents.txt
@@ -128,7 +136,8 @@ echo "ok      Auto Load ticked in Tools > Manage Plugins: at the next start $(gr
 psi_apt "" remove -y -qq paraview-psivolume >/dev/null
 left=$(while read -r f; do [ -e "$f" ] || [ -L "$f" ] && echo "$f"; done < files.txt || true)
 [ -z "$left" ] || { echo "$left"; echo "FAILED: files left after apt-get remove"; exit 1; }
-psi_apt "" purge -y -qq paraview-psivolume >/dev/null
+# (dpkg: apt refuses to purge a package without conffiles that the removal has already forgotten)
+dpkg --purge paraview-psivolume >/dev/null
 [ ! -s brought.txt ] || psi_apt "" purge -y -qq $(cat brought.txt) >/dev/null
 ! dpkg-query -W -f='${db:Status-Abbrev}' paraview-psivolume 2>/dev/null | grep -q . \
   || { echo "FAILED: dpkg still knows paraview-psivolume after the purge"; exit 1; }
