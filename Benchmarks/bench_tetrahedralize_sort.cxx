@@ -114,7 +114,7 @@ void Row(const char* name, vtkDataSet* input, int mode)
 
 int main(int argc, char* argv[])
 {
-  const std::string dir = argc > 1 ? argv[1] : PSI_BENCH_DATA_DIR;
+  const std::string dir = argc > 1 ? argv[1] : PSI_DATA_DIR;
   std::printf("vtkSMPTools backend %s, %d threads\n", vtkSMPTools::GetBackend(),
     vtkSMPTools::GetEstimatedNumberOfThreads());
   std::printf("| %-28s | %9s | %9s | %10s | %12s | %13s | %10s | %11s |\n", "mesh", "tets",

@@ -10,6 +10,8 @@
   - the modules' dependencies along VTK's line: Core, Rendering and Filters depend on no ParaView
     module (Rendering renders from plain VTK), Core on neither Rendering nor Representations, and
     Rendering and Filters not on Representations;
+  - the shipped Python package (Python/psivolume) reads no environment variable, but for
+    psivolume.process, which passes the environment on to child processes;
   - every XML file of the source (server-manager XML, GUI test scripts, templates) is well-formed:
     ParaView's readers of test scripts stop, or crash, where Python's parser reports the error.
 Function bodies are found by brace matching on the source with comments and strings removed:
@@ -114,6 +116,14 @@ def main():
         for name in names:
             if name in text:
                 errors.append("%s/vtk.module depends on %s" % (module, name.rstrip(":")))
+    # the shipped Python package reads no environment variable (arguments instead); the one
+    # exception, psivolume.process, copies the environment for the child processes it starts
+    for path in sorted((ROOT / "Python" / "psivolume").glob("*.py")):
+        if path.name == "process.py":
+            continue
+        for number, line in enumerate(path.read_text().splitlines(), 1):
+            if re.search(r"\bos\.environ\b|\bgetenv\b", line.split("#")[0]):
+                errors.append("%s:%d: reads the environment" % (path.relative_to(ROOT), number))
     for e in errors:
         print(e)
     print("structure: %d violation(s)" % len(errors))
