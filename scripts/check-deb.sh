@@ -9,9 +9,6 @@
 #   bash scripts/check-deb.sh --fresh --paraview 6.1 dist/paraview-psivolume_0.1-1_amd64.deb
 # (--fresh: in a brand-new minimal Debian system made for the check and deleted after it, apt
 # installing ParaView and all it needs from the archive: scripts/lib/check-deb-fresh.sh.)
-#   bash scripts/check-deb.sh --piuparts --paraview 5.13 dist/paraview-psivolume_0.1-1~deb13_amd64.deb
-# (--piuparts: piuparts itself, on a copy of that version's cached Debian system, the plugin run in
-# pvpython and pvbatch after the installation: scripts/lib/check-deb-piuparts.sh.)
 # - lintian: no error or warning that the package does not override (its overrides file);
 # - no file of the package belongs to an installed package (dpkg -S), and a fresh system's apt
 #   resolves every dependency from the archive (simulated with an empty dpkg status);
@@ -42,11 +39,6 @@ lint() {
     "($(dpkg-deb --fsys-tarfile "$1" | tar -xOf - ./usr/share/lintian/overrides/paraview-psivolume 2>/dev/null |
       grep -c '^[^#]') overridden, each with its reason)"
 }
-if [ "${1:-}" = --piuparts ]; then
-  shift
-  lint "${@: -1}"
-  exec bash "$root/scripts/lib/check-deb-piuparts.sh" "$@"
-fi
 if [ "${1:-}" = --fresh ]; then
   shift
   lint "${@: -1}"
