@@ -16,7 +16,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 if [ "${1:-}" = --paraview ]; then
   source "$root/scripts/lib/deb-elsewhere.sh"
-  suite=$(psi_deb_suite "${2:?--paraview takes 5.11, 5.13 or 6.1}")
+  suite=$(suite_elsewhere "${2:?--paraview takes 5.11, 5.13 or 6.1}")
   shift 2
   if [ -n "$suite" ]; then
     deb=$(psi_deb_in_system "$suite" build-deb.sh "$@")
@@ -41,18 +41,16 @@ if [ -n "$missing" ]; then
   echo "which installs these packages: $(echo $missing)" >&2
   exit 1
 fi
-# Debian 13's and unstable's ParaView CMake files need mending: a mended copy in the build tree.
-mapfile -t hints < <(bash "$root/scripts/lib/mend-paraview-cmake.sh" "$build/paraview-cmake")
 # Debian's build flags, as dpkg-buildpackage sets them (hardening: all of it), with CMake's
 # Release optimization in place of their -O2 and no debugging information (stripped anyway).
 export DEB_BUILD_MAINT_OPTIONS=hardening=+all
 export DEB_CFLAGS_MAINT_STRIP="-g -O2" DEB_CXXFLAGS_MAINT_STRIP="-g -O2"
 flag() { (cd "$root" && dpkg-buildflags --get "$1"); }
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=/usr \
-  -DBUILD_TESTING=OFF -DPSI_BUILD_BENCHMARKS=OFF -DPSI_DEB_PACKAGE=ON "${hints[@]}" \
+bash "$root/scripts/lib/configure.sh" "$build" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_INSTALL_PREFIX=/usr -DBUILD_TESTING=OFF -DPSI_BUILD_BENCHMARKS=OFF -DPSI_DEB_PACKAGE=ON \
   -DCMAKE_C_FLAGS="$(flag CPPFLAGS) $(flag CFLAGS)" -DCMAKE_CXX_FLAGS="$(flag CPPFLAGS) $(flag CXXFLAGS)" \
   -DCMAKE_EXE_LINKER_FLAGS="$(flag LDFLAGS)" -DCMAKE_SHARED_LINKER_FLAGS="$(flag LDFLAGS)" \
-  -DCMAKE_MODULE_LINKER_FLAGS="$(flag LDFLAGS)" >/dev/null
+  -DCMAKE_MODULE_LINKER_FLAGS="$(flag LDFLAGS)"
 cmake --build "$build" -j"$(nproc)" >&2
 rm -rf "$build/package"
 (cd "$build" && cpack -G DEB) >&2

@@ -5,6 +5,5 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${PSI_BUILD_DIR:-$root/build}
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release \
-  ${PSI_DATA_DIR:+-DPSI_DATA_DIR="$PSI_DATA_DIR"} >/dev/null
+bash "$root/scripts/lib/configure.sh" "$build" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$build" -j"$(nproc)"

@@ -46,7 +46,7 @@ if [ "${1:-}" = --fresh ]; then
 fi
 if [ "${1:-}" = --paraview ]; then
   source "$root/scripts/lib/deb-elsewhere.sh"
-  suite=$(psi_deb_suite "${2:?--paraview takes 5.11, 5.13 or 6.1}")
+  suite=$(suite_elsewhere "${2:?--paraview takes 5.11, 5.13 or 6.1}")
   shift 2
   if [ -n "$suite" ]; then
     rel=$(psi_deb_relative "${1:?usage: check-deb.sh [--paraview X] DEB}")
@@ -60,7 +60,7 @@ deb=$(realpath "${1:?usage: check-deb.sh [--paraview X] DEB}")
 source "$root/scripts/lib/apt.sh"  # psi_apt: one apt-get at a time, waiting for dpkg's lock
 # pvpython 5.13 and later lose buffered output when a script leaves through os._exit into a pipe.
 export PYTHONUNBUFFERED=1 DEBIAN_FRONTEND=noninteractive
-xvfb=(xvfb-run -a -n "${PSI_XVFB_DISPLAY:-99}" -s "-screen 0 1280x1024x24 -noreset")
+xvfb=(bash "$root/scripts/lib/with-xvfb.sh" --new)
 script="$root/Testing/Python/test_installed.py"
 [ "${PSI_DEB_LINTED:-}" = 1 ] || lint "$deb"
 work=$(mktemp -d)

@@ -8,12 +8,10 @@
 # --include: the packages added to minbase, comma-separated (default git,ca-certificates; empty:
 # the bare minbase, as scripts/check-deb.sh --fresh makes it). --cache-dir: a directory
 # debootstrap takes the packages from and keeps those it downloads in (its --cache-dir).
-# (PSI_SYSTEM_INCLUDE and PSI_DEB_CACHE, the same in the environment, are still read when the
-# option is not given.)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-include=${PSI_SYSTEM_INCLUDE-git,ca-certificates}
-deb_cache=${PSI_DEB_CACHE:-}
+include=git,ca-certificates
+deb_cache=""
 while [ "$#" -gt 1 ]; do
   case "$1" in
     --include) include=$2; shift 2 ;;

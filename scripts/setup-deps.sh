@@ -38,7 +38,7 @@ apt_update() {
 # The ParaView this Debian ships: installed, else the candidate (after an update on a fresh system).
 paraview_series() {
   local v
-  v=$(dpkg-query -W -f='${Version}' paraview 2>/dev/null || true)
+  v=$(installed_paraview_version)
   if [ -z "$v" ]; then
     v=$(apt-cache policy paraview 2>/dev/null | sed -n 's/^ *Candidate: *//p')
     if [ "$only_list" = 1 ] && { [ -z "$v" ] || [ "$v" = "(none)" ]; }; then

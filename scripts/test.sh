@@ -45,8 +45,8 @@ bash "$root/scripts/setup-deps.sh"
 build=${PSI_BUILD_DIR:-$root/build}
 if [ -n "$tsan" ]; then
   build=$build-tsan
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPSI_SANITIZE_THREAD=ON \
-    -DPSI_BUILD_BENCHMARKS=OFF ${PSI_DATA_DIR:+-DPSI_DATA_DIR="$PSI_DATA_DIR"} >/dev/null
+  bash "$root/scripts/lib/configure.sh" "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DPSI_SANITIZE_THREAD=ON -DPSI_BUILD_BENCHMARKS=OFF
   cmake --build "$build" -j"$(nproc)" --target PsiVolume TestLODImage
   only=${only:-'^(PsiRepresentations\.LODImage|PsiPython\.(interaction|lod_inputs))$'}
 else

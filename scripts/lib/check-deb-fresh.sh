@@ -43,11 +43,11 @@ tmp=$(mktemp -d "${TMPDIR:-/var/tmp}/psi-fresh.XXXXXX")
 # namespace; --one-file-system leaves alone any that a killed debootstrap left behind.
 trap '[ -z "$archives" ] || link "$archives" "$cache"; rm -rf --one-file-system "$tmp"' EXIT
 trap 'exit 130' INT TERM HUP
-export PSI_SYSTEMS_DIR=$tmp PSI_SYSTEM_INCLUDE="" PSI_DEB_CACHE=$cache
+export PSI_SYSTEMS_DIR=$tmp
 start=$SECONDS
 mkdir -p "$cache"
 cache_before=$(cached)
-sys=$(bash "$root/scripts/debian-system.sh" "$suite")
+sys=$(bash "$root/scripts/debian-system.sh" --include "" --cache-dir "$cache" "$suite")
 archives=$sys/var/cache/apt/archives
 packages > "$tmp/minbase.txt"
 echo "fresh   Debian $suite, minbase: $(wc -l < "$tmp/minbase.txt") packages, $((SECONDS - start)) s"

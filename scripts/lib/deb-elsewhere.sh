@@ -4,14 +4,6 @@
 # The checkout is /psi/src in there; paths are given and printed relative to it.
 source "$root/scripts/lib/paraview-versions.sh"
 
-# psi_deb_suite VERSION: the suite to run in, empty when VERSION is this Debian's own ParaView.
-psi_deb_suite() {
-  if [ "$1" = "$(system_paraview_series)" ]; then
-    return 0
-  fi
-  suite_of "$1"
-}
-
 # psi_deb_in_system SUITE SCRIPT [ARG...]: runs scripts/SCRIPT in SUITE's throwaway system, with
 # the maintainer's name, the build date and whether lintian has run, when given, passed on.
 psi_deb_in_system() {
