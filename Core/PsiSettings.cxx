@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 #include <type_traits>
+#include <utility>
 
 namespace psi
 {
@@ -87,6 +88,15 @@ std::string Clamp(Struct& s, Setting id, double value)
   return std::string("'Psi Volume' ") + info.Name + " = " + Number(value) +
     (whole ? " is not one of its values (" : " is outside its range (") + Number(info.Min) +
     " to " + Number(info.Max) + "): " + Number(ValueOf(s, id)) + " is used.";
+}
+
+// The clamp, and whether it changed the value (Change).
+template <typename Struct>
+SettingChange ChangeOf(Struct& s, Setting id, double value)
+{
+  const double before = ValueOf(s, id);
+  std::string warning = Clamp(s, id, value);
+  return { ValueOf(s, id) != before, std::move(warning) };
 }
 } // namespace
 
@@ -173,6 +183,16 @@ void SetValue(InteractionSettings& s, Setting id, double value)
 std::string SetClamped(Settings& s, Setting id, double value)
 {
   return Clamp(s, id, value);
+}
+
+SettingChange Change(Settings& s, Setting id, double value)
+{
+  return ChangeOf(s, id, value);
+}
+
+SettingChange Change(InteractionSettings& s, Setting id, double value)
+{
+  return ChangeOf(s, id, value);
 }
 
 std::string SetClamped(InteractionSettings& s, Setting id, double value)

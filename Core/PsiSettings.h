@@ -172,6 +172,19 @@ PSIVOLUMECORE_EXPORT std::string SetClamped(Settings& s, Setting id, double valu
 PSIVOLUMECORE_EXPORT std::string SetClamped(InteractionSettings& s, Setting id, double value);
 ///@}
 
+/// What a setter did: whether the value changed, and SetClamped's warning.
+struct SettingChange
+{
+  bool Changed = false;
+  std::string Warning;
+};
+///@{
+/// SetClamped, telling whether the value changed: what a setter needs to warn and to mark itself
+/// modified.
+PSIVOLUMECORE_EXPORT SettingChange Change(Settings& s, Setting id, double value);
+PSIVOLUMECORE_EXPORT SettingChange Change(InteractionSettings& s, Setting id, double value);
+///@}
+
 ///@{
 /// Where each 'Auto' is resolved.
 /// The compute projector only when asked for: 'Auto' is the geometry shader, measured the faster

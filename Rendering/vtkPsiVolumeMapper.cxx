@@ -67,13 +67,12 @@ void vtkPsiVolumeMapper::SetSettings(const psi::Settings& settings)
 // The one clamp of a ranged setting, with its one warning (psi::SetClamped).
 void vtkPsiVolumeMapper::SetRanged(psi::Setting id, double value)
 {
-  const double before = psi::ValueOf(this->Settings, id);
-  const std::string warning = psi::SetClamped(this->Settings, id, value);
-  if (!warning.empty())
+  const psi::SettingChange change = psi::Change(this->Settings, id, value);
+  if (!change.Warning.empty())
   {
-    vtkWarningMacro(<< warning);
+    vtkWarningMacro(<< change.Warning);
   }
-  if (psi::ValueOf(this->Settings, id) != before)
+  if (change.Changed)
   {
     if (id == psi::Setting::IsosurfaceOpacity)
     {

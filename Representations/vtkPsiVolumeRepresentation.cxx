@@ -146,13 +146,12 @@ PSI_INTERACTION_SETTINGS(PSI_INTERACTION_ENUM, PSI_INTERACTION_NUMBER, PSI_INTER
 // The one clamp of an interaction setting, with its one warning (psi::SetClamped).
 void vtkPsiVolumeRepresentation::SetInteraction(psi::Setting id, double value)
 {
-  const double before = psi::ValueOf(this->Interaction, id);
-  const std::string warning = psi::SetClamped(this->Interaction, id, value);
-  if (!warning.empty())
+  const psi::SettingChange change = psi::Change(this->Interaction, id, value);
+  if (!change.Warning.empty())
   {
-    vtkWarningMacro(<< warning);
+    vtkWarningMacro(<< change.Warning);
   }
-  if (psi::ValueOf(this->Interaction, id) != before)
+  if (change.Changed)
   {
     this->Modified();
   }

@@ -142,6 +142,15 @@ void CheckClamp()
   PSI_CHECK(!psi::SetClamped(s, psi::Setting::SortMethod, 0.5).empty() &&
       s.SortMethod == psi::Sorts::Centroid,
     "an integer setting given a fraction");
+  // what a setter learns: whether to warn, and whether to mark itself modified
+  psi::InteractionSettings interaction;
+  psi::SettingChange c = psi::Change(interaction, psi::Setting::InteractiveBudget, 0.1);
+  PSI_CHECK(!c.Changed && c.Warning.empty(), "the default set again: no change, no warning");
+  c = psi::Change(interaction, psi::Setting::InteractiveBudget, 100);
+  PSI_CHECK(c.Changed && !c.Warning.empty() && interaction.InteractiveBudget == 60,
+    "out of range: clamped, changed, warned");
+  c = psi::Change(interaction, psi::Setting::InteractiveBudget, 100);
+  PSI_CHECK(!c.Changed && !c.Warning.empty(), "the same clamp again: warned, unchanged");
   PSI_CHECK(psi::SettingTable().size() == static_cast<size_t>(psi::Setting::Count),
     "one row per setting");
   for (size_t i = 0; i < psi::SettingTable().size(); ++i)
