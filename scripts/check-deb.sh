@@ -102,6 +102,9 @@ owners=$(xargs -r dpkg-query -S < files.txt | grep -v '^paraview-psivolume: ' ||
 [ -z "$owners" ] || { echo "$owners"; echo "FAILED: files of the package claimed by others too"; exit 1; }
 env -u PYTHONPATH "${xvfb[@]}" pvpython --force-offscreen-rendering "$script" --by-name --prefix /usr
 env -u PYTHONPATH "${xvfb[@]}" pvbatch --force-offscreen-rendering "$script" --by-name --prefix /usr
+# The installed mapper from plain VTK Python (Debian's python3 and vtkmodules, no ParaView).
+env -u PYTHONPATH "${xvfb[@]}" /usr/bin/python3 "$root/Testing/Python/test_plain_vtk.py" \
+  /usr/lib/python3/dist-packages | sed 's/^/plain VTK: /'
 # The GUI, in a throwaway home (root's ParaView settings stay as they were): the plugin
 # manager's list has PsiVolume, not loaded; Tools > Manage Plugins, its 'Auto Load' ticked in the
 # dialog by a test script (scripts/lib/autoload-plugin.xml), then at the next start it is loaded
