@@ -5,7 +5,7 @@
 #define PsiShaderFeatures_h
 
 #include "PsiIntegrationMethods.h"
-#include "PsiSettings.h" // psi::MaxAdaptiveNodes
+#include "PsiSettings.h" // the defaults
 #include "PsiVolumeCoreModule.h"
 
 #include <string>
@@ -18,8 +18,9 @@ namespace psi
 /// The features one shader program is composed from.
 struct PSIVOLUMECORE_EXPORT ShaderFeatures
 {
-  /// Integration method, 0..6 (the numbers of psi::Method, Core/PsiIntegrationMethods.h).
-  int Method = static_cast<int>(psi::Method::PartialPreIntegration);
+  /// Integration method, 0..6 (the numbers of psi::Method, Core/PsiIntegrationMethods.h); the
+  /// settings' default.
+  int Method = static_cast<int>(Settings().IntegrationMethod);
   /// Perspective: exact segments from the front point and the back plane (PsiExactSegments*.glsl)
   /// instead of the screen-linear (s_f, s_b, l) triple (PsiHAPTSegments*.glsl).
   bool ExactSegments = false;
