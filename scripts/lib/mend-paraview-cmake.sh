@@ -30,18 +30,24 @@ for dir in /usr/lib/*/cmake/paraview-* /usr/lib/*/cmake/vtk-*; do
   rm -rf "$copy"
   mkdir -p "$shim"
   cp -a "$dir" "$copy"
-  # Each file's prefix from the original's location; relative paths out of the directory too.
+  # Each file's prefix from the original's location (the targets' _IMPORT_PREFIX, the module
+  # properties' _vtk_module_import_prefix, from which the wrappers' hierarchy files are found);
+  # relative paths out of the directory too.
   find "$copy" -name '*.cmake' | while IFS= read -r f; do
     real=$(dirname "$dir/${f#"$copy"/}")
     sed -i -e "s|get_filename_component(_IMPORT_PREFIX \"\${CMAKE_CURRENT_LIST_FILE}\" PATH)|set(_IMPORT_PREFIX \"$real\")|" \
-      -e "s|\"\${CMAKE_CURRENT_LIST_DIR}/\.\./|\"$real/../|g" "$f"
+      -e "s|\"\${CMAKE_CURRENT_LIST_DIR}/\.\./|\"$real/../|g" \
+      -e "s|set(_vtk_module_import_prefix \"\${CMAKE_CURRENT_LIST_DIR}\")|set(_vtk_module_import_prefix \"$real\")|" \
+      "$f"
   done
   while read -r named installed; do
     grep -rlF --include='*-targets-*.cmake' "\"\${_IMPORT_PREFIX}${named#/usr}\"" "$copy" |
       xargs -r sed -i "s|\"\${_IMPORT_PREFIX}${named#/usr}\"|\"$installed\"|g"
   done <<< "$pairs"
   case "$name" in
-    paraview-*) echo "-DParaView_DIR=$copy" ;;
+    # ParaView's own VTK (5.13) is found in its vtk/ folder: named too, so that a build tree
+    # configured before (VTK_DIR in its cache) reads the mended copy as well
+    paraview-*) echo "-DParaView_DIR=$copy"; [ ! -d "$copy/vtk" ] || echo "-DVTK_DIR=$copy/vtk" ;;
     vtk-*) echo "-DVTK_DIR=$copy" ;;
   esac
   echo "[mend] Debian's $name CMake files name $(wc -l <<< "$pairs") Python modules without their" \
