@@ -41,8 +41,9 @@ PsiFramePlan PlanFrame(const psi::Settings& s, const PsiSceneFacts& facts)
 {
   PsiFramePlan plan;
   psi::ShaderFeatures& f = plan.Features;
-  f.Method = static_cast<int>(DrawnMethod(s, facts));
-  plan.MethodReplaced = DrawnMethod(s, facts) != s.IntegrationMethod;
+  const psi::Method drawn = DrawnMethod(s, facts);
+  f.Method = static_cast<int>(drawn);
+  plan.MethodReplaced = drawn != s.IntegrationMethod;
   f.ExactSegments = !facts.Parallel && s.ExactPerspectiveSegments;
   // within depth peeling, the silhouettes' exact segments are clipped to the pass's intervals
   f.DepthPeel = facts.DepthPeeled;
@@ -72,8 +73,9 @@ PsiFramePlan PlanFrame(const psi::Settings& s, const PsiSceneFacts& facts)
     f.EarlyDiscard = f.EarlyDiscard && !f.IsoTriangles;
   }
   plan.Tables.OpacityPrefix = f.EarlyDiscard;
-  plan.Tables.PartialPreIntegrationTable = psi::GetIntegrationMethodInfo(f.Method).NeedsPsiTable;
-  plan.Tables.PreIntegration = psi::GetIntegrationMethodInfo(f.Method).NeedsPreIntegrationTable;
+  const psi::IntegrationMethodInfo& method = psi::GetIntegrationMethodInfo(drawn);
+  plan.Tables.PartialPreIntegrationTable = method.NeedsPsiTable;
+  plan.Tables.PreIntegration = method.NeedsPreIntegrationTable;
   plan.Tables.AdaptiveNodes = f.Adaptive;
   plan.Tables.Gradients = f.IsoSmooth;
   plan.SceneDepth = facts.SceneOpaque || f.NearClip || f.OpaqueClip;

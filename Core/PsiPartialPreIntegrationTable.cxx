@@ -2,9 +2,9 @@
 
 #include "PsiIntegration.h"
 #include "PsiParallel.h"
+#include "PsiStopwatch.h"
 
 #include <algorithm>
-#include "PsiStopwatch.h"
 #include <cmath>
 #include <limits>
 

@@ -3,10 +3,10 @@
 #include "PsiIntegration.h"
 #include "PsiParallel.h"
 #include "PsiPartialPreIntegrationTable.h"
+#include "PsiStopwatch.h"
 #include "PsiTransferFunctionTable.h"
 
 #include <algorithm>
-#include "PsiStopwatch.h"
 #include <cmath>
 #include <vector>
 

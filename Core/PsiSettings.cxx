@@ -67,7 +67,7 @@ std::string Number(double v)
   return s.str();
 }
 
-// The clamp of one member (SetClamped): `member` is the setting's member in its struct.
+// The clamp of setting `id` in `s`, the struct of its kind (SetClamped).
 template <typename Struct>
 std::string Clamp(Struct& s, Setting id, double value)
 {
@@ -185,6 +185,11 @@ std::string SetClamped(Settings& s, Setting id, double value)
   return Clamp(s, id, value);
 }
 
+std::string SetClamped(InteractionSettings& s, Setting id, double value)
+{
+  return Clamp(s, id, value);
+}
+
 SettingChange Change(Settings& s, Setting id, double value)
 {
   return ChangeOf(s, id, value);
@@ -193,11 +198,6 @@ SettingChange Change(Settings& s, Setting id, double value)
 SettingChange Change(InteractionSettings& s, Setting id, double value)
 {
   return ChangeOf(s, id, value);
-}
-
-std::string SetClamped(InteractionSettings& s, Setting id, double value)
-{
-  return Clamp(s, id, value);
 }
 
 bool UsesComputeProjector(const Settings& s)

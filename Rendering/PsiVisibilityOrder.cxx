@@ -1,13 +1,13 @@
 #include "PsiVisibilityOrder.h"
 
 #include "PsiSettings.h"
+#include "PsiStopwatch.h"
 
 #include "vtkMatrix4x4.h"
 #include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 #include <algorithm>
 #include <array>
-#include "PsiStopwatch.h"
 #include <utility>
 
 namespace

@@ -13,6 +13,7 @@
 #include "PsiSceneQueries.h"
 #include "PsiShaderComposer.h"
 #include "PsiShaderParameters.h"
+#include "PsiStopwatch.h"
 #include "PsiTransferFunctionAnalysis.h"
 #include "PsiTransferFunctionTable.h"
 #include "PsiLookupTextures.h"
@@ -32,13 +33,9 @@
 
 #include <algorithm>
 #include <array>
-#include "PsiStopwatch.h"
 #include <string>
 #include <vector>
 
-namespace
-{
-} // namespace
 
 vtkStandardNewMacro(vtkPsiVolumeMapper);
 
@@ -64,7 +61,7 @@ void vtkPsiVolumeMapper::SetSettings(const psi::Settings& settings)
   this->SetIsosurfaceOpacities(settings.IsosurfaceOpacities);
 }
 
-// The one clamp of a ranged setting, with its one warning (psi::SetClamped).
+// The one clamp of a setting, with its one warning (psi::Change).
 void vtkPsiVolumeMapper::SetRanged(psi::Setting id, double value)
 {
   const psi::SettingChange change = psi::Change(this->Settings, id, value);

@@ -1,10 +1,11 @@
 #include "PsiLevelOfDetail.h"
 
+#include "PsiStopwatch.h"
+
 #include "vtkDataSet.h"
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkObjectFactory.h"
 
-#include "PsiStopwatch.h"
 #include <exception>
 #include <utility>
 

@@ -47,13 +47,19 @@ def mesh():
     return tets.GetOutput()
 
 
+def opacity_ramp(opacity, rng, top):
+    """The opacity function: 0 at the scalar range's low end, `top` at its high end."""
+    opacity.RemoveAllPoints()
+    opacity.AddPoint(rng[0], 0.0)
+    opacity.AddPoint(rng[1], top)
+
+
 def volume_property(rng):
     color = vtkColorTransferFunction()
     color.AddRGBPoint(rng[0], 0.2, 0.3, 1.0)
     color.AddRGBPoint(rng[1], 1.0, 0.4, 0.1)
     opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(rng[0], 0.0)
-    opacity.AddPoint(rng[1], 0.6)
+    opacity_ramp(opacity, rng, 0.6)
     prop = vtkVolumeProperty()
     prop.SetColor(color)
     prop.SetScalarOpacity(opacity)
@@ -81,7 +87,8 @@ def paraview_libraries():
 
 def main():
     data = mesh()
-    prop, opacity = volume_property(data.GetPointData().GetScalars().GetRange())
+    rng = data.GetPointData().GetScalars().GetRange()
+    prop, opacity = volume_property(rng)
     renderer = vtkRenderer()
     renderer.SetBackground(0, 0, 0)
     window = vtkRenderWindow()
@@ -120,14 +127,9 @@ def main():
           % mean)
 
     volume.SetMapper(psi)
-    opacity.RemoveAllPoints()
-    opacity.AddPoint(0.0, 0.0)
-    opacity.AddPoint(1.0, 0.0)
+    opacity_ramp(opacity, rng, 0.0)
     check(grab(window).max() == 0, "a zero opacity function draws the background only")
-    opacity.RemoveAllPoints()
-    rng = data.GetPointData().GetScalars().GetRange()
-    opacity.AddPoint(rng[0], 0.0)
-    opacity.AddPoint(rng[1], 0.6)
+    opacity_ramp(opacity, rng, 0.6)
     check(abs(grab(window) - ours).max() == 0, "the opacity restored draws the first image again")
 
     loaded = [name for name in sys.modules if name.split(".")[0] in ("paraview", "paraview_")]
