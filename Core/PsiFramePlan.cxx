@@ -2,6 +2,9 @@
 
 #include "PsiIntegrationMethods.h"
 
+#include <algorithm>
+#include <vector>
+
 namespace
 {
 // Röttger's table tabulates one scalar for color and opacity: with a separate opacity array full
@@ -24,6 +27,18 @@ bool IsoTriangles(const psi::Settings& s, const PsiSceneFacts& facts, psi::Shade
   }
   f.IsoTriangles = true;
   return !facts.GeometryOutputFits || facts.GeometryOutputFits(f);
+}
+
+// Front to back with early ray termination when it is on and a pixel can turn opaque: the
+// volume's opacity can reach psi::SaturatedOpacity along a ray through the bounds, or an
+// isosurface may hide what is behind it; the driver can mask opaque pixels. Not within depth peeling, whose passes composite the
+// volume with the translucent geometry between the peels back to front.
+bool FrontToBack(const psi::Settings& s, const PsiSceneFacts& facts, const psi::ShaderFeatures& f)
+{
+  const std::vector<float> isoOpacities = s.Isosurfaces().Opacities;
+  const bool canSaturate = facts.MaxRayOpacity >= psi::SaturatedOpacity ||
+    std::any_of(isoOpacities.begin(), isoOpacities.end(), [](float a) { return a > 0; });
+  return s.EarlyRayTermination && facts.MasksOpaquePixels && !f.DepthPeel && canSaturate;
 }
 } // namespace
 
@@ -79,5 +94,6 @@ PsiFramePlan PlanFrame(const psi::Settings& s, const PsiSceneFacts& facts)
   plan.Tables.AdaptiveNodes = f.Adaptive;
   plan.Tables.Gradients = f.IsoSmooth;
   plan.SceneDepth = facts.SceneOpaque || f.NearClip || f.OpaqueClip;
+  plan.FrontToBack = FrontToBack(s, facts, f);
   return plan;
 }

@@ -26,11 +26,24 @@ struct PsiSceneFacts
   bool ZeroOpacity = false;          ///< the opacity function has zero regions over the range
   bool NodesFaithful = true;         ///< the adaptive nodes follow the function (PsiAdaptiveNodes)
   double TableDeviation = 0;         ///< how far the sampled table misses the nodes
+  /// The largest opacity a ray through the mesh's bounds can reach (psi::MaxRayOpacity over the
+  /// bounds' diagonal): 1 when unknown.
+  double MaxRayOpacity = 1;
+  /// The driver can mask the opaque pixels between draws (PsiRenderTarget::CanMaskOpaquePixels).
+  bool MasksOpaquePixels = true;
   /// Whether the geometry shader composed for these features fits the driver's output limits
   /// (the mapper asks psi::FitsGeometryOutputLimits with GL_MAX_GEOMETRY_OUTPUT_VERTICES and
   /// GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS); empty: not asked, it fits.
   std::function<bool(const psi::ShaderFeatures&)> GeometryOutputFits;
 };
+
+namespace psi
+{
+/// Front-to-back compositing stops shading a pixel once its opacity reaches this: what lies
+/// behind can still add at most 1 - 0.999 of full intensity to any channel, a quarter of one
+/// 8-bit step (1/255).
+constexpr double SaturatedOpacity = 0.999;
+} // namespace psi
 
 struct PsiFramePlan
 {
@@ -46,6 +59,10 @@ struct PsiFramePlan
   } Tables;
   /// Copy the scene's depth for the depth test (opaque geometry, or the shaders sample it).
   bool SceneDepth = false;
+  /// Composite front to back ("under", the nearest tetrahedra first) and stop shading the
+  /// pixels whose opacity has reached psi::SaturatedOpacity (early ray termination); else back
+  /// to front ("over").
+  bool FrontToBack = false;
   /// Full pre-integration asked for with a separate opacity array draws as partial
   /// pre-integration: Röttger's table tabulates one scalar for color and opacity.
   bool MethodReplaced = false;

@@ -36,13 +36,14 @@ int8_t RelationAt(uint8_t packed, int f)
   return code == 1 ? NeighborInFront : code == 2 ? NeighborBehind : NoOrder;
 }
 
-// Same ordered-bits key as psi::SortBackToFront: ascending key = farthest first, ties by id.
-uint64_t DepthKey(float d, uint32_t id)
+// Same ordered-bits key as psi::SortBackToFront: ascending key = farthest first (or nearest
+// first), ties by id.
+uint64_t DepthKey(float d, uint32_t id, SortDirection direction)
 {
   uint32_t u;
   std::memcpy(&u, &d, sizeof(u));
   u = (u & 0x80000000u) ? ~u : (u | 0x80000000u);
-  return (static_cast<uint64_t>(~u) << 32) | id;
+  return (static_cast<uint64_t>(direction == SortDirection::FarthestFirst ? ~u : u) << 32) | id;
 }
 
 struct Counts
@@ -52,7 +53,7 @@ struct Counts
 // The fallback's sort key of tetrahedron t: distance from the eye to its centroid, or depth
 // along the view direction (as in SortBackToFront).
 uint64_t CentroidKey(const float* points4, const uint32_t* v, uint32_t t, const double eye[3],
-  bool parallel)
+  bool parallel, SortDirection direction)
 {
   float ctr[3] = { 0, 0, 0 };
   for (int k = 0; k < 4; ++k)
@@ -64,12 +65,13 @@ uint64_t CentroidKey(const float* points4, const uint32_t* v, uint32_t t, const 
   }
   if (parallel)
   {
-    return DepthKey(static_cast<float>(ctr[0] * eye[0] + ctr[1] * eye[1] + ctr[2] * eye[2]), t);
+    return DepthKey(
+      static_cast<float>(ctr[0] * eye[0] + ctr[1] * eye[1] + ctr[2] * eye[2]), t, direction);
   }
   const float dx = ctr[0] - static_cast<float>(eye[0]);
   const float dy = ctr[1] - static_cast<float>(eye[1]);
   const float dz = ctr[2] - static_cast<float>(eye[2]);
-  return DepthKey(dx * dx + dy * dy + dz * dz, t);
+  return DepthKey(dx * dx + dy * dy + dz * dz, t, direction);
 }
 
 // Williams §4: the relation across face f of the tetrahedron with points v. The eye is compared
@@ -187,11 +189,20 @@ void BehindRelation(const float* points4, TetCells tets, int64_t n, const int32_
   }
 }
 
-// Phase II (Williams §5): in-degree = number of neighbours behind the tetrahedron. The sources
-// (in-degree 0) are the cells whose faces pointing away from the viewer are all boundary faces
-// (or edge-on): in a convex mesh, the cells on the far side of the boundary.
-std::vector<uint8_t> InDegrees(const std::vector<uint8_t>& rel, int64_t n)
+// The relation of a neighbour that must be emitted before the tetrahedron: the one behind it
+// (farthest first), or the one in front of it (nearest first: the same DAG, edges reversed).
+int8_t EmittedBefore(SortDirection direction)
 {
+  return direction == SortDirection::FarthestFirst ? NeighborBehind : NeighborInFront;
+}
+
+// Phase II (Williams §5): in-degree = number of neighbours behind the tetrahedron (in front of
+// it, nearest first). The sources (in-degree 0) are the cells whose faces pointing away from the
+// viewer are all boundary faces (or edge-on): in a convex mesh, the cells on the far side of the
+// boundary (nearest first: on the near side).
+std::vector<uint8_t> InDegrees(const std::vector<uint8_t>& rel, int64_t n, SortDirection direction)
+{
+  const int8_t before = EmittedBefore(direction);
   std::vector<uint8_t> indeg(static_cast<size_t>(n), 0);
   vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType t = begin; t < end; ++t)
@@ -200,7 +211,7 @@ std::vector<uint8_t> InDegrees(const std::vector<uint8_t>& rel, int64_t n)
         RelationAt(rel[t], 3) };
       // (Written with std::count: GCC 12 -O3 miscompiled a uint8_t "k += cond ? 1 : 0" loop
       // here, adding the vector mask -1 instead of 1.)
-      indeg[t] = static_cast<uint8_t>(std::count(r, r + 4, NeighborBehind));
+      indeg[t] = static_cast<uint8_t>(std::count(r, r + 4, before));
     }
   });
   return indeg;
@@ -209,12 +220,13 @@ std::vector<uint8_t> InDegrees(const std::vector<uint8_t>& rel, int64_t n)
 // Phase III (Williams §5, with MPVONC's depth heuristic of §6): Kahn's topological sort in which
 // the ready tetrahedron taken next is always the farthest one (min-heap on the key, computed when
 // the tetrahedron becomes ready); when none is ready (a cycle, Williams §7) the farthest
-// remaining one is taken.
+// remaining one is taken. Nearest first: the nearest, in the reversed DAG.
 template <class Key>
 void TopologicalOrder(const Key& key, const int32_t* neighbors,
   const std::vector<uint8_t>& rel, std::vector<uint8_t>& indeg, std::vector<uint32_t>& order,
-  const std::function<void(size_t)>& emittedSoFar, MPVONCResult& result)
+  const std::function<void(size_t)>& emittedSoFar, SortDirection direction, MPVONCResult& result)
 {
+  const int8_t after = static_cast<int8_t>(-EmittedBefore(direction));
   const size_t numTets = indeg.size();
   std::vector<uint64_t> heap;
   heap.reserve(1024);
@@ -272,7 +284,7 @@ void TopologicalOrder(const Key& key, const int32_t* neighbors,
     }
     for (int f = 0; f < 4; ++f)
     {
-      if (RelationAt(rel[t], f) == NeighborInFront)
+      if (RelationAt(rel[t], f) == after)
       {
         const uint32_t nb = static_cast<uint32_t>(neighbors[4 * static_cast<size_t>(t) + f]);
         if (indeg[nb] > 0 && --indeg[nb] == 0 && !emitted[nb])
@@ -287,7 +299,7 @@ void TopologicalOrder(const Key& key, const int32_t* neighbors,
 
 MPVONCResult SortMPVONC(const float* points4, TetCells tets, size_t numTets,
   const int32_t* neighbors, const double eye[3], bool parallel, std::vector<uint32_t>& order,
-  const std::function<void(size_t)>& emitted)
+  const std::function<void(size_t)>& emitted, SortDirection direction)
 {
   MPVONCResult result;
   order.clear();
@@ -304,14 +316,14 @@ MPVONCResult SortMPVONC(const float* points4, TetCells tets, size_t numTets,
   // Phases I and II on all cores: nothing is emitted, so nothing is drawn, until they end.
   Parallel([&] {
     BehindRelation(points4, tets, n, neighbors, eye, parallel, rel, result);
-    indeg = InDegrees(rel, n);
+    indeg = InDegrees(rel, n, direction);
   });
   const auto key = [&](uint32_t t) {
     uint32_t v[4];
     tets.Get(t, v);
-    return CentroidKey(points4, v, t, eye, parallel);
+    return CentroidKey(points4, v, t, eye, parallel, direction);
   };
-  TopologicalOrder(key, neighbors, rel, indeg, order, emitted, result);
+  TopologicalOrder(key, neighbors, rel, indeg, order, emitted, direction, result);
   if (emitted)
   {
     emitted(numTets);

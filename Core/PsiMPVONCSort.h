@@ -23,6 +23,7 @@
 #ifndef PsiMPVONCSort_h
 #define PsiMPVONCSort_h
 
+#include "PsiSortDirection.h"
 #include "PsiTetCells.h"
 #include "PsiVolumeCoreModule.h"
 
@@ -55,9 +56,13 @@ struct MPVONCResult
 /// `emitted`, when set, is called with the number of entries of `order` that are final (every
 /// EmittedStep tetrahedra, and once with numTets at the end). `order` has its final size before
 /// the first call, so another thread may read the entries reported so far.
+/// SortDirection::NearestFirst emits the same DAG's order reversed in the same way (a tetrahedron
+/// after every neighbour in front of it, the nearest ready one first), for front-to-back
+/// compositing; it is as exact, and streams as early.
 PSIVOLUMECORE_EXPORT MPVONCResult SortMPVONC(const float* points4, TetCells tets,
   size_t numTets, const int32_t* neighbors, const double eye[3], bool parallel,
-  std::vector<uint32_t>& order, const std::function<void(size_t)>& emitted = {});
+  std::vector<uint32_t>& order, const std::function<void(size_t)>& emitted = {},
+  SortDirection direction = SortDirection::FarthestFirst);
 
 /// How often SortMPVONC reports its progress, in tetrahedra.
 constexpr size_t EmittedStep = 4096;

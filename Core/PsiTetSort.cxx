@@ -7,6 +7,7 @@
 
 #include "vtkSMPTools.h"
 
+#include <algorithm>
 #include <atomic>
 
 namespace psi
@@ -23,9 +24,13 @@ public:
     this->Centroids = ComputeCentroids(mesh->Points4.data(), mesh->Cells(), mesh->NumberOfTets());
   }
   size_t Sort(const double eye[3], bool parallel, std::vector<uint32_t>& order,
-    const std::function<void(size_t)>& emitted) override
+    const std::function<void(size_t)>& emitted, SortDirection direction) override
   {
     SortBackToFront(this->Centroids, eye, parallel, order);
+    if (direction == SortDirection::NearestFirst)
+    {
+      std::reverse(order.begin(), order.end());
+    }
     if (emitted)
     {
       emitted(order.size());
@@ -50,7 +55,7 @@ public:
     }
   }
   size_t Sort(const double eye[3], bool parallel, std::vector<uint32_t>& order,
-    const std::function<void(size_t)>& emitted) override
+    const std::function<void(size_t)>& emitted, SortDirection direction) override
   {
     const size_t n = this->Mesh->NumberOfTets();
     if (this->Neighbors.size() != 4 * n)
@@ -60,7 +65,7 @@ public:
       });
     }
     const MPVONCResult r = SortMPVONC(this->Mesh->Points4.data(), this->Mesh->Cells(), n,
-      this->Neighbors.data(), eye, parallel, order, emitted);
+      this->Neighbors.data(), eye, parallel, order, emitted, direction);
     return r.CyclesBroken;
   }
 

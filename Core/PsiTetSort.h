@@ -5,6 +5,7 @@
 #ifndef PsiTetSort_h
 #define PsiTetSort_h
 
+#include "PsiSortDirection.h"
 #include "PsiTetMesh.h"
 #include "PsiVolumeCoreModule.h"
 
@@ -29,9 +30,11 @@ public:
   /// cycles the sort had to break (0 for sorts that never meet any). `emitted`, when set, is
   /// called with the number of leading entries of `order` that are final, as they become final
   /// (MPVONC: every psi::EmittedStep; the centroid sort: once, at the end) and with all of them
-  /// at the end; `order` has its final size before the first call.
+  /// at the end; `order` has its final size before the first call. NearestFirst: all
+  /// tetrahedra in a visibility order for front-to-back compositing instead.
   virtual size_t Sort(const double eye[3], bool parallel, std::vector<uint32_t>& order,
-    const std::function<void(size_t)>& emitted = {}) = 0;
+    const std::function<void(size_t)>& emitted = {},
+    SortDirection direction = SortDirection::FarthestFirst) = 0;
 };
 
 PSIVOLUMECORE_EXPORT std::unique_ptr<TetSort> NewCentroidSort();

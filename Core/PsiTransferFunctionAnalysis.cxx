@@ -98,4 +98,13 @@ std::vector<float> OpacityPrefixCounts(
   return prefix;
 }
 
+double MaxRayOpacity(const TransferFunctionTable& table, double rayLength)
+{
+  float maxTau = 0;
+  for (size_t i = 3; i < table.Rgba.size(); i += 4)
+  {
+    maxTau = std::max(maxTau, table.Rgba[i]);
+  }
+  return 1.0 - std::exp(-double(maxTau) * std::max(rayLength, 0.0));
+}
 } // namespace psi

@@ -40,6 +40,12 @@ PSIVOLUMECORE_EXPORT std::string UnitDistanceProblem(vtkVolumeProperty* property
 /// spacing is not discarded. `hasZeroOpacity` tells whether there is a zero region at all.
 PSIVOLUMECORE_EXPORT std::vector<float> OpacityPrefixCounts(
   const TransferFunctionTable& table, vtkVolumeProperty* property, bool& hasZeroOpacity);
+
+/// The largest opacity a ray of length `rayLength` through the volume can reach with the table:
+/// alpha = 1 - exp(-integral of tau) (Moreland's dissertation Eq. 2.2 with no light behind),
+/// at most 1 - exp(-max tau * rayLength). Whether a pixel can turn opaque at all decides
+/// whether front-to-back compositing can stop early (PlanFrame).
+PSIVOLUMECORE_EXPORT double MaxRayOpacity(const TransferFunctionTable& table, double rayLength);
 } // namespace psi
 
 #endif

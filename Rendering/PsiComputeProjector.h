@@ -10,6 +10,7 @@
 #include "vtkSmartPointer.h"
 
 #include <cstddef>
+#include <functional>
 #include <string>
 
 class PsiVisibilityOrder;
@@ -44,8 +45,9 @@ public:
   /// uniforms must be set. Leaves no program bound (VTK's shader cache is told).
   /// Each pass's buffers fit `maxBlockBytes` (GL_MAX_SHADER_STORAGE_BLOCK_SIZE, PsiDriverLimits).
   /// False, with `error` set, when not even one work group's triangles fit it (nothing drawn).
+  /// `betweenStrides` as for PsiVisibilityOrder::Draw (the vertex array is bound again after it).
   bool Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder& order, size_t targetPixels,
-    long long maxBlockBytes, std::string& error);
+    long long maxBlockBytes, std::string& error, const std::function<void()>& betweenStrides = {});
   void ReleaseGraphicsResources(vtkWindow* win);
 
   /// Bytes of the reused vertex and index buffers (their size bounds the tetrahedra per pass).

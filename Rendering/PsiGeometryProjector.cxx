@@ -26,8 +26,8 @@ vtkShaderProgram* PsiGeometryProjector::ReadyProgram(vtkOpenGLRenderWindow* renW
   return this->Program;
 }
 
-void PsiGeometryProjector::Draw(
-  PsiVisibilityOrder& order, vtkShaderProgram* program, size_t targetPixels) const
+void PsiGeometryProjector::Draw(PsiVisibilityOrder& order, vtkShaderProgram* program,
+  size_t targetPixels, const std::function<void()>& betweenStrides) const
 {
   // each tetrahedron is one point whose attribute is its four point ids (PsiVolumeVS.glsl)
   const GLint loc = glGetAttribLocation(static_cast<GLuint>(program->GetHandle()), "tetPointIds");
@@ -43,7 +43,7 @@ void PsiGeometryProjector::Draw(
     [](size_t first, size_t count) {
       glDrawArrays(GL_POINTS, static_cast<GLint>(first), static_cast<GLsizei>(count));
     },
-    targetPixels);
+    targetPixels, betweenStrides);
 }
 
 void PsiGeometryProjector::ReleaseGraphicsResources()

@@ -7,6 +7,7 @@
 #define PsiGeometryProjector_h
 
 #include <cstddef>
+#include <functional>
 #include <string>
 
 class PsiVisibilityOrder;
@@ -27,7 +28,8 @@ public:
     const char* integrator, bool& built);
   /// Draws every tetrahedron of `order` as a point with `program` (bound, with the mesh's
   /// vertex array), its four point ids streamed by the order, on a target of `targetPixels`.
-  void Draw(PsiVisibilityOrder& order, vtkShaderProgram* program, size_t targetPixels) const;
+  void Draw(PsiVisibilityOrder& order, vtkShaderProgram* program, size_t targetPixels,
+    const std::function<void()>& betweenStrides = {}) const;
   void ReleaseGraphicsResources();
 
 private:

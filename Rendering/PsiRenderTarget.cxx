@@ -1,6 +1,8 @@
 #include "PsiRenderTarget.h"
 
 #include "PsiCompositeFS.h"
+#include "PsiFramePlan.h" // psi::SaturatedOpacity
+#include "PsiOpaqueMaskFS.h"
 
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -98,7 +100,7 @@ void PsiRenderTarget::ReserveImages(vtkOpenGLRenderWindow* renWin, int images)
 
 void PsiRenderTarget::DrawAndComposite(vtkOpenGLRenderWindow* renWin,
   const std::function<void(int)>& drawImage, PsiDepthPeelingCalls::Stage peelStage,
-  const std::function<void(vtkShaderProgram*)>& compositeParameters)
+  const std::function<void(vtkShaderProgram*)>& compositeParameters, bool frontToBack)
 {
   const int images = PsiDepthPeelingCalls::ImagesOf(peelStage);
   vtkOpenGLState* ostate = renWin->GetState();
@@ -119,7 +121,12 @@ void PsiRenderTarget::DrawAndComposite(vtkOpenGLRenderWindow* renWin,
     ostate->vtkglViewport(0, 0, this->Size[0], this->Size[1]);
     ostate->vtkglDisable(GL_SCISSOR_TEST);
     ostate->vtkglClearColor(0, 0, 0, 0);
-    if (this->DepthTest) // against the scene's opaque geometry
+    // the depth test against the scene's opaque geometry, and front to back against the mask
+    if (frontToBack && !this->DepthTest)
+    {
+      this->ClearDepth(ostate); // no scene depth was copied: the far plane everywhere
+    }
+    if (this->DepthTest || frontToBack)
     {
       ostate->vtkglEnable(GL_DEPTH_TEST);
     }
@@ -131,13 +138,23 @@ void PsiRenderTarget::DrawAndComposite(vtkOpenGLRenderWindow* renWin,
     ostate->vtkglDepthMask(GL_FALSE);
     ostate->vtkglDisable(GL_CULL_FACE);
     ostate->vtkglEnable(GL_BLEND);
-    // premultiplied "over", back to front (added: a caller such as VTK's dual depth peeling may
-    // have left GL_MAX, which the composite below keeps)
+    // premultiplied, added (a caller such as VTK's dual depth peeling may have left GL_MAX,
+    // which the composite below keeps): back to front "over", dst = src + (1 - a_src) dst; front
+    // to back "under", dst = dst + (1 - a_dst) src (Moreland's dissertation §2.2.3)
     GLint equation[2] = { GL_FUNC_ADD, GL_FUNC_ADD };
     glGetIntegerv(GL_BLEND_EQUATION_RGB, &equation[0]);
     glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &equation[1]);
     ostate->vtkglBlendEquation(GL_FUNC_ADD);
-    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    if (frontToBack)
+    {
+      ostate->vtkglBlendFuncSeparate(
+        GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+    }
+    else
+    {
+      ostate->vtkglBlendFuncSeparate(
+        GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    }
     for (int i = 0; i < images; ++i)
     {
       this->Framebuffer->ActivateDrawBuffer(i);
@@ -152,12 +169,72 @@ void PsiRenderTarget::DrawAndComposite(vtkOpenGLRenderWindow* renWin,
     ostate->vtkglViewport(
       own ? 0 : this->Origin[0], own ? 0 : this->Origin[1], this->Size[0], this->Size[1]);
     ostate->vtkglDisable(GL_DEPTH_TEST);
+    // the premultiplied images go "over" what the framebuffer holds, whichever way they were drawn
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     this->Composite(renWin, peelStage, compositeParameters);
   }
   if (this->SampleDepth)
   {
     this->DepthSampleTexture->Deactivate();
   }
+}
+
+// The depth attachment at the far plane (1), the clear value restored.
+void PsiRenderTarget::ClearDepth(vtkOpenGLState* ostate)
+{
+  GLfloat clearDepth = 1;
+  glGetFloatv(GL_DEPTH_CLEAR_VALUE, &clearDepth);
+  vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglClearDepth(1.0);
+  ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  ostate->vtkglClearDepth(clearDepth);
+}
+
+bool PsiRenderTarget::CanMaskOpaquePixels()
+{
+  return glTextureBarrier != nullptr;
+}
+
+void PsiRenderTarget::MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderProgram* drawProgram)
+{
+  vtkOpenGLState* ostate = renWin->GetState();
+  GLint vertexArray = 0;
+  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray);
+  // a projector may have bound its programs without VTK's shader cache (the compute projector):
+  // the cache must not take the mask's program for bound
+  renWin->GetShaderCache()->ReleaseCurrentShader();
+  if (!this->MaskQuad)
+  {
+    this->MaskQuad.reset(new vtkOpenGLQuadHelper(renWin, nullptr, PsiOpaqueMaskFS, ""));
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(this->MaskQuad->Program);
+  }
+  vtkShaderProgram* program = this->MaskQuad->Program;
+  if (program)
+  {
+    // the image is read where it was drawn: the barrier makes the draws so far visible
+    glTextureBarrier();
+    vtkOpenGLState::ScopedglColorMask colorMask(ostate);
+    vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
+    vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
+    ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    ostate->vtkglDepthMask(GL_TRUE);
+    ostate->vtkglDepthFunc(GL_ALWAYS);
+    vtkTextureObject* image = this->Framebuffer->GetColorAttachmentAsTextureObject(0);
+    image->Activate();
+    program->SetUniformi("volumeImage", image->GetTextureUnit());
+    program->SetUniformf("saturatedOpacity", static_cast<float>(psi::SaturatedOpacity));
+    this->MaskQuad->Render();
+    image->Deactivate();
+  }
+  if (drawProgram)
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(drawProgram);
+  }
+  glBindVertexArray(static_cast<GLuint>(vertexArray));
 }
 
 // The volume images (premultiplied) into the framebuffer being rendered, with the blending the
@@ -209,5 +286,6 @@ void PsiRenderTarget::ReleaseGraphicsResources(vtkWindow* win)
     this->FrontImage->ReleaseGraphicsResources(win);
   }
   this->CompositeQuad.reset();
+  this->MaskQuad.reset();
   this->Size[0] = this->Size[1] = 0;
 }

@@ -3,6 +3,10 @@
 // attachment is a copy of the scene's depth, so that the hardware depth test hides cells behind
 // opaque geometry; a second copy is sampled by the shaders when opaque geometry or the near
 // plane cuts through cells. The float image is then composited over the scene.
+// Front to back ("under", PsiFramePlan::FrontToBack) the same image is composited from the
+// nearest tetrahedra on, and MaskOpaquePixels, called between chunks of the order, writes the
+// nearest depth where the image is already opaque, so that the fragments still to come there
+// fail the depth test before they are shaded (early ray termination).
 #ifndef PsiRenderTarget_h
 #define PsiRenderTarget_h
 
@@ -17,6 +21,7 @@
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkOpenGLState;
 class vtkRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
@@ -42,10 +47,18 @@ public:
   /// 1, or 2 before the peels and in each peel), clears it and runs `drawImage(i)` into it with
   /// blending and the depth test set (all GL state restored afterwards); then composites the
   /// images into the framebuffer being rendered (PsiCompositeFS.glsl; `compositeParameters`
-  /// sets the pass's uniforms on the composite program).
+  /// sets the pass's uniforms on the composite program). `frontToBack`: "under" blending and
+  /// the depth test on, for drawImage to call MaskOpaquePixels (outside depth peeling only).
   void DrawAndComposite(vtkOpenGLRenderWindow* renWin, const std::function<void(int)>& drawImage,
     PsiDepthPeelingCalls::Stage peelStage,
-    const std::function<void(vtkShaderProgram*)>& compositeParameters);
+    const std::function<void(vtkShaderProgram*)>& compositeParameters, bool frontToBack = false);
+  /// Within drawImage of a front-to-back DrawAndComposite: the nearest depth where the image
+  /// drawn so far is opaque (PsiOpaqueMaskFS.glsl), then `drawProgram` and the vertex array
+  /// bound again.
+  void MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderProgram* drawProgram);
+  /// Whether this OpenGL has what MaskOpaquePixels needs (glTextureBarrier: OpenGL 4.5 or
+  /// ARB_texture_barrier).
+  static bool CanMaskOpaquePixels();
   void ReleaseGraphicsResources(vtkWindow* win);
 
 private:
@@ -54,12 +67,14 @@ private:
   void Composite(vtkOpenGLRenderWindow* renWin, PsiDepthPeelingCalls::Stage peelStage,
     const std::function<void(vtkShaderProgram*)>& compositeParameters);
   void ReserveImages(vtkOpenGLRenderWindow* renWin, int images);
+  void ClearDepth(vtkOpenGLState* ostate);
 
   vtkNew<vtkTextureObject> DepthTexture;
   vtkNew<vtkTextureObject> DepthSampleTexture;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkNew<vtkTextureObject> FrontImage; // the second image, within depth peeling
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
   int Size[2] = { 0, 0 };
   int Origin[2] = { 0, 0 };
   bool SampleDepth = false;

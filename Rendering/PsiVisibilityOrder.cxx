@@ -34,15 +34,17 @@ PsiVisibilityOrder::~PsiVisibilityOrder()
   }
 }
 
-bool PsiVisibilityOrder::NeedsUpdate(
-  int meshVersion, psi::Sorts method, const double mcvc[16], bool parallel) const
+bool PsiVisibilityOrder::NeedsUpdate(int meshVersion, psi::Sorts method, const double mcvc[16],
+  bool parallel, psi::SortDirection direction) const
 {
   return !this->OnGPU || meshVersion != this->MeshVersion || method != this->Method ||
+    direction != this->Direction ||
     parallel != this->Parallel || !std::equal(mcvc, mcvc + 16, this->View.begin());
 }
 
 void PsiVisibilityOrder::Update(const psi::TetMesh& mesh, int meshVersion,
-  std::vector<int32_t> faceNeighbors, psi::Sorts method, const double mcvc[16], bool parallel)
+  std::vector<int32_t> faceNeighbors, psi::Sorts method, const double mcvc[16], bool parallel,
+  psi::SortDirection direction)
 {
   this->Finish();
   if (this->NeedsMesh(meshVersion, method))
@@ -63,16 +65,17 @@ void PsiVisibilityOrder::Update(const psi::TetMesh& mesh, int meshVersion,
   this->Final = 0;
   std::array<double, 3> eye;
   EyeInModel(mcvc, parallel, eye.data());
-  this->Worker = std::thread([this, eye, parallel]() {
+  this->Worker = std::thread([this, eye, parallel, direction]() {
     const psi::Stopwatch clock;
-    const size_t cycles =
-      this->Sort->Sort(eye.data(), parallel, this->Order, [this](size_t n) { this->Emitted(n); });
+    const size_t cycles = this->Sort->Sort(
+      eye.data(), parallel, this->Order, [this](size_t n) { this->Emitted(n); }, direction);
     const double seconds = clock.Seconds();
     std::lock_guard<std::mutex> guard(this->Lock);
     this->LastCycles = cycles;
     this->LastSortSeconds = seconds;
   });
   this->Method = method;
+  this->Direction = direction;
   this->MeshVersion = meshVersion;
   std::copy(mcvc, mcvc + 16, this->View.begin());
   this->Parallel = parallel;
@@ -133,8 +136,8 @@ void WaitAndDelete(GLsync fence)
 }
 } // namespace
 
-void PsiVisibilityOrder::Draw(
-  const std::function<void(size_t, size_t)>& drawChunk, size_t targetPixels)
+void PsiVisibilityOrder::Draw(const std::function<void(size_t, size_t)>& drawChunk,
+  size_t targetPixels, const std::function<void()>& betweenStrides)
 {
   // Streamed in chunks (ChunkTetsFor) through InFlight slots of the stream buffer, so that the
   // GPU holds no copy of the cells and no single draw call is unbounded. Mesa's llvmpipe bins
@@ -146,9 +149,14 @@ void PsiVisibilityOrder::Draw(
   // slot for the next. Each fence also ends llvmpipe's scene (see ChunkTetsFor).
   std::array<GLsync, InFlight> fences{};
   const size_t n = this->Size, chunk = ChunkTetsFor(n, targetPixels);
+  const size_t stride = StrideTets(n, chunk);
   this->Drawn.clear();
   for (size_t first = 0, i = 0; first < n; first += chunk, ++i)
   {
+    if (betweenStrides && first > 0 && first % stride == 0)
+    {
+      betweenStrides();
+    }
     GLsync& slot = fences[i % InFlight];
     if (slot)
     {

@@ -1,18 +1,21 @@
-// PsiVisibilityOrder: the back-to-front order of the tetrahedra, streamed to the GPU as GL_POINTS
+// PsiVisibilityOrder: the visibility order of the tetrahedra (farthest first, or nearest first
+// for front-to-back compositing), streamed to the GPU as GL_POINTS
 // (one per tetrahedron carrying its four point ids, Maximo et al. 2010 §3.1). It owns the sort
 // (centroid or MPVONC, psi::TetSort) and re-sorts only when the mesh, the view or the sort
 // method changes.
 //
-// The sort runs on a worker thread while the frame draws. MPVONC emits the farthest
-// tetrahedra first, so Draw uploads and draws each chunk as soon as the sort has finished it:
-// the rasterizer starts on the far chunks instead of waiting for the whole sort, in which
+// The sort runs on a worker thread while the frame draws. MPVONC emits the order from its
+// start (the farthest or the nearest tetrahedra), so Draw uploads and draws each chunk as soon as the sort has finished it:
+// the rasterizer starts on the first chunks instead of waiting for the whole sort, in which
 // llvmpipe's threads would have nothing to draw (docs/decisions.md, "Visibility order").
 #ifndef PsiVisibilityOrder_h
 #define PsiVisibilityOrder_h
 
 #include "PsiSettings.h" // psi::Sorts
+#include "PsiSortDirection.h"
 #include "PsiTetSort.h"
 
+#include <algorithm>
 #include <array>
 #include <condition_variable>
 #include <cstdint>
@@ -31,7 +34,8 @@ public:
   ~PsiVisibilityOrder();
 
   /// mcvc: model (shifted) to view matrix, row-major.
-  bool NeedsUpdate(int meshVersion, psi::Sorts method, const double mcvc[16], bool parallel) const;
+  bool NeedsUpdate(int meshVersion, psi::Sorts method, const double mcvc[16], bool parallel,
+    psi::SortDirection direction) const;
   /// Whether the next Update takes a new mesh (the mesh or the method changed): only then does it
   /// use the face neighbours it is offered.
   bool NeedsMesh(int meshVersion, psi::Sorts method) const
@@ -42,13 +46,23 @@ public:
   /// this order draws it. `faceNeighbors` (may be empty) are offered to the sort when the mesh
   /// or the method changed (see psi::TetSort::SetMesh).
   void Update(const psi::TetMesh& mesh, int meshVersion, std::vector<int32_t> faceNeighbors,
-    psi::Sorts method, const double mcvc[16], bool parallel);
+    psi::Sorts method, const double mcvc[16], bool parallel, psi::SortDirection direction);
   /// Streams the tetrahedra in order, chunk by chunk, each as soon as the sort has finished it:
   /// writes the chunk's four point ids per tetrahedron to the stream buffer (GetStreamBuffer)
   /// and calls drawChunk(first, count), `first` being the chunk's first tetrahedron there.
-  /// Chunks are ChunkTetsFor(GetSize(), targetPixels) tetrahedra.
-  void Draw(
-    const std::function<void(size_t first, size_t count)>& drawChunk, size_t targetPixels);
+  /// Chunks are ChunkTetsFor(GetSize(), targetPixels) tetrahedra. `betweenStrides`, when set, is
+  /// called between chunks once every StrideTets(GetSize(), chunk) tetrahedra, not after the
+  /// last chunk (front to back, the opaque pixels are masked there).
+  void Draw(const std::function<void(size_t first, size_t count)>& drawChunk,
+    size_t targetPixels, const std::function<void()>& betweenStrides = {});
+  /// Tetrahedra between two calls of Draw's betweenStrides: whole chunks, at most
+  /// StridesPerFrame strides a frame. Each call is a full-screen pass (PsiOpaqueMaskFS.glsl);
+  /// docs/decisions.md, "Early ray termination", has the figures behind the number.
+  static constexpr size_t StrideTets(size_t tets, size_t chunk)
+  {
+    return std::max(chunk, (tets / StridesPerFrame + chunk - 1) / chunk * chunk);
+  }
+  static constexpr size_t StridesPerFrame = 16;
   /// Waits for the sort (before GetOrder, GetLastCycles and GetLastSortSeconds are read).
   void Finish();
   void ReleaseGraphicsResources(vtkWindow* win);
@@ -95,6 +109,7 @@ private:
   std::condition_variable Progress;
   size_t Final = 0;    ///< entries of Order the sort has emitted (guarded by Lock)
   psi::Sorts Method = psi::Sorts::MPVONC; ///< the sort's, once there is one
+  psi::SortDirection Direction = psi::SortDirection::FarthestFirst;
   int MeshVersion = -1;
   std::array<double, 16> View{};
   bool Parallel = false;

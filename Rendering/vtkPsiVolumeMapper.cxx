@@ -33,6 +33,7 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -126,10 +127,10 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     return;
   }
   const PsiFrameCamera cam = PsiFrameCamera::FromRenderer(ren, vol, I.Mesh.GetMesh().Shift);
-  const bool sorted = this->UpdateVisibilityOrder(input, cam);
   const PsiTableSources sources = this->UpdateTransferFunction(renWin, vol);
   const PsiFramePlan plan = PlanFrame(this->Settings, this->SceneFacts(ren, vol, cam));
   this->NotePlan(plan);
+  const bool sorted = this->UpdateVisibilityOrder(input, cam, plan.FrontToBack);
   const std::vector<PsiGpuTable*> tables = this->TablesOf(plan);
   this->UpdateTables(renWin, plan, tables, sources);
   if (I.Target.CaptureDepthTexture(
@@ -152,14 +153,17 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
 }
 
-// Starts sorting on a worker thread when the view or the mesh changed (the draw streams the
-// chunks as the sort emits them). True when a sort started.
+// Starts sorting on a worker thread when the view, the mesh or the direction changed (the draw
+// streams the chunks as the sort emits them; the tables are updated meanwhile). True when a sort
+// started.
 bool vtkPsiVolumeMapper::UpdateVisibilityOrder(
-  vtkUnstructuredGridBase* input, const PsiFrameCamera& cam)
+  vtkUnstructuredGridBase* input, const PsiFrameCamera& cam, bool frontToBack)
 {
   Internals& I = *this->Impl;
   const psi::Sorts method = this->Settings.SortMethod;
-  if (!I.Order.NeedsUpdate(I.Mesh.GetVersion(), method, cam.MCVC, cam.Parallel))
+  const psi::SortDirection direction =
+    frontToBack ? psi::SortDirection::NearestFirst : psi::SortDirection::FarthestFirst;
+  if (!I.Order.NeedsUpdate(I.Mesh.GetVersion(), method, cam.MCVC, cam.Parallel, direction))
   {
     return false;
   }
@@ -171,8 +175,8 @@ bool vtkPsiVolumeMapper::UpdateVisibilityOrder(
       input->GetCellData() ? input->GetCellData()->GetArray("FaceNeighbors") : nullptr,
       input->GetNumberOfCells(), neighbors);
   }
-  I.Order.Update(
-    I.Mesh.GetMesh(), I.Mesh.GetVersion(), std::move(neighbors), method, cam.MCVC, cam.Parallel);
+  I.Order.Update(I.Mesh.GetMesh(), I.Mesh.GetVersion(), std::move(neighbors), method, cam.MCVC,
+    cam.Parallel, direction);
   return true;
 }
 
@@ -194,18 +198,19 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   {
     return;
   }
-  this->SetShaderParameters(program, ren, vol, cam, features, tables);
+  this->SetShaderParameters(program, ren, vol, cam, plan, tables);
   I.Mesh.Activate(program, gradients);
   vtkShaderProgram* draw = compute ? I.Compute.ReadyDrawProgram(renWin) : program;
   if (draw && compute)
   {
-    this->SetShaderParameters(draw, ren, vol, cam, features, tables);
+    this->SetShaderParameters(draw, ren, vol, cam, plan, tables);
     I.Mesh.Activate(draw, gradients); // the fragment shader reads points when clipping
   }
   if (draw)
   {
     const size_t pixels = size_t(I.Target.GetSize()[0]) * size_t(I.Target.GetSize()[1]);
     std::string drawError;
+    I.Samples.Reset();
     auto drawImage = [&](int image) {
       if (features.DepthPeel)
       {
@@ -214,19 +219,32 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
         draw->SetUniformi("peelRange", image);
         I.Peeling.SetShaderParameters(draw, this, vol, renWin);
       }
+      // front to back, the pixels already opaque are masked between strides of the order
+      std::function<void()> mask;
+      if (plan.FrontToBack)
+      {
+        mask = [&]() {
+          I.Samples.End(); // the mask's own samples are not the volume's
+          I.Target.MaskOpaquePixels(renWin, compute ? nullptr : draw);
+          I.Samples.Begin(I.CountSamples);
+        };
+      }
+      I.Samples.Begin(I.CountSamples);
       if (compute)
       {
-        I.Compute.Draw(renWin, I.Order, pixels, I.Limits().MaxStorageBlockBytes, drawError);
+        I.Compute.Draw(renWin, I.Order, pixels, I.Limits().MaxStorageBlockBytes, drawError, mask);
       }
       else
       {
-        I.Geometry.Draw(I.Order, draw, pixels);
+        I.Geometry.Draw(I.Order, draw, pixels, mask);
       }
+      I.Samples.End();
     };
     I.Target.DrawAndComposite(renWin, drawImage, I.Peeling.GetStage(),
       [&](vtkShaderProgram* composite) {
         I.Peeling.SetShaderParameters(composite, this, vol, renWin);
-      });
+      },
+      plan.FrontToBack);
     I.Peeling.Deactivate();
     if (!drawError.empty() && drawError != I.LastDrawError)
     {
@@ -310,9 +328,10 @@ vtkShaderProgram* vtkPsiVolumeMapper::ReadyProjection(
 }
 
 void vtkPsiVolumeMapper::SetShaderParameters(vtkShaderProgram* program, vtkRenderer* ren,
-  vtkVolume* vol, const PsiFrameCamera& cam, const psi::ShaderFeatures& f,
+  vtkVolume* vol, const PsiFrameCamera& cam, const PsiFramePlan& plan,
   const std::vector<PsiGpuTable*>& tables)
 {
+  const psi::ShaderFeatures& f = plan.Features;
   Internals& I = *this->Impl;
   vtkVolumeProperty* property = vol->GetProperty();
   SetCameraShaderParameters(program, cam);
@@ -336,6 +355,11 @@ void vtkPsiVolumeMapper::SetShaderParameters(vtkShaderProgram* program, vtkRende
     style.MaxLights = f.MaxLights;
     SetIsosurfaceShaderParameters(
       program, this->Isosurfaces, I.Mesh.GetMesh().ScalarRange, style, property, ren, cam);
+    if (f.IsoTriangles)
+    {
+      // a cell's pieces and surfaces in the order the frame composites (PsiIsoTrianglesGS.glsl)
+      program->SetUniformi("nearestFirst", plan.FrontToBack ? 1 : 0);
+    }
   }
 }
 
@@ -355,6 +379,16 @@ void vtkPsiVolumeMapper::SetDriverLimitsForTesting(
   this->Impl->TestingLimits.MaxTextureBufferTexels = maxTextureBufferTexels;
   this->Impl->TestingLimits.MaxStorageBlockBytes = maxStorageBlockBytes;
   this->Modified();
+}
+
+void vtkPsiVolumeMapper::SetCountSamplesPassed(bool on)
+{
+  this->Impl->CountSamples = on;
+}
+
+vtkIdType vtkPsiVolumeMapper::GetLastSamplesPassed() const
+{
+  return static_cast<vtkIdType>(this->Impl->Samples.GetTotal());
 }
 
 const std::vector<uint32_t>& vtkPsiVolumeMapper::GetLastDrawOrder() const

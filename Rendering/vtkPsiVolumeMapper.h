@@ -103,6 +103,8 @@ public:
   vtkGetMacro(LastUsedProjector, int);
   /// Whether the last frame used early discard.
   vtkGetMacro(LastUsedEarlyDiscard, bool);
+  /// Whether the last frame composited front to back with early ray termination.
+  vtkGetMacro(LastUsedEarlyRayTermination, bool);
   ///@}
 
   ///@{
@@ -153,10 +155,17 @@ public:
   /// Testing aid, off by default: record the tetrahedra in the order each frame streams them to
   /// the GPU (GetLastDrawOrder; 4 bytes per tetrahedron).
   void SetRecordDrawOrder(bool on);
-  /// The tetrahedra in the order the last frame drew them (farthest first; ids of the gathered
+  /// The tetrahedra in the order the last frame drew them (farthest first, or nearest first with
+  /// early ray termination, GetLastUsedEarlyRayTermination; ids of the gathered
   /// mesh, which are the input's cell ids when every cell is a drawable tetrahedron), when
   /// recorded (SetRecordDrawOrder); empty otherwise.
   const std::vector<uint32_t>& GetLastDrawOrder() const;
+  /// Testing aid, off by default: count the volume's samples that pass the depth test each frame
+  /// (GL_SAMPLES_PASSED over the volume's draws; each count waits for the draws): fragments
+  /// behind opaque pixels fail it before they are shaded when the frame terminates rays early.
+  void SetCountSamplesPassed(bool on);
+  /// The last frame's count (SetCountSamplesPassed); 0 when not counted.
+  vtkIdType GetLastSamplesPassed() const;
   /// Testing aid: the driver's buffer limits lowered to these (texels of a texture buffer, bytes
   /// of a shader storage block; 0 keeps the driver's), so that a small mesh crosses them
   /// (PsiDriverLimits.h). Takes effect when the mesh is next gathered and on the next draw.
@@ -190,6 +199,7 @@ protected:
   vtkLogger::Verbosity LogVerbosity = vtkLogger::VERBOSITY_TRACE;
   int LastUsedProjector = 0; ///< psi::Projectors::GeometryShader
   bool LastUsedEarlyDiscard = false;
+  bool LastUsedEarlyRayTermination = false;
   bool LastUsedNearPlaneClipping = false;
   bool LastUsedOpaqueClipping = false;
   psi::IsosurfaceList Isosurfaces; ///< Settings' isovalues normalized, when they are set
@@ -212,7 +222,8 @@ private:
   void UpdateIsosurfaceList();
   bool UpdateMesh(
     vtkOpenGLRenderWindow* renWin, vtkVolume* vol, vtkUnstructuredGridBase* input);
-  bool UpdateVisibilityOrder(vtkUnstructuredGridBase* input, const PsiFrameCamera& cam);
+  bool UpdateVisibilityOrder(
+    vtkUnstructuredGridBase* input, const PsiFrameCamera& cam, bool frontToBack);
   // the frame plan (vtkPsiVolumeMapperFramePlan.cxx)
   PsiTableSources UpdateTransferFunction(vtkOpenGLRenderWindow* renWin, vtkVolume* vol);
   PsiSceneFacts SceneFacts(vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam);
@@ -226,8 +237,7 @@ private:
   void DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren, vtkVolume* vol,
     const PsiFrameCamera& cam, const PsiFramePlan& plan, const std::vector<PsiGpuTable*>& tables);
   void SetShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkVolume* vol,
-    const PsiFrameCamera& cam, const psi::ShaderFeatures& features,
-    const std::vector<PsiGpuTable*>& tables);
+    const PsiFrameCamera& cam, const PsiFramePlan& plan, const std::vector<PsiGpuTable*>& tables);
 
   struct Internals;
   std::unique_ptr<Internals> Impl;

@@ -6,14 +6,17 @@
 #include "vtkPsiVolumeMapperInternals.h"
 
 #include "PsiFramePlan.h"
+#include "PsiRenderTarget.h"
 #include "PsiSceneQueries.h"
 #include "PsiShaderComposer.h"
 #include "PsiShaderParameters.h"
+#include "PsiTransferFunctionAnalysis.h"
 
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 #include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -71,6 +74,11 @@ PsiSceneFacts vtkPsiVolumeMapper::SceneFacts(
   facts.ZeroOpacity = I.Tables.Transfer.HasZeroOpacity();
   facts.NodesFaithful = I.AdaptiveNodes.IsFaithful();
   facts.TableDeviation = I.AdaptiveNodes.GetTableDeviation();
+  const double* b = vol->GetBounds(); // a ray's longest path through the volume, in world units
+  facts.MaxRayOpacity = psi::MaxRayOpacity(I.Tables.Transfer.GetTable(),
+    std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+      (b[5] - b[4]) * (b[5] - b[4])));
+  facts.MasksOpaquePixels = PsiRenderTarget::CanMaskOpaquePixels();
   if (MayUseIsoTriangles(this->Settings, facts))
   {
     int vertices = 0, components = 0;
@@ -95,6 +103,7 @@ void vtkPsiVolumeMapper::NotePlan(const PsiFramePlan& plan)
                     : static_cast<int>(f.IsoTriangles ? psi::IsosurfaceMethods::MarchingTetrahedra
                                                       : psi::IsosurfaceMethods::PerFragment);
   this->LastUsedEarlyDiscard = f.EarlyDiscard;
+  this->LastUsedEarlyRayTermination = plan.FrontToBack;
   this->LastUsedAdaptiveSampling = f.Adaptive;
   this->LastNumberOfAdaptiveNodes = f.Adaptive ? I.AdaptiveNodes.Size() : 0;
   const std::string note = plan.MethodReplaced

@@ -12,6 +12,7 @@
 #include "PsiGeometryProjector.h"
 #include "PsiMeshBuffers.h"
 #include "PsiRenderTarget.h"
+#include "PsiSamplesPassed.h"
 #include "PsiLookupTextures.h"
 #include "PsiVisibilityOrder.h"
 
@@ -26,6 +27,8 @@ struct vtkPsiVolumeMapper::Internals
   PsiGeometryProjector Geometry;
   PsiComputeProjector Compute;
   PsiDepthPeelingCalls Peeling; // the depth-peeling stage of this call
+  PsiSamplesPassed Samples;     // the volume's samples that pass the depth test (testing aid)
+  bool CountSamples = false;
 
   // Transfer-function nodes for adaptive sampling, for the property and range they came from.
   PsiAdaptiveNodes AdaptiveNodes;
@@ -44,6 +47,7 @@ struct vtkPsiVolumeMapper::Internals
     {
       this->Mesh.ReleaseGraphicsResources(win);
       this->Order.ReleaseGraphicsResources(win);
+      this->Samples.ReleaseGraphicsResources();
     }
     this->Tables.ReleaseGraphicsResources(win);
     this->Peeling.ReleaseGraphicsResources(win);

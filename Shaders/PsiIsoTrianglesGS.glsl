@@ -8,6 +8,7 @@
 // behind, surface, in front). Primitives emitted by one invocation are blended in emission
 // order. Surface vertices carry their normal in the segment slot (setVertexNormal).
 uniform float isoValues[PSI_ISO_COUNT]; // ascending
+uniform bool nearestFirst; // the frame composites front to back (PsiFramePlan::FrontToBack)
 // The flat output piece (declared by psi::GeometryOutputs, PsiStageInterface.cxx; one
 // component, to fit more isovalues in the geometry shader's output): j >= 0, the volume between
 // isoValues[j - 1] and isoValues[j] (j = 0 .. PSI_ISO_COUNT, open-ended at the ends),
@@ -97,6 +98,7 @@ void emitPiece(int j, float smin, float smax, bool nearClipped)
 // its lower end; the pieces below sEye from the lowest up, each followed by the surface at its
 // upper end (no ray sees both sides); last the piece containing sEye. In parallel projection
 // sEye is -inf or +inf, by the sign of the scalar's change along the view direction (0, 0, -1).
+// Front to back (nearestFirst) the same sequence is emitted in reverse.
 // At most PSI_ISO_COUNT + 1 pieces of 8 vertices and PSI_ISO_COUNT surfaces of 4.
 void emitPiecesAndSurfaces(float smin, float smax, bool nearClipped)
 {
@@ -124,6 +126,21 @@ void emitPiecesAndSurfaces(float smin, float smax, bool nearClipped)
   while (e <= last && isoValues[e] <= sEye)
   {
     ++e;
+  }
+  if (nearestFirst) // the same sequence reversed, for front-to-back compositing
+  {
+    emitPiece(e, smin, smax, nearClipped);
+    for (int j = e - 1; j >= first; --j)
+    {
+      emitSurface(j);
+      emitPiece(j, smin, smax, nearClipped);
+    }
+    for (int j = e + 1; j <= last + 1; ++j)
+    {
+      emitSurface(j - 1);
+      emitPiece(j, smin, smax, nearClipped);
+    }
+    return;
   }
   for (int j = last + 1; j > e; --j)
   {

@@ -6,11 +6,15 @@
 // 'Auto' against the table's deviation, never with unfaithful nodes; a separate opacity array
 // (silhouettes, no adaptive sampling, full pre-integration drawn as partial, no early discard
 // with marching tetrahedra); depth peeling
-// (silhouettes); the scene depth copied only when something tests or samples it.
+// (silhouettes); the scene depth copied only when something tests or samples it; front to back
+// with early ray termination only when a pixel can turn opaque, the driver can mask it, and not
+// within depth peeling.
 #include "PsiFramePlan.h"
 #include "PsiIntegrationMethods.h"
 #include "PsiSettings.h"
 #include "PsiTestCheck.h"
+#include "PsiTransferFunctionAnalysis.h"
+#include "PsiTransferFunctionTable.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -175,6 +179,37 @@ void TestSceneDepth()
   plan = PlanFrame(s, facts);
   PSI_CHECK(plan.SceneDepth && plan.Features.OpaqueClip, "opaque geometry inside the volume");
 }
+void TestEarlyRayTermination()
+{
+  // the bound on a ray's opacity: 1 - exp(-max tau * length), from the table's attenuation
+  psi::TransferFunctionTable table;
+  table.Size = 3;
+  table.Rgba = { 1, 1, 1, 0.1f, 1, 1, 1, 0.5f, 1, 1, 1, 0.2f };
+  PSI_CHECK(std::abs(psi::MaxRayOpacity(table, 4.0) - (1 - std::exp(-2.0))) < 1e-6,
+    "MaxRayOpacity %g", psi::MaxRayOpacity(table, 4.0));
+  PSI_CHECK(psi::MaxRayOpacity(table, 0.0) == 0, "a ray of no length stays transparent");
+
+  psi::Settings s = Settings();
+  PsiSceneFacts facts = Facts();
+  facts.MaxRayOpacity = 1 - std::exp(-20.0);
+  PSI_CHECK(PlanFrame(s, facts).FrontToBack, "a volume that can turn opaque: front to back");
+  facts.MaxRayOpacity = psi::SaturatedOpacity - 1e-6;
+  PSI_CHECK(!PlanFrame(s, facts).FrontToBack, "no pixel can turn opaque: back to front");
+  s.IsosurfaceValues = { 0.5 };
+  PSI_CHECK(PlanFrame(s, facts).FrontToBack, "an isosurface can hide what is behind it");
+  s.IsosurfaceOpacity = 0;
+  PSI_CHECK(!PlanFrame(s, facts).FrontToBack, "an isosurface of opacity 0 hides nothing");
+  s = Settings();
+  facts.MaxRayOpacity = 1;
+  s.EarlyRayTermination = false;
+  PSI_CHECK(!PlanFrame(s, facts).FrontToBack, "switched off");
+  s.EarlyRayTermination = true;
+  facts.DepthPeeled = true;
+  PSI_CHECK(!PlanFrame(s, facts).FrontToBack, "not within depth peeling");
+  facts.DepthPeeled = false;
+  facts.MasksOpaquePixels = false;
+  PSI_CHECK(!PlanFrame(s, facts).FrontToBack, "not when the driver cannot mask opaque pixels");
+}
 } // namespace
 
 int main()
@@ -185,6 +220,7 @@ int main()
   TestAdaptive();
   TestSeparateOpacityAndPeeling();
   TestSceneDepth();
+  TestEarlyRayTermination();
   std::printf("%s: %d failures\n", psitest::Failures() ? "FAILED" : "passed", psitest::Failures());
   return psitest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
 }

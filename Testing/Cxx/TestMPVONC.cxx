@@ -149,6 +149,7 @@ void TestConvex()
     const Mesh m = Tetrahedralize(9, 8, 7, mode, origin);
     const double center[3] = { origin[0] + 4, origin[1] + 3.5 * 0.75, origin[2] + 3 * 1.25 };
     size_t worstCentroid = 0, sumCentroid = 0, totalConstraints = 0, cycles = 0, bad = 0, badPerm = 0;
+    size_t badNearest = 0;
     double sortTime = 0;
     for (int view = 0; view < 80; ++view)
     {
@@ -173,6 +174,13 @@ void TestConvex()
       bad += Violations(m, order, eye, parallel, &constraints);
       totalConstraints += constraints;
       cycles += r.CyclesBroken;
+      // nearest first (front-to-back compositing): reversed, a back-to-front order as exact
+      std::vector<uint32_t> nearest;
+      cycles += psi::SortMPVONC(m.Points4.data(), m.Tets.data(), m.NumTets(), m.Neighbors.data(),
+        eye, parallel, nearest, {}, psi::SortDirection::NearestFirst).CyclesBroken;
+      std::reverse(nearest.begin(), nearest.end());
+      badPerm += !IsPermutation(nearest, m.NumTets());
+      badNearest += Violations(m, nearest, eye, parallel);
       std::vector<uint32_t> centroidOrder;
       psi::SortBackToFront(psi::ComputeCentroids(m.Points4.data(), m.Tets.data(), m.NumTets()), eye,
         parallel, centroidOrder);
@@ -182,6 +190,8 @@ void TestConvex()
     }
     PSI_CHECK(badPerm == 0, "%zu orders are not permutations", badPerm);
     PSI_CHECK(bad == 0, "mode %d: MPVONC violates %zu adjacency constraints", mode, bad);
+    PSI_CHECK(badNearest == 0,
+      "mode %d: nearest first, MPVONC violates %zu constraints", mode, badNearest);
     PSI_CHECK(cycles == 0, "mode %d: %zu cycles broken in a convex regular mesh", mode, cycles);
     PSI_CHECK(totalConstraints > 80 * m.NumTets(), "too few constraints checked: %zu",
       totalConstraints);
@@ -215,10 +225,16 @@ void TestDisconnected()
   const View views[4] = { { { 1, 0.1, 0.05 }, true, false }, { { -1, 0.2, 0 }, true, true },
     { { -30, 1, 2 }, false, false }, { { 40, 2, -1 }, false, true } };
   for (const View& v : views)
+  for (psi::SortDirection direction :
+    { psi::SortDirection::FarthestFirst, psi::SortDirection::NearestFirst })
   {
     std::vector<uint32_t> order;
     const psi::MPVONCResult r = psi::SortMPVONC(a.Points4.data(), a.Tets.data(), a.NumTets(),
-      a.Neighbors.data(), v.Eye, v.Parallel, order);
+      a.Neighbors.data(), v.Eye, v.Parallel, order, {}, direction);
+    if (direction == psi::SortDirection::NearestFirst)
+    {
+      std::reverse(order.begin(), order.end()); // reversed, the far component must come first
+    }
     PSI_CHECK(IsPermutation(order, a.NumTets()), "not a permutation");
     // Position of the last far-box tetrahedron and the first near-box one.
     size_t lastFar = 0, firstNear = order.size();
@@ -235,7 +251,8 @@ void TestDisconnected()
     PSI_CHECK(Violations(a, order, v.Eye, v.Parallel) == 0 && r.CyclesBroken == 0,
       "two boxes: violations or cycles");
   }
-  std::printf("two disjoint boxes, 4 views: the far component always entirely first\n");
+  std::printf("two disjoint boxes, 4 views, both directions: the far component always entirely "
+              "first (last, nearest first)\n");
 }
 
 void TestDegenerateFaces()

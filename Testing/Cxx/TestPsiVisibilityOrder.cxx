@@ -306,7 +306,12 @@ int main()
       cam->SetParallelProjection(v.Parallel);
       ren->ResetCamera();
       win->Render();
-      const std::vector<uint32_t>& order = mapper->GetLastDrawOrder();
+      // farthest first; nearest first when the frame composited front to back
+      std::vector<uint32_t> order = mapper->GetLastDrawOrder();
+      if (mapper->GetLastUsedEarlyRayTermination())
+      {
+        std::reverse(order.begin(), order.end());
+      }
       std::vector<uint32_t> sorted(order);
       std::sort(sorted.begin(), sorted.end());
       bool permutation = sorted.size() == tets.size();

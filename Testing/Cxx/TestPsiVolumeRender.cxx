@@ -440,6 +440,59 @@ void CheckEarlyDiscard(Fixture& f)
 }
 } // namespace
 
+// Early ray termination. On a mesh of many draw chunks whose opacity turns a pixel opaque within
+// a few cells, the frame composites front to back, the fragments behind opaque pixels fail the
+// depth test before they are shaded: fewer samples pass than back to front, and the image is the
+// same within 1/255. A mesh that can never turn a pixel opaque is drawn back to front, exactly
+// as with the switch off.
+void CheckEarlyRayTermination(Fixture& f)
+{
+  vtkPsiVolumeMapper* mapper = f.Mapper;
+  mapper->SetCountSamplesPassed(true);
+  struct Frame
+  {
+    std::vector<double> Image;
+    vtkIdType Samples;
+    bool Used;
+  };
+  auto draw = [&](bool on) {
+    mapper->SetEarlyRayTermination(on);
+    std::vector<double> image = psitest::GrabRGB(f.View.Window);
+    return Frame{ image, mapper->GetLastSamplesPassed(), mapper->GetLastUsedEarlyRayTermination() };
+  };
+  auto largest = [](const Frame& a, const Frame& b) {
+    double worst = 0;
+    for (size_t i = 0; i < a.Image.size(); ++i)
+    {
+      worst = std::max(worst, std::abs(a.Image[i] - b.Image[i]));
+    }
+    return worst;
+  };
+  Scene dense, faint;
+  MakeScene(dense, 16, 0.375, 0.05); // opacity up to 0.9 per 0.05 units
+  f.Draw(&dense);
+  const Frame back = draw(false), front = draw(true);
+  std::printf("early ray termination, dense: %lld samples passed back to front, %lld front to "
+              "back (%.0f%%), images %.0f/255 apart\n",
+    static_cast<long long>(back.Samples), static_cast<long long>(front.Samples),
+    100.0 * front.Samples / std::max<vtkIdType>(back.Samples, 1), 255 * largest(back, front));
+  PSI_CHECK(!back.Used && front.Used, "dense: early ray termination used only when on");
+  PSI_CHECK(back.Samples > 0 && front.Samples < back.Samples / 2,
+    "dense: %lld samples passed front to back, %lld back to front",
+    static_cast<long long>(front.Samples), static_cast<long long>(back.Samples));
+  PSI_CHECK(largest(back, front) <= 1.0 / 255 + 1e-9, "dense: front to back %g/255 off",
+    255 * largest(back, front));
+  MakeScene(faint, 16, 0.375, 100.0); // at most 1 - exp(-0.009 * 20.8) = 0.17 along any ray
+  f.Draw(&faint);
+  const Frame off = draw(false), on = draw(true);
+  PSI_CHECK(!on.Used && on.Samples == off.Samples && largest(off, on) == 0,
+    "faint: drawn front to back (%d), %lld samples against %lld, images %g/255 apart", on.Used,
+    static_cast<long long>(on.Samples), static_cast<long long>(off.Samples),
+    255 * largest(off, on));
+  mapper->SetCountSamplesPassed(false);
+  f.Draw(nullptr);
+}
+
 int main(int argc, char* argv[])
 {
   Fixture f(psitest::ParseArguments(argc, argv));
@@ -454,6 +507,7 @@ int main(int argc, char* argv[])
   CheckOpaquePlane(f);
   CheckCoarseCells(f);
   CheckEarlyDiscard(f);
+  CheckEarlyRayTermination(f);
 
   vtkPsiVolumeMapper* mapper = f.Mapper;
   psitest::CheckRequestedProjector(mapper->GetLastUsedProjector());
