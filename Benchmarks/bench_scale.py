@@ -3,8 +3,9 @@ mesh grows, each mapper in its own pvpython process so that peak memory is its o
 
 pvpython Benchmarks/bench_scale.py [--sizes 20 40 60] [--bluntfin] [--size 512] [--frames 4]
                                    [--mappers "Psi Volume GS" "Psi Volume GS fan" "Psi Volume CS"
+                                              "Psi Volume GS back to front"
                                               "Projected tetra"
-                                              "Bunyk ray cast"]
+                                              "Bunyk ray cast" "Outline"]
                                    [--bunyk-max-tets 400000] [--threads 1 2] [--budget 300]
                                    [--plot scale.png]
 
@@ -19,11 +20,15 @@ pvpython Benchmarks/bench_scale.py [--sizes 20 40 60] [--bluntfin] [--size 512] 
   - thread scaling: s/frame with the first --threads value of LP_NUM_THREADS (Mesa llvmpipe's
     rendering threads) over s/frame with the last (a second pass of rounds);
   - time step: a new time step of the same mesh (the scalars change, points and cells do not),
-    rendered at a fixed view, over a plain frame at that view.
+    rendered at a fixed view, over a plain frame at that view;
+  - own/PT: the speed relative to 'Projected tetra' on the volume's own time, each s/frame minus
+    the 'Outline' representation's (ParaView's fixed cost of a frame), when "Outline" is among
+    the --mappers.
 'Psi Volume' runs with its defaults (partial pre-integration, MPVONC), once with each projector:
 "Psi Volume GS" the geometry shader, "Psi Volume CS" the compute shader ("Psi Volume": Auto).
 "Psi Volume GS fan" draws the geometry shader's Shirley-Tuchman fan instead of the silhouettes
-(the two give the same image). Bunyk runs only up to
+(the two give the same image); " back to front" after a 'Psi Volume' name turns
+EarlyRayTermination off (within 1/255 of the same image). Bunyk runs only up to
 --bunyk-max-tets. Ratios are taken within one run; absolute times vary with the machine. --plot draws s/frame
 against tetrahedra (log-log, with each median's range over the rounds) for each mapper: the
 Wavelet sizes as lines, the Blunt Fin as separate points."""
@@ -141,9 +146,9 @@ def main():
         worker(args)
         return
     datasets = [str(s) for s in args.sizes] + (["bluntfin"] if args.bluntfin else [])
-    print("%-10s %-20s %11s %9s %9s %9s %9s %8s %12s" % (
+    print("%-10s %-27s %11s %9s %9s %9s %9s %8s %12s %9s" % (
         "tets", "mapper", "first (s)", "s/frame", "speed/PT", "RSS (MB)", "RSS/PT",
-        "%d->%d thr" % tuple(args.threads), "step/frame"))
+        "%d->%d thr" % tuple(args.threads), "step/frame", "own/PT"))
     measured = []
     for dataset in datasets:
         mappers = [m for m in args.mappers if not (
@@ -152,18 +157,27 @@ def main():
         # all threads first, then one: each pass its own interleaved rounds (halves the memory)
         fast = measure(dataset, mappers, args.threads[1], args)
         slow = measure(dataset, list(fast), args.threads[0], args)
-        pt = fast.get("Projected tetra")
+        pt, outline = fast.get("Projected tetra"), fast.get("Outline")
         for mapper, r in fast.items():
             s1 = slow.get(mapper)
-            print("%-10d %-20s %11.3f %9.3f %8.2fx %9.0f %8.2fx %7.2fx %11.2fx" % (
+            print("%-10d %-27s %11.3f %9.3f %8.2fx %9.0f %8.2fx %7.2fx %11.2fx %8.2fx" % (
                 r["cells"], mapper, r["first"], r["spf"],
                 1.0 / r["ratio"] if pt and r["ratio"] else float("nan"), r["rss"],
                 r["rss"] / pt["rss"] if pt else float("nan"),
                 s1["spf"] / r["spf"] if s1 and s1["spf"] else float("nan"),
-                r["step"] / r["plain"]), flush=True)
+                r["step"] / r["plain"], own_speed(r, pt, outline)), flush=True)
             measured.append(dict(r, data=dataset, mapper=mapper))
     if args.plot and measured:
         plot(measured, args)
+
+
+def own_speed(r, pt, outline):
+    """The speed relative to 'Projected tetra' on the volume's own time: each s/frame minus the
+    'Outline' frame's (ParaView's fixed cost), when both ran (else nan)."""
+    if not pt or not outline or r is outline:
+        return float("nan")
+    own, pt_own = r["spf"] - outline["spf"], pt["spf"] - outline["spf"]
+    return pt_own / own if own > 0 else float("nan")
 
 
 def plot(rows, args):

@@ -208,37 +208,10 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   }
   if (draw)
   {
-    const size_t pixels = size_t(I.Target.GetSize()[0]) * size_t(I.Target.GetSize()[1]);
     std::string drawError;
     I.Samples.Reset();
     auto drawImage = [&](int image) {
-      if (features.DepthPeel)
-      {
-        renWin->GetShaderCache()->ReadyShaderProgram(draw); // the fragment shader's program
-        draw->SetUniformi("peelStage", I.Peeling.GetStage());
-        draw->SetUniformi("peelRange", image);
-        I.Peeling.SetShaderParameters(draw, this, vol, renWin);
-      }
-      // front to back, the pixels already opaque are masked between strides of the order
-      std::function<void()> mask;
-      if (plan.FrontToBack)
-      {
-        mask = [&]() {
-          I.Samples.End(); // the mask's own samples are not the volume's
-          I.Target.MaskOpaquePixels(renWin, compute ? nullptr : draw);
-          I.Samples.Begin(I.CountSamples);
-        };
-      }
-      I.Samples.Begin(I.CountSamples);
-      if (compute)
-      {
-        I.Compute.Draw(renWin, I.Order, pixels, I.Limits().MaxStorageBlockBytes, drawError, mask);
-      }
-      else
-      {
-        I.Geometry.Draw(I.Order, draw, pixels, mask);
-      }
-      I.Samples.End();
+      this->DrawImage(renWin, vol, plan, draw, compute, image, drawError);
     };
     I.Target.DrawAndComposite(renWin, drawImage, I.Peeling.GetStage(),
       [&](vtkShaderProgram* composite) {
@@ -254,6 +227,42 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   }
   I.Mesh.Deactivate();
   psi::DeactivateTables(tables);
+}
+
+// One image of the frame (two within depth peeling, `image` naming the interval): the
+// projector's draw of the visibility order, front to back with the opaque pixels masked between
+// strides of the order; the samples that pass counted when asked (SetCountSamplesPassed).
+void vtkPsiVolumeMapper::DrawImage(vtkOpenGLRenderWindow* renWin, vtkVolume* vol,
+  const PsiFramePlan& plan, vtkShaderProgram* draw, bool compute, int image, std::string& error)
+{
+  Internals& I = *this->Impl;
+  if (plan.Features.DepthPeel)
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(draw); // the fragment shader's program
+    draw->SetUniformi("peelStage", I.Peeling.GetStage());
+    draw->SetUniformi("peelRange", image);
+    I.Peeling.SetShaderParameters(draw, this, vol, renWin);
+  }
+  std::function<void()> mask;
+  if (plan.FrontToBack)
+  {
+    mask = [&]() {
+      I.Samples.End(); // the mask's own samples are not the volume's
+      I.Target.MaskOpaquePixels(renWin, compute ? nullptr : draw);
+      I.Samples.Begin(I.CountSamples);
+    };
+  }
+  const size_t pixels = size_t(I.Target.GetSize()[0]) * size_t(I.Target.GetSize()[1]);
+  I.Samples.Begin(I.CountSamples);
+  if (compute)
+  {
+    I.Compute.Draw(renWin, I.Order, pixels, I.Limits().MaxStorageBlockBytes, error, mask);
+  }
+  else
+  {
+    I.Geometry.Draw(I.Order, draw, pixels, mask);
+  }
+  I.Samples.End();
 }
 
 // Gathers and uploads the mesh when the data or the array changed. False: nothing to draw.

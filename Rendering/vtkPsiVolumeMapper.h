@@ -236,6 +236,8 @@ private:
     vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& features, bool compute);
   void DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren, vtkVolume* vol,
     const PsiFrameCamera& cam, const PsiFramePlan& plan, const std::vector<PsiGpuTable*>& tables);
+  void DrawImage(vtkOpenGLRenderWindow* renWin, vtkVolume* vol, const PsiFramePlan& plan,
+    vtkShaderProgram* draw, bool compute, int image, std::string& error);
   void SetShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkVolume* vol,
     const PsiFrameCamera& cam, const PsiFramePlan& plan, const std::vector<PsiGpuTable*>& tables);
 

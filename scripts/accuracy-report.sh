@@ -8,7 +8,7 @@
 # DIR/methods.png.
 #   bash scripts/accuracy-report.sh [FILE|bluntfin|post|comb|spx] [--array NAME] [--out DIR]
 #                                   [--size 384] [--frames 3] [--resample-dims 64 128 256]
-#                                   [--no-paraview]
+#                                   [--no-paraview] [--back-to-front]
 #
 # Under an X server (scripts/lib/with-xvfb.sh: DISPLAY's, else Xvfb). The build: build/ or
 # $PSI_BUILD_DIR; the NASA datasets: ../shared/data or $PSI_DATA_DIR; the report names llvmpipe's

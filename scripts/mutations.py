@@ -360,7 +360,10 @@ MUTATIONS = [
              "  emitPiece(e, smin, smax, nearClipped);\n  for (int j = last + 1; j > e; --j)\n",
              ["PsiRendering.Isosurfaces"]),
     Mutation("iso_surface_at_wrong_end", "Shaders/PsiIsoTrianglesGS.glsl",
-             "emitSurface(j - 1);", "emitSurface(j);", ["PsiRendering.Isosurfaces"]),
+             "    emitSurface(j - 1);\n  }", "    emitSurface(j);\n  }", ["PsiRendering.Isosurfaces"]),
+    # Front to back (early ray termination) the same sequence reversed, with the same mistake.
+    Mutation("iso_surface_at_wrong_end_nearest_first", "Shaders/PsiIsoTrianglesGS.glsl",
+             "      emitSurface(j - 1);\n", "      emitSurface(j);\n", ["PsiRendering.Isosurfaces"]),
     Mutation("iso_parallel_eye_side", "Shaders/PsiIsoTrianglesGS.glsl",
              "(gradient.z < 0.0 ? -big : big)", "(gradient.z < 0.0 ? big : -big)",
              ["PsiRendering.Isosurfaces"]),
@@ -423,8 +426,24 @@ MUTATIONS = [
              "e[k] = parallel ? -eye[k] : eye[k] - a[k];", "e[k] = parallel ? eye[k] : eye[k] - a[k];",
              ["PsiCore.MPVONC"]),
     Mutation("mpvonc_tie_break_reversed", "Core/PsiMPVONCSort.cxx",
-             "return (static_cast<uint64_t>(~u) << 32) | id;",
-             "return (static_cast<uint64_t>(~u) << 32) | (0xffffffffu - id);", ["PsiCore.MPVONC"] + ORDER),
+             "return (static_cast<uint64_t>(direction == SortDirection::FarthestFirst ? ~u : u) << 32) | id;",
+             "return (static_cast<uint64_t>(direction == SortDirection::FarthestFirst ? ~u : u) << 32) | (0xffffffffu - id);",
+             ["PsiCore.MPVONC"] + ORDER),
+    # Nearest first (front-to-back compositing): emitting a tetrahedron releases the neighbours
+    # in front of it instead of those behind it.
+    Mutation("mpvonc_nearest_first_releases_wrong_side", "Core/PsiMPVONCSort.cxx",
+             "const int8_t after = static_cast<int8_t>(-EmittedBefore(direction));",
+             "const int8_t after = NeighborInFront;", ["PsiCore.MPVONC"]),
+    # Early ray termination: the tetrahedra blended "over" although drawn nearest first; the
+    # mask written where the image is only half opaque; the plan choosing it within depth peeling.
+    Mutation("early_termination_blends_over", "Rendering/PsiRenderTarget.cxx",
+             "GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);",
+             "GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);", GL),
+    Mutation("early_termination_mask_half_opaque", "Shaders/PsiOpaqueMaskFS.glsl",
+             "< saturatedOpacity)", "< 0.5 * saturatedOpacity)", GL),
+    Mutation("early_termination_within_peeling", "Core/PsiFramePlan.cxx",
+             "facts.MasksOpaquePixels && !f.DepthPeel && canSaturate;",
+             "facts.MasksOpaquePixels && canSaturate;", ["PsiCore.FramePlan"]),
     # A cycle break (Williams 1992 §7) takes the nearest remaining tetrahedron instead of the
     # farthest (the key's ascending order is farthest first), or the one of smallest id: the
     # breaks cascade on a mesh with cycles (a twisted Delaunay mesh).

@@ -255,16 +255,21 @@ def reference_image(cap, exe=None, runs=2):
     return images, timing.frame_time(seconds)
 
 
-def psi_contenders(cap, methods):
-    """'Psi Volume' with each method, adaptive sampling off and on: (contenders, images)."""
+def psi_contenders(cap, methods, back_to_front=False):
+    """'Psi Volume' with each method, adaptive sampling off and on, and with `back_to_front` also
+    each method with EarlyRayTermination off ("M, back to front"): (contenders, images)."""
     contenders, images = [], {}
+    own = int(cap.rep.EarlyRayTermination)  # the display's own, for every other row
+    variants = [("Off", own), ("On", own)] + ([("Off", 0)] if back_to_front and own else [])
     for m in methods:
-        for adaptive in ("Off", "On"):
-            name = "%s%s" % (m, " + adaptive" if adaptive == "On" else "")
+        for adaptive, termination in variants:
+            name = "%s%s%s" % (m, " + adaptive" if adaptive == "On" else "",
+                               ", back to front" if own and not termination else "")
 
-            def prepare(m=m, adaptive=adaptive):
+            def prepare(m=m, adaptive=adaptive, termination=termination):
                 data.set_mapper(cap.rep, "Psi Volume|" + m)
                 cap.rep.AdaptiveSampling = adaptive
+                cap.rep.EarlyRayTermination = termination
 
             prepare()
             simple.Render(cap.view)
@@ -278,9 +283,12 @@ def interactive_contender(cap, method):
     the mesh drawn by VTK's GPU ray caster, whatever the method; `method` is set for the still
     frame before it), timed with InteractiveRender. Returns (contender, image, the level of
     detail's build seconds, note)."""
+    own = int(cap.rep.EarlyRayTermination)
+
     def prepare():
         data.set_mapper(cap.rep, "Psi Volume|" + method)
         cap.rep.AdaptiveSampling = "Off"
+        cap.rep.EarlyRayTermination = own
         cap.rep.InteractionMode = "Volume LOD"
 
     prepare()
@@ -342,7 +350,7 @@ def errors(img, ref):
 def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
            paraview_mappers=PARAVIEW_MAPPERS, title=None, paraview_timeout=120, budget=300.0,
            resample_dims=RESAMPLE_DIMS, progress=None, plugin=None, reference_renderer=None,
-           pvpython=None, threads="all"):
+           pvpython=None, threads="all", back_to_front=False):
     """Renders the active (or given) view's volume with every method and mapper, the
     interactive image of 'Psi Volume' and 'Resample To Image' at each of `resample_dims`,
     measures each image against the exact reference at the same view, prints the table and
@@ -352,7 +360,8 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
     Where things are: `plugin` (default: the one loaded, data.find_plugin), which the child
     pvpythons (`pvpython`, default: the one on PATH) load; `reference_renderer` (default:
     find_reference_renderer beside that plugin). `threads`: the llvmpipe thread count the
-    report names (this process's LP_NUM_THREADS; "all": Mesa's default)."""
+    report names (this process's LP_NUM_THREADS; "all": Mesa's default). `back_to_front`: also
+    each method with EarlyRayTermination off, to show what early ray termination changes."""
     step = progress or (lambda fraction, text: None)
     view = view or simple.GetActiveView()
     src = src or simple.GetActiveSource()
@@ -366,7 +375,7 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
         cap.plugin, cap.pvpython = plugin, pvpython
         cap.reference_renderer = find_reference_renderer(reference_renderer, plugin)
         rows, ref, timed, method = measure(cap, step, frames, paraview_mappers, paraview_timeout,
-                                           budget, resample_dims)
+                                           budget, resample_dims, back_to_front)
     for r in rows:
         r["mean"], r["max"] = errors(r["image"], ref)
         r["err_s"] = r["mean"] * r["spf"] if r["spf"] is not None else float("nan")
@@ -381,7 +390,8 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
     return [{k: v for k, v in r.items() if k != "image"} for r in rows]
 
 
-def measure(cap, step, frames, paraview_mappers, paraview_timeout, budget, resample_dims):
+def measure(cap, step, frames, paraview_mappers, paraview_timeout, budget, resample_dims,
+            back_to_front=False):
     """The images and times of the scene `cap` (report()), changing the display's settings as it
     goes: (rows with their images, the reference image, the timing result, the method of the
     interactive row)."""
@@ -394,7 +404,7 @@ def measure(cap, step, frames, paraview_mappers, paraview_timeout, budget, resam
     method = rep.GetProperty("IntegrationMethod").GetData()
     methods = list(rep.GetProperty("IntegrationMethod").Available)
     step(0.2, "the images of 'Psi Volume'")
-    psi, images = psi_contenders(cap, methods)
+    psi, images = psi_contenders(cap, methods, back_to_front)
     live, images[INTERACTIVE], build, live_note = interactive_contender(cap, method)
     step(0.3, "ParaView's mappers")
     pv, pv_images, once = paraview_contenders(cap, paraview_mappers, paraview_timeout,
@@ -487,6 +497,8 @@ def main():
     p.add_argument("--frames", type=int, default=3)
     p.add_argument("--wavelet-half", type=int, default=20)
     p.add_argument("--unit-distance", type=float)
+    p.add_argument("--back-to-front", action="store_true",
+                   help="also each method with EarlyRayTermination off")
     p.add_argument("--no-paraview", action="store_true",
                    help="skip ParaView's own mappers ('Resample To Image' too)")
     p.add_argument("--paraview-mappers", nargs="*", default=PARAVIEW_MAPPERS,
@@ -523,7 +535,7 @@ def main():
            args.budget, [] if args.no_paraview else args.resample_dims,
            plugin=data.find_plugin(args.plugin, args.build_dir),
            reference_renderer=args.reference_renderer, pvpython=args.pvpython,
-           threads=args.threads)
+           threads=args.threads, back_to_front=args.back_to_front)
     process.exit_now(0)
 
 
