@@ -376,6 +376,20 @@ void CheckIsosurfaceMethodsAgreeInView(Scene& s, const IsoCase& k, int index, in
     mapper->GetLastUsedIsosurfaceMethod() ==
     static_cast<int>(psi::IsosurfaceMethods::MarchingTetrahedra);
   const bool discarded = mapper->GetLastUsedEarlyDiscard();
+  // front to back (early ray termination, chosen wherever a surface can hide what is behind it)
+  // each cell's pieces and surfaces are emitted in the reverse sequence: the same image as back
+  // to front within 1/255
+  const bool frontToBack = mapper->GetLastUsedEarlyRayTermination();
+  double fromBack = 0;
+  if (frontToBack && usedMT)
+  {
+    mapper->EarlyRayTerminationOff();
+    fromBack = Compare(mt, Grab(win)).Max;
+    mapper->EarlyRayTerminationOn();
+  }
+  PSI_CHECK(frontToBack && fromBack <= 1.0 / 255 + 1e-9,
+    "%s view %d: drawn front to back (%d), %g/255 from back to front", k.Name, view, frontToBack,
+    255 * fromBack);
   mapper->SetIsosurfaceMethod(psi::IsosurfaceMethods::Auto);
   Grab(win);
   PSI_CHECK(mapper->GetLastUsedIsosurfaceMethod() ==
@@ -391,9 +405,9 @@ void CheckIsosurfaceMethodsAgreeInView(Scene& s, const IsoCase& k, int index, in
         std::abs(mt[i + 2] - perFragment[i + 2]) > 6.0 / 255;
   }
   std::printf("isosurfaces %-18s view %d: marching tetrahedra%s vs per fragment: mean %.5f "
-              "max %.3f, %.2f%% of pixels differ by > 2/255 a channel\n",
+              "max %.3f, %.2f%% of pixels differ by > 2/255 a channel; vs back to front %.0f/255\n",
     k.Name, view, usedMT ? (discarded ? " (early discard)" : "") : " (not used: limit)", d.Mean,
-    d.Max, 100.0 * differ / (W * H));
+    d.Max, 100.0 * differ / (W * H), 255 * fromBack);
   PSI_CHECK(usedMT == k.FitsGS,
     "%s view %d: marching tetrahedra used where they fit the geometry shader's output, "
     "per fragment beyond",
