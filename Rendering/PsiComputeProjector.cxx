@@ -156,7 +156,7 @@ void PsiComputeProjector::ReserveBuffers(size_t tetsPerPass)
 
 bool PsiComputeProjector::Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder& order,
   size_t targetPixels, long long maxBlockBytes, std::string& error,
-  const std::function<void()>& betweenStrides)
+  const std::function<bool()>& betweenStrides)
 {
   const size_t vertexBytes = size_t(this->SlotVertices) * this->Vec4sPerVertex * 16;
   const size_t indexBytes = size_t(this->SlotTriangles) * 3 * sizeof(GLuint);

@@ -47,7 +47,7 @@ public:
   /// False, with `error` set, when not even one work group's triangles fit it (nothing drawn).
   /// `betweenStrides` as for PsiVisibilityOrder::Draw (the vertex array is bound again after it).
   bool Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder& order, size_t targetPixels,
-    long long maxBlockBytes, std::string& error, const std::function<void()>& betweenStrides = {});
+    long long maxBlockBytes, std::string& error, const std::function<bool()>& betweenStrides = {});
   void ReleaseGraphicsResources(vtkWindow* win);
 
   /// Bytes of the reused vertex and index buffers (their size bounds the tetrahedra per pass).

@@ -27,7 +27,7 @@ vtkShaderProgram* PsiGeometryProjector::ReadyProgram(vtkOpenGLRenderWindow* renW
 }
 
 void PsiGeometryProjector::Draw(PsiVisibilityOrder& order, vtkShaderProgram* program,
-  size_t targetPixels, const std::function<void()>& betweenStrides) const
+  size_t targetPixels, const std::function<bool()>& betweenStrides) const
 {
   // each tetrahedron is one point whose attribute is its four point ids (PsiVolumeVS.glsl)
   const GLint loc = glGetAttribLocation(static_cast<GLuint>(program->GetHandle()), "tetPointIds");

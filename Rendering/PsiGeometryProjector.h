@@ -29,7 +29,7 @@ public:
   /// Draws every tetrahedron of `order` as a point with `program` (bound, with the mesh's
   /// vertex array), its four point ids streamed by the order, on a target of `targetPixels`.
   void Draw(PsiVisibilityOrder& order, vtkShaderProgram* program, size_t targetPixels,
-    const std::function<void()>& betweenStrides = {}) const;
+    const std::function<bool()>& betweenStrides = {}) const;
   void ReleaseGraphicsResources();
 
 private:

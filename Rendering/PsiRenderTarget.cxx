@@ -122,6 +122,7 @@ void PsiRenderTarget::DrawAndComposite(vtkOpenGLRenderWindow* renWin,
     ostate->vtkglDisable(GL_SCISSOR_TEST);
     ostate->vtkglClearColor(0, 0, 0, 0);
     // the depth test against the scene's opaque geometry, and front to back against the mask
+    this->MaskQueryPending = false;
     if (frontToBack && !this->DepthTest)
     {
       this->ClearDepth(ostate); // no scene depth was copied: the far plane everywhere
@@ -196,8 +197,24 @@ bool PsiRenderTarget::CanMaskOpaquePixels()
   return glTextureBarrier != nullptr;
 }
 
-void PsiRenderTarget::MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderProgram* drawProgram)
+// Whether the previous mask of this image found opaque pixels (true before the first). Its
+// count is read when the next mask is due, a stride later: waiting for it then costs less than
+// the masks its answer saves (llvmpipe had never finished it by then without the wait).
+bool PsiRenderTarget::PreviousMaskFoundOpaque()
 {
+  if (!this->MaskQueryPending)
+  {
+    return true;
+  }
+  GLuint64 opaque = 0;
+  glGetQueryObjectui64v(this->MaskQuery, GL_QUERY_RESULT, &opaque);
+  this->MaskQueryPending = false;
+  return opaque > 0;
+}
+
+bool PsiRenderTarget::MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderProgram* drawProgram)
+{
+  const bool found = this->PreviousMaskFoundOpaque();
   vtkOpenGLState* ostate = renWin->GetState();
   GLint vertexArray = 0;
   glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray);
@@ -227,7 +244,14 @@ void PsiRenderTarget::MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderP
     image->Activate();
     program->SetUniformi("volumeImage", image->GetTextureUnit());
     program->SetUniformf("saturatedOpacity", static_cast<float>(psi::SaturatedOpacity));
+    if (!this->MaskQuery)
+    {
+      glGenQueries(1, &this->MaskQuery);
+    }
+    glBeginQuery(GL_SAMPLES_PASSED, this->MaskQuery); // the pixels it finds opaque
     this->MaskQuad->Render();
+    glEndQuery(GL_SAMPLES_PASSED);
+    this->MaskQueryPending = true;
     image->Deactivate();
   }
   if (drawProgram)
@@ -235,6 +259,7 @@ void PsiRenderTarget::MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderP
     renWin->GetShaderCache()->ReadyShaderProgram(drawProgram);
   }
   glBindVertexArray(static_cast<GLuint>(vertexArray));
+  return found;
 }
 
 // The volume images (premultiplied) into the framebuffer being rendered, with the blending the
@@ -287,5 +312,11 @@ void PsiRenderTarget::ReleaseGraphicsResources(vtkWindow* win)
   }
   this->CompositeQuad.reset();
   this->MaskQuad.reset();
+  if (this->MaskQuery)
+  {
+    glDeleteQueries(1, &this->MaskQuery);
+  }
+  this->MaskQuery = 0;
+  this->MaskQueryPending = false;
   this->Size[0] = this->Size[1] = 0;
 }

@@ -54,8 +54,9 @@ public:
     const std::function<void(vtkShaderProgram*)>& compositeParameters, bool frontToBack = false);
   /// Within drawImage of a front-to-back DrawAndComposite: the nearest depth where the image
   /// drawn so far is opaque (PsiOpaqueMaskFS.glsl), then `drawProgram` and the vertex array
-  /// bound again.
-  void MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderProgram* drawProgram);
+  /// bound again. False when the previous mask of this image found no opaque pixel (its count of
+  /// samples passed); true when it found some, or for the first mask of the image.
+  bool MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderProgram* drawProgram);
   /// Whether this OpenGL has what MaskOpaquePixels needs (glTextureBarrier: OpenGL 4.5 or
   /// ARB_texture_barrier).
   static bool CanMaskOpaquePixels();
@@ -68,6 +69,7 @@ private:
     const std::function<void(vtkShaderProgram*)>& compositeParameters);
   void ReserveImages(vtkOpenGLRenderWindow* renWin, int images);
   void ClearDepth(vtkOpenGLState* ostate);
+  bool PreviousMaskFoundOpaque();
 
   vtkNew<vtkTextureObject> DepthTexture;
   vtkNew<vtkTextureObject> DepthSampleTexture;
@@ -75,6 +77,8 @@ private:
   vtkNew<vtkTextureObject> FrontImage; // the second image, within depth peeling
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
+  unsigned int MaskQuery = 0;    ///< GL_SAMPLES_PASSED of the last mask: its opaque pixels
+  bool MaskQueryPending = false; ///< the last mask of this image has a count to read
   int Size[2] = { 0, 0 };
   int Origin[2] = { 0, 0 };
   bool SampleDepth = false;

@@ -137,7 +137,7 @@ void WaitAndDelete(GLsync fence)
 } // namespace
 
 void PsiVisibilityOrder::Draw(const std::function<void(size_t, size_t)>& drawChunk,
-  size_t targetPixels, const std::function<void()>& betweenStrides)
+  size_t targetPixels, const std::function<bool()>& betweenStrides)
 {
   // Streamed in chunks (ChunkTetsFor) through InFlight slots of the stream buffer, so that the
   // GPU holds no copy of the cells and no single draw call is unbounded. Mesa's llvmpipe bins
@@ -149,13 +149,14 @@ void PsiVisibilityOrder::Draw(const std::function<void(size_t, size_t)>& drawChu
   // slot for the next. Each fence also ends llvmpipe's scene (see ChunkTetsFor).
   std::array<GLsync, InFlight> fences{};
   const size_t n = this->Size, chunk = ChunkTetsFor(n, targetPixels);
-  const size_t stride = StrideTets(n, chunk);
+  size_t stride = StrideTets(n, chunk), next = stride;
   this->Drawn.clear();
   for (size_t first = 0, i = 0; first < n; first += chunk, ++i)
   {
-    if (betweenStrides && first > 0 && first % stride == 0)
+    if (betweenStrides && first >= next)
     {
-      betweenStrides();
+      stride *= betweenStrides() ? 1 : 2;
+      next = first + stride;
     }
     GLsync& slot = fences[i % InFlight];
     if (slot)

@@ -51,13 +51,15 @@ public:
   /// writes the chunk's four point ids per tetrahedron to the stream buffer (GetStreamBuffer)
   /// and calls drawChunk(first, count), `first` being the chunk's first tetrahedron there.
   /// Chunks are ChunkTetsFor(GetSize(), targetPixels) tetrahedra. `betweenStrides`, when set, is
-  /// called between chunks once every StrideTets(GetSize(), chunk) tetrahedra, not after the
-  /// last chunk (front to back, the opaque pixels are masked there).
+  /// called between chunks after StrideTets(GetSize(), chunk) tetrahedra, not after the last
+  /// chunk (front to back, the opaque pixels are masked there); when it returns false (its last
+  /// mask found no opaque pixel) the stride to its next call doubles.
   void Draw(const std::function<void(size_t first, size_t count)>& drawChunk,
-    size_t targetPixels, const std::function<void()>& betweenStrides = {});
-  /// Tetrahedra between two calls of Draw's betweenStrides: whole chunks, at most
-  /// StridesPerFrame strides a frame. Each call is a full-screen pass (PsiOpaqueMaskFS.glsl);
-  /// docs/decisions.md, "Early ray termination", has the figures behind the number.
+    size_t targetPixels, const std::function<bool()>& betweenStrides = {});
+  /// Tetrahedra between two calls of Draw's betweenStrides at first: whole chunks, at most
+  /// StridesPerFrame strides a frame. Each call is a full-screen pass (PsiOpaqueMaskFS.glsl)
+  /// that waits for the rasterizer; docs/decisions.md, "Early ray termination: how it is built",
+  /// has the figures behind the number and the doubling.
   static constexpr size_t StrideTets(size_t tets, size_t chunk)
   {
     return std::max(chunk, (tets / StridesPerFrame + chunk - 1) / chunk * chunk);

@@ -243,13 +243,14 @@ void vtkPsiVolumeMapper::DrawImage(vtkOpenGLRenderWindow* renWin, vtkVolume* vol
     draw->SetUniformi("peelRange", image);
     I.Peeling.SetShaderParameters(draw, this, vol, renWin);
   }
-  std::function<void()> mask;
+  std::function<bool()> mask;
   if (plan.FrontToBack)
   {
     mask = [&]() {
       I.Samples.End(); // the mask's own samples are not the volume's
-      I.Target.MaskOpaquePixels(renWin, compute ? nullptr : draw);
+      const bool found = I.Target.MaskOpaquePixels(renWin, compute ? nullptr : draw);
       I.Samples.Begin(I.CountSamples);
+      return found;
     };
   }
   const size_t pixels = size_t(I.Target.GetSize()[0]) * size_t(I.Target.GetSize()[1]);
