@@ -31,14 +31,17 @@ bool IsoTriangles(const psi::Settings& s, const PsiSceneFacts& facts, psi::Shade
 
 // Front to back with early ray termination when it is on and a pixel can turn opaque: the
 // volume's opacity can reach psi::SaturatedOpacity along a ray through the bounds, or an
-// isosurface may hide what is behind it; the driver can mask opaque pixels. Not within depth peeling, whose passes composite the
-// volume with the translucent geometry between the peels back to front.
+// isosurface may hide what is behind it, and no earlier frame of the same data and transfer
+// function found every pixel short of opaque (its masks cost and saved nothing); the driver can
+// mask opaque pixels. Not within depth peeling, whose passes composite
+// the volume with the translucent geometry between the peels back to front.
 bool FrontToBack(const psi::Settings& s, const PsiSceneFacts& facts, const psi::ShaderFeatures& f)
 {
   const std::vector<float> isoOpacities = s.Isosurfaces().Opacities;
   const bool canSaturate = facts.MaxRayOpacity >= psi::SaturatedOpacity ||
     std::any_of(isoOpacities.begin(), isoOpacities.end(), [](float a) { return a > 0; });
-  return s.EarlyRayTermination && facts.MasksOpaquePixels && !f.DepthPeel && canSaturate;
+  return s.EarlyRayTermination && facts.MasksOpaquePixels && !f.DepthPeel && canSaturate &&
+    !facts.MasksFoundNoOpaque;
 }
 } // namespace
 

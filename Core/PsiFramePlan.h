@@ -31,6 +31,9 @@ struct PsiSceneFacts
   double MaxRayOpacity = 1;
   /// The driver can mask the opaque pixels between draws (PsiRenderTarget::CanMaskOpaquePixels).
   bool MasksOpaquePixels = true;
+  /// An earlier frame of the same data, transfer function and unit distance went front to back
+  /// and its masks found no opaque pixel.
+  bool MasksFoundNoOpaque = false;
   /// Whether the geometry shader composed for these features fits the driver's output limits
   /// (the mapper asks psi::FitsGeometryOutputLimits with GL_MAX_GEOMETRY_OUTPUT_VERTICES and
   /// GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS); empty: not asked, it fits.

@@ -123,6 +123,8 @@ void PsiRenderTarget::DrawAndComposite(vtkOpenGLRenderWindow* renWin,
     ostate->vtkglClearColor(0, 0, 0, 0);
     // the depth test against the scene's opaque geometry, and front to back against the mask
     this->MaskQueryPending = false;
+    this->MasksFoundOpaque = true;
+    this->Masks = 0;
     if (frontToBack && !this->DepthTest)
     {
       this->ClearDepth(ostate); // no scene depth was copied: the far plane everywhere
@@ -161,6 +163,10 @@ void PsiRenderTarget::DrawAndComposite(vtkOpenGLRenderWindow* renWin,
       this->Framebuffer->ActivateDrawBuffer(i);
       ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
       drawImage(i);
+    }
+    if (this->MaskQueryPending)
+    {
+      this->PreviousMaskFoundOpaque(); // the last mask's count, for GetMasksFoundOpaque
     }
     ostate->vtkglBlendEquationSeparate(equation[0], equation[1]);
     ostate->PopFramebufferBindings();
@@ -209,6 +215,7 @@ bool PsiRenderTarget::PreviousMaskFoundOpaque()
   GLuint64 opaque = 0;
   glGetQueryObjectui64v(this->MaskQuery, GL_QUERY_RESULT, &opaque);
   this->MaskQueryPending = false;
+  this->MasksFoundOpaque = this->MasksFoundOpaque || opaque > 0;
   return opaque > 0;
 }
 
@@ -252,6 +259,10 @@ bool PsiRenderTarget::MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderP
     this->MaskQuad->Render();
     glEndQuery(GL_SAMPLES_PASSED);
     this->MaskQueryPending = true;
+    if (this->Masks++ == 0)
+    {
+      this->MasksFoundOpaque = false; // from now on, what the masks' counts say
+    }
     image->Deactivate();
   }
   if (drawProgram)

@@ -57,6 +57,9 @@ public:
   /// bound again. False when the previous mask of this image found no opaque pixel (its count of
   /// samples passed); true when it found some, or for the first mask of the image.
   bool MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderProgram* drawProgram);
+  /// After a front-to-back DrawAndComposite: whether its masks found an opaque pixel (true when
+  /// it masked nothing, or within depth peeling's two images).
+  bool GetMasksFoundOpaque() const { return this->MasksFoundOpaque; }
   /// Whether this OpenGL has what MaskOpaquePixels needs (glTextureBarrier: OpenGL 4.5 or
   /// ARB_texture_barrier).
   static bool CanMaskOpaquePixels();
@@ -79,6 +82,8 @@ private:
   std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
   unsigned int MaskQuery = 0;    ///< GL_SAMPLES_PASSED of the last mask: its opaque pixels
   bool MaskQueryPending = false; ///< the last mask of this image has a count to read
+  bool MasksFoundOpaque = true;  ///< a mask of this image found an opaque pixel, or none ran
+  int Masks = 0;                 ///< masks of this image
   int Size[2] = { 0, 0 };
   int Origin[2] = { 0, 0 };
   bool SampleDepth = false;

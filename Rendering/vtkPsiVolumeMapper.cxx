@@ -137,6 +137,11 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
         ren, renWin, plan.Features.NearClip || plan.Features.OpaqueClip, plan.SceneDepth))
   {
     this->DrawVolume(renWin, ren, vol, cam, plan, tables);
+    if (plan.FrontToBack) // whether pixels turn opaque at all, for the next frames' plans
+    {
+      I.Saturation = { I.Mesh.GetVersion(), I.Tables.Transfer.GetVersion(), this->GetMTime(),
+        !I.Target.GetMasksFoundOpaque() };
+    }
   }
   I.Order.Finish();
   if (sorted)

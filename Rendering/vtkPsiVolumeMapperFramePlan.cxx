@@ -79,6 +79,9 @@ PsiSceneFacts vtkPsiVolumeMapper::SceneFacts(
     std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
       (b[5] - b[4]) * (b[5] - b[4])));
   facts.MasksOpaquePixels = PsiRenderTarget::CanMaskOpaquePixels();
+  facts.MasksFoundNoOpaque = I.Saturation.NoOpaque && I.Saturation.Mesh == I.Mesh.GetVersion() &&
+    I.Saturation.Transfer == I.Tables.Transfer.GetVersion() &&
+    I.Saturation.Settings == this->GetMTime();
   if (MayUseIsoTriangles(this->Settings, facts))
   {
     int vertices = 0, components = 0;

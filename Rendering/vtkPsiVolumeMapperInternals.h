@@ -29,6 +29,14 @@ struct vtkPsiVolumeMapper::Internals
   PsiDepthPeelingCalls Peeling; // the depth-peeling stage of this call
   PsiSamplesPassed Samples;     // the volume's samples that pass the depth test (testing aid)
   bool CountSamples = false;
+  // What the last front-to-back frame's masks found, and of which mesh, sampled transfer
+  // function and settings (PsiSceneFacts::MasksFoundNoOpaque).
+  struct
+  {
+    int Mesh = -1, Transfer = -1;
+    vtkMTimeType Settings = 0;
+    bool NoOpaque = false;
+  } Saturation;
 
   // Transfer-function nodes for adaptive sampling, for the property and range they came from.
   PsiAdaptiveNodes AdaptiveNodes;

@@ -442,8 +442,10 @@ MUTATIONS = [
     Mutation("early_termination_mask_half_opaque", "Shaders/PsiOpaqueMaskFS.glsl",
              "< saturatedOpacity)", "< 0.5 * saturatedOpacity)", GL),
     Mutation("early_termination_within_peeling", "Core/PsiFramePlan.cxx",
-             "facts.MasksOpaquePixels && !f.DepthPeel && canSaturate;",
-             "facts.MasksOpaquePixels && canSaturate;", ["PsiCore.FramePlan"]),
+             "facts.MasksOpaquePixels && !f.DepthPeel && canSaturate &&",
+             "facts.MasksOpaquePixels && canSaturate &&", ["PsiCore.FramePlan"]),
+    Mutation("early_termination_despite_no_opaque_pixel", "Core/PsiFramePlan.cxx",
+             "    !facts.MasksFoundNoOpaque;", "    true;", ["PsiCore.FramePlan"]),
     # A cycle break (Williams 1992 §7) takes the nearest remaining tetrahedron instead of the
     # farthest (the key's ascending order is farthest first), or the one of smallest id: the
     # breaks cascade on a mesh with cycles (a twisted Delaunay mesh).

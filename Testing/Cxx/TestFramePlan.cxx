@@ -209,6 +209,9 @@ void TestEarlyRayTermination()
   facts.DepthPeeled = false;
   facts.MasksOpaquePixels = false;
   PSI_CHECK(!PlanFrame(s, facts).FrontToBack, "not when the driver cannot mask opaque pixels");
+  facts.MasksOpaquePixels = true;
+  facts.MasksFoundNoOpaque = true;
+  PSI_CHECK(!PlanFrame(s, facts).FrontToBack, "not when an earlier frame found no opaque pixel");
 }
 } // namespace
 

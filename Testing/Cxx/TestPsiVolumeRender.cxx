@@ -443,7 +443,8 @@ void CheckEarlyDiscard(Fixture& f)
 // Early ray termination. On a mesh of many draw chunks whose opacity turns a pixel opaque within
 // a few cells, the frame composites front to back, the fragments behind opaque pixels fail the
 // depth test before they are shaded: fewer samples pass than back to front, and the image is the
-// same within 1/255. A mesh that can never turn a pixel opaque is drawn back to front, exactly
+// same within 1/255. A mesh whose pixels do not turn opaque after all is drawn back to front
+// from its second frame; one that can never turn a pixel opaque is drawn back to front, exactly
 // as with the switch off.
 void CheckEarlyRayTermination(Fixture& f)
 {
@@ -482,6 +483,25 @@ void CheckEarlyRayTermination(Fixture& f)
     static_cast<long long>(front.Samples), static_cast<long long>(back.Samples));
   PSI_CHECK(largest(back, front) <= 1.0 / 255 + 1e-9, "dense: front to back %g/255 off",
     255 * largest(back, front));
+  // A spike of opacity at the top of the range: by the bound a ray could turn opaque, but none
+  // does. The first frame goes front to back and its masks find no opaque pixel; the next frame
+  // of the same data and transfer function goes back to front; a new transfer function, front
+  // to back again.
+  Scene spike;
+  MakeScene(spike, 16, 0.375, 1.0);
+  double r[2];
+  spike.Grid->GetPointData()->GetScalars()->GetRange(r);
+  spike.Opacity->RemoveAllPoints();
+  spike.Opacity->AddPoint(r[0], 0.0);
+  spike.Opacity->AddPoint(r[1] - 0.01 * (r[1] - r[0]), 0.0);
+  spike.Opacity->AddPoint(r[1], 1.0);
+  f.Draw(&spike);
+  const Frame first = draw(true), next = draw(true);
+  spike.Opacity->AddPoint(r[1], 0.9);
+  const Frame edited = draw(true);
+  PSI_CHECK(first.Used && !next.Used && edited.Used && largest(first, next) <= 1.0 / 255 + 1e-9,
+    "spike: front to back %d, then %d, after an edit %d (images %g/255 apart)", first.Used,
+    next.Used, edited.Used, 255 * largest(first, next));
   MakeScene(faint, 16, 0.375, 100.0); // at most 1 - exp(-0.009 * 20.8) = 0.17 along any ray
   f.Draw(&faint);
   const Frame off = draw(false), on = draw(true);
