@@ -17,3 +17,6 @@ vtk_module_wrap_python(
   INSTALL_HEADERS     OFF
   BUILD_STATIC        OFF
   COMPONENT           runtime)
+# (as for the ClientServer wrappers, Plugin/CMakeLists.txt)
+psi_wrappers_depend_on_setting_list(
+  "${CMAKE_CURRENT_BINARY_DIR}/CMakeFiles/PsiVolumeRenderingPython/vtkPsiVolumeMapperPython.cxx")
