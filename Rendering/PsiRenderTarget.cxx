@@ -122,8 +122,7 @@ void PsiRenderTarget::DrawAndComposite(vtkOpenGLRenderWindow* renWin,
     ostate->vtkglDisable(GL_SCISSOR_TEST);
     ostate->vtkglClearColor(0, 0, 0, 0);
     // the depth test against the scene's opaque geometry, and front to back against the mask
-    this->MaskQueryPending = false;
-    this->MasksFoundOpaque = true;
+    this->MasksFoundOpaque = false;
     this->Masks = 0;
     if (frontToBack && !this->DepthTest)
     {
@@ -164,10 +163,7 @@ void PsiRenderTarget::DrawAndComposite(vtkOpenGLRenderWindow* renWin,
       ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
       drawImage(i);
     }
-    if (this->MaskQueryPending)
-    {
-      this->PreviousMaskFoundOpaque(); // the last mask's count, for GetMasksFoundOpaque
-    }
+    this->PreviousMaskFoundOpaque(); // the last mask's count, for GetMasksFoundOpaque
     ostate->vtkglBlendEquationSeparate(equation[0], equation[1]);
     ostate->PopFramebufferBindings();
 
@@ -208,15 +204,13 @@ bool PsiRenderTarget::CanMaskOpaquePixels()
 // the masks its answer saves (llvmpipe had never finished it by then without the wait).
 bool PsiRenderTarget::PreviousMaskFoundOpaque()
 {
-  if (!this->MaskQueryPending)
+  if (!this->MaskSamples.IsPending())
   {
     return true;
   }
-  GLuint64 opaque = 0;
-  glGetQueryObjectui64v(this->MaskQuery, GL_QUERY_RESULT, &opaque);
-  this->MaskQueryPending = false;
-  this->MasksFoundOpaque = this->MasksFoundOpaque || opaque > 0;
-  return opaque > 0;
+  const bool found = this->MaskSamples.Take() > 0;
+  this->MasksFoundOpaque = this->MasksFoundOpaque || found;
+  return found;
 }
 
 bool PsiRenderTarget::MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderProgram* drawProgram)
@@ -251,18 +245,10 @@ bool PsiRenderTarget::MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderP
     image->Activate();
     program->SetUniformi("volumeImage", image->GetTextureUnit());
     program->SetUniformf("saturatedOpacity", static_cast<float>(psi::SaturatedOpacity));
-    if (!this->MaskQuery)
-    {
-      glGenQueries(1, &this->MaskQuery);
-    }
-    glBeginQuery(GL_SAMPLES_PASSED, this->MaskQuery); // the pixels it finds opaque
+    this->MaskSamples.Begin(); // the pixels it finds opaque
     this->MaskQuad->Render();
-    glEndQuery(GL_SAMPLES_PASSED);
-    this->MaskQueryPending = true;
-    if (this->Masks++ == 0)
-    {
-      this->MasksFoundOpaque = false; // from now on, what the masks' counts say
-    }
+    this->MaskSamples.End();
+    ++this->Masks;
     image->Deactivate();
   }
   if (drawProgram)
@@ -323,11 +309,6 @@ void PsiRenderTarget::ReleaseGraphicsResources(vtkWindow* win)
   }
   this->CompositeQuad.reset();
   this->MaskQuad.reset();
-  if (this->MaskQuery)
-  {
-    glDeleteQueries(1, &this->MaskQuery);
-  }
-  this->MaskQuery = 0;
-  this->MaskQueryPending = false;
+  this->MaskSamples.ReleaseGraphicsResources();
   this->Size[0] = this->Size[1] = 0;
 }

@@ -11,6 +11,7 @@
 #define PsiRenderTarget_h
 
 #include "PsiDepthPeelingCalls.h"
+#include "PsiSamplesPassed.h"
 
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
@@ -59,7 +60,7 @@ public:
   bool MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderProgram* drawProgram);
   /// After a front-to-back DrawAndComposite: whether its masks found an opaque pixel (true when
   /// it masked nothing, or within depth peeling's two images).
-  bool GetMasksFoundOpaque() const { return this->MasksFoundOpaque; }
+  bool GetMasksFoundOpaque() const { return this->Masks == 0 || this->MasksFoundOpaque; }
   /// Whether this OpenGL has what MaskOpaquePixels needs (glTextureBarrier: OpenGL 4.5 or
   /// ARB_texture_barrier).
   static bool CanMaskOpaquePixels();
@@ -80,9 +81,8 @@ private:
   vtkNew<vtkTextureObject> FrontImage; // the second image, within depth peeling
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
-  unsigned int MaskQuery = 0;    ///< GL_SAMPLES_PASSED of the last mask: its opaque pixels
-  bool MaskQueryPending = false; ///< the last mask of this image has a count to read
-  bool MasksFoundOpaque = true;  ///< a mask of this image found an opaque pixel, or none ran
+  PsiSamplesPassed MaskSamples;  ///< the pixels the last mask found opaque
+  bool MasksFoundOpaque = false; ///< a mask of this image found an opaque pixel
   int Masks = 0;                 ///< masks of this image
   int Size[2] = { 0, 0 };
   int Origin[2] = { 0, 0 };

@@ -4,31 +4,36 @@
 
 PsiSamplesPassed::~PsiSamplesPassed() = default; // the query is the context's (Release)
 
-void PsiSamplesPassed::Begin(bool on)
+void PsiSamplesPassed::Begin()
 {
-  if (!on)
-  {
-    return;
-  }
   if (!this->Query)
   {
     glGenQueries(1, &this->Query);
   }
   glBeginQuery(GL_SAMPLES_PASSED, this->Query);
   this->Counting = true;
+  this->Pending = false;
 }
 
 void PsiSamplesPassed::End()
 {
-  if (!this->Counting)
+  if (this->Counting)
   {
-    return;
+    glEndQuery(GL_SAMPLES_PASSED);
+    this->Counting = false;
+    this->Pending = true;
   }
-  glEndQuery(GL_SAMPLES_PASSED);
+}
+
+uint64_t PsiSamplesPassed::Take()
+{
   GLuint64 samples = 0;
-  glGetQueryObjectui64v(this->Query, GL_QUERY_RESULT, &samples);
-  this->Total += samples;
-  this->Counting = false;
+  if (this->Pending)
+  {
+    glGetQueryObjectui64v(this->Query, GL_QUERY_RESULT, &samples);
+    this->Pending = false;
+  }
+  return samples;
 }
 
 void PsiSamplesPassed::ReleaseGraphicsResources()
@@ -38,5 +43,5 @@ void PsiSamplesPassed::ReleaseGraphicsResources()
     glDeleteQueries(1, &this->Query);
   }
   this->Query = 0;
-  this->Counting = false;
+  this->Counting = this->Pending = false;
 }

@@ -1,6 +1,8 @@
-// PsiSamplesPassed: counts the samples that pass the depth test over several draws
-// (GL_SAMPLES_PASSED queries, summed), a testing aid: front to back, the fragments behind opaque
-// pixels fail the depth test before they are shaded, so fewer samples pass.
+// PsiSamplesPassed: one GL_SAMPLES_PASSED query, the samples that pass the depth test between
+// Begin and End, read by Take when wanted (it waits for those draws). The render target counts
+// with it the pixels each opacity mask finds opaque, read a stride later; the mapper, as a
+// testing aid, the volume's own samples: front to back, the fragments behind opaque pixels fail
+// the depth test before they are shaded.
 #ifndef PsiSamplesPassed_h
 #define PsiSamplesPassed_h
 
@@ -11,12 +13,13 @@ class PsiSamplesPassed
 public:
   PsiSamplesPassed() = default;
   ~PsiSamplesPassed();
-  /// Starts counting (a no-op when `on` is false: then Total stays 0).
-  void Begin(bool on);
-  /// Stops counting and adds what passed since Begin to Total (waits for the draws).
+  /// Starts counting (the query is made on first use, in the current context).
+  void Begin();
+  /// Stops counting; the count is pending until Take. Nothing when not counting.
   void End();
-  uint64_t GetTotal() const { return this->Total; }
-  void Reset() { this->Total = 0; }
+  bool IsPending() const { return this->Pending; }
+  /// The pending count (waits for the draws it counts), and no longer pending; 0 when none is.
+  uint64_t Take();
   void ReleaseGraphicsResources();
 
 private:
@@ -24,7 +27,7 @@ private:
   void operator=(const PsiSamplesPassed&) = delete;
   unsigned int Query = 0;
   bool Counting = false;
-  uint64_t Total = 0;
+  bool Pending = false;
 };
 
 #endif

@@ -5,9 +5,10 @@
 // method changes.
 //
 // The sort runs on a worker thread while the frame draws. MPVONC emits the order from its
-// start (the farthest or the nearest tetrahedra), so Draw uploads and draws each chunk as soon as the sort has finished it:
-// the rasterizer starts on the first chunks instead of waiting for the whole sort, in which
-// llvmpipe's threads would have nothing to draw (docs/decisions.md, "Visibility order").
+// start (the farthest or the nearest tetrahedra), so Draw uploads and draws each chunk as soon
+// as the sort has finished it: the rasterizer starts on the first chunks instead of waiting for
+// the whole sort, in which llvmpipe's threads would have nothing to draw (docs/decisions.md,
+// "Visibility order").
 #ifndef PsiVisibilityOrder_h
 #define PsiVisibilityOrder_h
 

@@ -214,7 +214,7 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   if (draw)
   {
     std::string drawError;
-    I.Samples.Reset();
+    I.SamplesPassed = 0;
     auto drawImage = [&](int image) {
       this->DrawImage(renWin, vol, plan, draw, compute, image, drawError);
     };
@@ -248,18 +248,29 @@ void vtkPsiVolumeMapper::DrawImage(vtkOpenGLRenderWindow* renWin, vtkVolume* vol
     draw->SetUniformi("peelRange", image);
     I.Peeling.SetShaderParameters(draw, this, vol, renWin);
   }
+  // the volume's samples that pass the depth test, when counted (not the masks')
+  const auto startCount = [&]() {
+    if (I.CountSamples)
+    {
+      I.Samples.Begin();
+    }
+  };
+  const auto stopCount = [&]() {
+    I.Samples.End();
+    I.SamplesPassed += I.Samples.Take();
+  };
   std::function<bool()> mask;
   if (plan.FrontToBack)
   {
     mask = [&]() {
-      I.Samples.End(); // the mask's own samples are not the volume's
+      stopCount();
       const bool found = I.Target.MaskOpaquePixels(renWin, compute ? nullptr : draw);
-      I.Samples.Begin(I.CountSamples);
+      startCount();
       return found;
     };
   }
   const size_t pixels = size_t(I.Target.GetSize()[0]) * size_t(I.Target.GetSize()[1]);
-  I.Samples.Begin(I.CountSamples);
+  startCount();
   if (compute)
   {
     I.Compute.Draw(renWin, I.Order, pixels, I.Limits().MaxStorageBlockBytes, error, mask);
@@ -268,7 +279,7 @@ void vtkPsiVolumeMapper::DrawImage(vtkOpenGLRenderWindow* renWin, vtkVolume* vol
   {
     I.Geometry.Draw(I.Order, draw, pixels, mask);
   }
-  I.Samples.End();
+  stopCount();
 }
 
 // Gathers and uploads the mesh when the data or the array changed. False: nothing to draw.
@@ -403,7 +414,7 @@ void vtkPsiVolumeMapper::SetCountSamplesPassed(bool on)
 
 vtkIdType vtkPsiVolumeMapper::GetLastSamplesPassed() const
 {
-  return static_cast<vtkIdType>(this->Impl->Samples.GetTotal());
+  return static_cast<vtkIdType>(this->Impl->SamplesPassed);
 }
 
 const std::vector<uint32_t>& vtkPsiVolumeMapper::GetLastDrawOrder() const

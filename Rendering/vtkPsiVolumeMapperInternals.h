@@ -16,6 +16,7 @@
 #include "PsiLookupTextures.h"
 #include "PsiVisibilityOrder.h"
 
+#include <cstdint>
 #include <string>
 
 struct vtkPsiVolumeMapper::Internals
@@ -29,6 +30,7 @@ struct vtkPsiVolumeMapper::Internals
   PsiDepthPeelingCalls Peeling; // the depth-peeling stage of this call
   PsiSamplesPassed Samples;     // the volume's samples that pass the depth test (testing aid)
   bool CountSamples = false;
+  uint64_t SamplesPassed = 0;   // counted over the last frame's draws
   // What the last front-to-back frame's masks found, and of which mesh, sampled transfer
   // function and settings (PsiSceneFacts::MasksFoundNoOpaque).
   struct

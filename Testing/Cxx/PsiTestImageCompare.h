@@ -52,17 +52,29 @@ struct Result
   double P999 = 0;     ///< 99.9th percentile of the channels' errors (a few stray pixels aside)
 };
 
+/// The largest difference of two images' channels.
+inline double LargestDifference(const std::vector<double>& a, const std::vector<double>& b)
+{
+  double worst = 0;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
+  {
+    worst = std::max(worst, std::abs(a[i] - b[i]));
+  }
+  return worst;
+}
+
 /// When the frame drawn last composited front to back with early ray termination: the image
 /// `gpu` against the same frame drawn back to front, which must agree within 1/255 (the
 /// terminated rays lose at most 1 - psi::SaturatedOpacity of any channel; rounding to 8 bits
-/// may show it as one step). Returns the largest difference (0 when not used).
+/// may show it as one step). Returns the largest difference, or -1 when the frame was drawn
+/// back to front.
 inline double CheckFrontToBack(
   const std::string& name, vtkRenderWindow* win, vtkVolume* vol, const std::vector<double>& gpu)
 {
   vtkPsiVolumeMapper* mapper = vtkPsiVolumeMapper::SafeDownCast(vol->GetMapper());
   if (!mapper || !mapper->GetLastUsedEarlyRayTermination())
   {
-    return 0;
+    return -1;
   }
   // where the sort broke cycles there is no visibility order: the two directions break them at
   // other cells (nearest or farthest remaining), and only the reference bounds each image
@@ -71,11 +83,7 @@ inline double CheckFrontToBack(
   const std::vector<double> back = GrabRGB(win);
   mapper->EarlyRayTerminationOn();
   win->Render(); // the window shows the frame as drawn, for the caller's next reads
-  double worst = 0;
-  for (size_t i = 0; i < gpu.size(); ++i)
-  {
-    worst = std::max(worst, std::abs(gpu[i] - back[i]));
-  }
+  const double worst = LargestDifference(gpu, back);
   PSI_CHECK(!exactOrder || worst <= 1.0 / 255 + 1e-9,
     "%s: front to back differs from back to front by %g/255", name.c_str(), 255 * worst);
   return worst;
@@ -121,8 +129,6 @@ inline Result Compare(const std::string& name, vtkRenderWindow* win, vtkRenderer
     }
   }
   const std::vector<double> gpu = GrabRGB(win);
-  const bool frontToBack = vtkPsiVolumeMapper::SafeDownCast(vol->GetMapper()) &&
-    vtkPsiVolumeMapper::SafeDownCast(vol->GetMapper())->GetLastUsedEarlyRayTermination();
   const double againstBack = CheckFrontToBack(name, win, vol, gpu);
   const std::vector<double> ref = psi::RenderReference(refScene, cam);
 
@@ -160,7 +166,7 @@ inline Result Compare(const std::string& name, vtkRenderWindow* win, vtkRenderer
     psitest::WritePng(outDir + "/" + name + "_diff8x.png", diff, W, H);
   }
   char order[64] = "  back to front";
-  if (frontToBack)
+  if (againstBack >= 0)
   {
     std::snprintf(order, sizeof(order), "  front to back: %.0f/255 off back to front",
       255 * againstBack);

@@ -462,12 +462,7 @@ void CheckEarlyRayTermination(Fixture& f)
     return Frame{ image, mapper->GetLastSamplesPassed(), mapper->GetLastUsedEarlyRayTermination() };
   };
   auto largest = [](const Frame& a, const Frame& b) {
-    double worst = 0;
-    for (size_t i = 0; i < a.Image.size(); ++i)
-    {
-      worst = std::max(worst, std::abs(a.Image[i] - b.Image[i]));
-    }
-    return worst;
+    return psitest::LargestDifference(a.Image, b.Image);
   };
   Scene dense, faint;
   MakeScene(dense, 16, 0.375, 0.05); // opacity up to 0.9 per 0.05 units
