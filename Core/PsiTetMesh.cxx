@@ -1,5 +1,6 @@
 #include "PsiTetMesh.h"
 
+#include "PsiCellPointBounds.h"
 #include "PsiCellTypes.h"
 
 #include "vtkCellArray.h"
@@ -299,7 +300,10 @@ TetMesh GatherTetMesh(vtkUnstructuredGridBase* input, vtkDataArray* scalars, boo
   TetMesh m;
   m.CellScalars = cellScalars;
   double b[6];
-  input->GetBounds(b);
+  if (!CellPointBounds(input, b)) // the points the cells use: an unused point may lie anywhere
+  {
+    input->GetBounds(b);
+  }
   for (int k = 0; k < 3; ++k)
   {
     m.Shift[k] = 0.5 * (b[2 * k] + b[2 * k + 1]);

@@ -1,6 +1,7 @@
 // PsiTetMesh: the tetrahedral mesh as the renderer uses it, gathered from any VTK unstructured
-// grid (GL-free). Points are shifted to the bounds' centre (float precision far from the origin)
-// and carry their scalar: x, y, z, s; each tetrahedron is 4 point ids.
+// grid (GL-free). Points are shifted to the centre of the bounds of the points the cells use
+// (PsiCellPointBounds.h; float precision far from the origin) and carry their scalar: x, y, z,
+// s; each tetrahedron is 4 point ids.
 //
 // Cells that are not linear tetrahedra and tetrahedra with a non-finite scalar are skipped and
 // counted. With cell scalars every tetrahedron gets four private points carrying its constant

@@ -2,6 +2,7 @@
 #include "vtkPsiVolumeMapperInternals.h"
 
 #include "PsiAdaptiveNodes.h"
+#include "PsiCellPointBounds.h"
 #include "PsiComputeProjector.h"
 #include "PsiDepthPeelingCalls.h"
 #include "PsiFramePlan.h"
@@ -90,6 +91,27 @@ void vtkPsiVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->Impl->Release(win);
   this->Superclass::ReleaseGraphicsResources(win);
+}
+
+double* vtkPsiVolumeMapper::GetBounds()
+{
+  vtkDataSet* input = this->GetDataSetInput();
+  Internals& I = *this->Impl;
+  if (!input)
+  {
+    I.BoundsInput = nullptr;
+    return this->Superclass::GetBounds();
+  }
+  if (input != I.BoundsInput || input->GetMTime() != I.BoundsTime)
+  {
+    if (!psi::CellPointBounds(input, this->Bounds))
+    {
+      input->GetBounds(this->Bounds);
+    }
+    I.BoundsInput = input;
+    I.BoundsTime = input->GetMTime();
+  }
+  return this->Bounds;
 }
 
 // One frame: mesh, visibility order, the transfer function, the plan, the tables it reads,

@@ -132,6 +132,11 @@ public:
 
   void Render(vtkRenderer* ren, vtkVolume* vol) override;
   void ReleaseGraphicsResources(vtkWindow* win) override;
+  /// The bounds of the points the input's cells use (psi::CellPointBounds), not of its whole
+  /// point list: a point no cell uses does not widen the volume (the camera's clipping range, a
+  /// ray's longest path). The dataset's own bounds when every point is used.
+  double* GetBounds() override;
+  using Superclass::GetBounds;
 
   ///@{
   /// What the last Render did: tetrahedra drawn, cells skipped (non-tetrahedra, non-finite

@@ -28,6 +28,9 @@ struct vtkPsiVolumeMapper::Internals
   PsiGeometryProjector Geometry;
   PsiComputeProjector Compute;
   PsiDepthPeelingCalls Peeling; // the depth-peeling stage of this call
+  // The input and its modification time that vtkPsiVolumeMapper::GetBounds last measured.
+  vtkDataSet* BoundsInput = nullptr;
+  vtkMTimeType BoundsTime = 0;
   PsiSamplesPassed Samples;     // the volume's samples that pass the depth test (testing aid)
   bool CountSamples = false;
   uint64_t SamplesPassed = 0;   // counted over the last frame's draws

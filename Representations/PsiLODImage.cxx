@@ -258,8 +258,14 @@ LODImage ResampleForLOD(vtkDataSet* piece, const LODScalars& scalars, const LODR
   {
     return lod;
   }
-  const Lattice lattice =
-    GlobalLattice(region.Parallel ? region.Global : piece->GetBounds(), resolution);
+  // serially the mesh's bounds, unshifted: those of the points the cells use (an unused point
+  // may lie anywhere)
+  double used[6];
+  for (int k = 0; k < 6; ++k)
+  {
+    used[k] = mesh.Bounds[k] + mesh.Shift[k / 2];
+  }
+  const Lattice lattice = GlobalLattice(region.Parallel ? region.Global : used, resolution);
   lod.Image = SampledImage(mesh, lattice, SampleOnLattice(mesh, lattice, progress));
   if (region.Parallel)
   {

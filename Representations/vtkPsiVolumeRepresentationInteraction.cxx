@@ -4,6 +4,7 @@
 // drew the frame. The rest of the representation is in vtkPsiVolumeRepresentation.cxx.
 #include "vtkPsiVolumeRepresentation.h"
 
+#include "PsiCellPointBounds.h"
 #include "PsiLODVolume.h"
 #include "PsiSceneQueries.h"
 #include "PsiSettings.h"
@@ -55,9 +56,9 @@ PsiLevelOfDetail::Region LatticeRegion(vtkPVRenderView* view, vtkDataSet* piece)
     all.AddBox(cut);
   }
   region.Parallel = own.IsValid() && all.IsValid() && piece;
-  if (region.Parallel)
+  if (region.Parallel && !psi::CellPointBounds(piece, region.Box))
   {
-    piece->GetBounds(region.Box);
+    piece->GetBounds(region.Box); // no cell: the box crops nothing of an empty image
   }
   all.GetBounds(region.Global);
   return region;

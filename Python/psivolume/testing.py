@@ -80,6 +80,21 @@ def one_tetrahedron(name="s", size=1.0):
     return grid
 
 
+def with_unused_point(grid, point):
+    """A copy of the vtkUnstructuredGrid `grid` with `point` appended to its point list, used by
+    no cell (as readers and filters that keep a shared point list make them), carrying point 0's
+    values in every point array (their ranges stay)."""
+    from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid
+    more = vtkUnstructuredGrid()
+    more.DeepCopy(grid)
+    more.GetPoints().InsertNextPoint(point)
+    point_data = more.GetPointData()
+    for i in range(point_data.GetNumberOfArrays()):
+        a = point_data.GetAbstractArray(i)
+        a.InsertNextTuple(0, a)
+    return more
+
+
 def apply_requested(display):
     """Gives a 'Psi Volume' display the projector the test's command line asks for
     (`--projector compute` or `--projector geometry`; CTest's `.compute` variants), and returns it."""

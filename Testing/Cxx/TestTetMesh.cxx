@@ -7,7 +7,9 @@
 //    position, where connectivity by point id finds none;
 //  - a stale array (cells reordered downstream) is rejected;
 //  - the sort interface gives a permutation either way;
-//  - a new time step replaces the scalars only, as gathering the mesh again would.
+//  - a new time step replaces the scalars only, as gathering the mesh again would;
+//  - a point no cell uses, near or far, changes neither the mesh's shift nor its bounds.
+#include "PsiCellPointBounds.h"
 #include "PsiTestCheck.h"
 #include "PsiTetConnectivity.h"
 #include "PsiTetMesh.h"
@@ -24,6 +26,7 @@
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolumeProperty.h"
 
@@ -344,10 +347,55 @@ void TestUnitScalars()
       m.ScalarRange[1]);
   }
 }
+// A point that no cell uses, near or far (a shared point list): the mesh's shift and bounds, and
+// psi::CellPointBounds, are those of the points the cells use, in 64- and 32-bit connectivity and
+// through the generic cell access of a vtkDataSet that is no vtkUnstructuredGrid.
+void TestUnusedPoints()
+{
+  for (double far : { 1e4, 1e7 })
+  {
+    for (bool use32 : { false, true })
+    {
+      vtkSmartPointer<vtkUnstructuredGrid> ug = Tetrahedralized(4);
+      if (use32)
+      {
+        ug->GetCells()->ConvertTo32BitStorage();
+      }
+      double clean[6];
+      ug->GetBounds(clean);
+      const psi::TetMesh reference =
+        psi::GatherTetMesh(ug, ug->GetPointData()->GetArray("s"), false);
+      ug->GetPoints()->InsertNextPoint(far, far, far);
+      vtkDataArray* s = ug->GetPointData()->GetArray("s");
+      s->InsertNextTuple1(s->GetTuple1(0));
+      ug->GetPoints()->Modified(); // InsertNextPoint leaves the points' time as it was
+      double used[6];
+      PSI_CHECK(psi::CellPointBounds(ug, used) &&
+          std::equal(used, used + 6, clean) && ug->GetBounds()[1] == far,
+        "unused point at %g (%s ids): the cells' bounds [%g, %g] are the clean mesh's", far,
+        use32 ? "32-bit" : "64-bit", used[0], used[1]);
+      const psi::TetMesh m = psi::GatherTetMesh(ug, s, false);
+      PSI_CHECK(std::equal(m.Shift, m.Shift + 3, reference.Shift) &&
+          std::equal(m.Bounds, m.Bounds + 6, reference.Bounds),
+        "unused point at %g: the mesh's shift (%g, %g, %g) and bounds are the clean mesh's", far,
+        m.Shift[0], m.Shift[1], m.Shift[2]);
+    }
+  }
+  vtkNew<vtkImageData> image; // no connectivity array: cell by cell
+  image->SetDimensions(3, 3, 3);
+  double b[6];
+  PSI_CHECK(psi::CellPointBounds(image, b) && b[1] == 2 && b[5] == 2,
+    "image data: the cells' bounds are its own");
+  vtkNew<vtkUnstructuredGrid> none; // points, no cell
+  none->SetPoints(vtkSmartPointer<vtkPoints>::New());
+  none->GetPoints()->InsertNextPoint(1, 2, 3);
+  PSI_CHECK(!psi::CellPointBounds(none, b), "no cell: no bounds");
+}
 } // namespace
 
 int main()
 {
+  TestUnusedPoints();
   TestFilterNeighbors();
   TestUnitScalars();
   TestBorrowedCells();

@@ -10,12 +10,13 @@ stands in for (results, never timings), and its build's progress:
   lattice (a sample distance of the mean spacing took one or two samples across it: 0.063 from
   the still frame, against 0.009 now and 0.003 for the unscaled Wavelet);
 - a constant field on a mesh with holes: no speckles;
+- a point that no cell uses, near or far: the level of detail spans the cells, not the points;
 - deleting the representation right after an interactive render, then a new one: no stale image.
 Each level of detail must be nearer its own still frame than the wrong image, and as near as
 the same level of detail on a plain scene."""
 import os
 
-from paraview import simple
+from paraview import servermanager, simple
 
 from psivolume import data, testing
 
@@ -164,6 +165,24 @@ view.ResetCamera()
 _, _, err = check_lod(view, d, "a constant field with holes")
 t.check(err < 0.04, "the constant field's level of detail close to its still frame (%.4f)" % err)
 simple.Delete(d)
+
+# --- A point that no cell uses, near or far (a shared point list): the level of detail's lattice
+# spans the cells' points, not the point list (spanning it, it drew nothing of the mesh: 0 % of
+# the still frame's pixels with the point at 1e4 or 1e7).
+for far in (1e4, 1e7):
+    grid = servermanager.Fetch(src)
+    more = simple.TrivialProducer()
+    more.GetClientSideObject().SetOutput(testing.with_unused_point(grid, [far] * 3))
+    more.UpdatePipeline()
+    d = scene(more, "POINTS", scalars, view)
+    view.SMProxy.ResetCamera(*src.GetDataInformation().GetBounds())
+    full, lod, err = check_lod(view, d, "a point no cell uses at %g" % far)
+    drawn, wanted = testing.covered(lod, [0, 0, 0]), testing.covered(full, [0, 0, 0])
+    t.check(err < 0.05 and drawn >= 0.9 * wanted, "a point no cell uses at %g: the level of "
+            "detail covers the still frame's pixels (%d of %d) and is close to it (%.4f)"
+            % (far, drawn, wanted, err))
+    simple.Delete(d)
+    simple.Delete(more)
 
 # --- Deleted right after an interactive render; a new representation on new data.
 d = scene(src, "POINTS", scalars, view)

@@ -7,7 +7,7 @@ a box 8 times longer than wide, coordinates offset by 10^6, holes, a Delaunay me
 points, one tetrahedron, nothing, hexahedra beside tetrahedra, the Blunt Fin when ../shared/data
 has it), an array (point or cell data, a vector's magnitude or a component, a point and a cell
 array of one name colored by either, names with spaces and non-ASCII letters, a constant field,
-NaN in part of the mesh, a separate opacity array), a
+NaN in part of the mesh, a separate opacity array), points that no cell uses (near, far), a
 transfer function (ParaView's ramp, a narrow spike, a step, opacity 1, all zero), a camera
 (outside, inside the mesh, parallel projection, grazing) and settings (every integration method,
 sort, projector, decomposition, adaptive sampling, early discard, an isosurface, the interaction
@@ -34,7 +34,7 @@ import random
 import tempfile
 
 import numpy as np
-from paraview import simple
+from paraview import servermanager, simple
 
 from psivolume import accuracy, data, testing
 
@@ -202,14 +202,21 @@ def set_transfer_function(s, rep, name, lo, hi):
     return kind
 
 
-def aim(s, view, bounds):
-    view.ResetCamera()
+def aim(s, view, bounds, to_bounds=False):
+    """The seed's camera, reset to the data's bounds (`to_bounds`: to `bounds`, the cells')."""
+    def reset():
+        if to_bounds:
+            view.SMProxy.ResetCamera(*bounds)
+        else:
+            view.ResetCamera()
+
+    reset()
     cam = view.GetActiveCamera()
     kind = s.pick("camera", ["outside", "outside", "inside", "parallel", "grazing"])
     cam.Azimuth(s.rng.uniform(0, 360))
     cam.Elevation(s.rng.uniform(-60, 60) if kind != "grazing" else 89.0)
     view.CameraParallelProjection = 1 if kind == "parallel" else 0
-    view.ResetCamera()
+    reset()
     if kind == "inside":
         c = [(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2,
              (bounds[4] + bounds[5]) / 2]
@@ -239,6 +246,22 @@ def apply_settings(s, rep, lo, hi):
     return method
 
 
+def add_unused_points(s, shown):
+    """`shown`'s mesh with a point that no cell uses (testing.with_unused_point): none, one just
+    beyond the mesh or one at (1e7, 1e7, 1e7). Drawn by a generator
+    of its own, so that the seed's other choices are those of the checker without them. Returns
+    (the source shown, the source without them)."""
+    kind = random.Random("unused points %d" % s.seed).choice(["none", "none", "near", "far"])
+    grid = servermanager.Fetch(shown) if kind != "none" else None
+    if grid is None or not grid.IsA("vtkUnstructuredGrid") or grid.GetNumberOfPoints() == 0:
+        return shown, shown
+    s.words.append("unused point=%s" % kind)
+    b = grid.GetBounds()
+    far = [1e7] * 3 if kind == "far" else [b[1] + 0.5 * (b[1] - b[0]) + 1, b[3], b[5]]
+    more = testing.with_unused_point(grid, far)
+    return produce(more), shown
+
+
 def footprint_misses(img, ref, px=FOOTPRINT_PX):
     a = np.abs(img).sum(axis=2) > 2
     b = np.abs(ref).sum(axis=2) > 2
@@ -255,6 +278,11 @@ def show(s, view):
     and settings: (display, source shown, opacity kind, method)."""
     src, array = make_mesh(s)
     shown, assoc, name, vector = make_array(s, src, array)
+    shown, clean = add_unused_points(s, shown)
+    if clean is not shown:  # the unit distance ParaView gives the mesh without them
+        rep = simple.Show(clean, view)
+        clean_unit = rep.ScalarOpacityUnitDistance
+        simple.Delete(rep)
     rep = simple.Show(shown, view)
     simple.ColorBy(rep, (assoc, name) if vector is None else
                    (assoc, name, "Magnitude" if vector == "Magnitude" else vector))
@@ -266,14 +294,16 @@ def show(s, view):
     lut = simple.GetColorTransferFunction(name)
     lo, hi = lut.RGBPoints[0], lut.RGBPoints[-4]
     tf = set_transfer_function(s, rep, name, lo, hi)
-    bounds = shown.GetDataInformation().GetBounds()
+    bounds = clean.GetDataInformation().GetBounds()
     if bounds[0] > bounds[1]:
         bounds = [-1, 1, -1, 1, -1, 1]
     unit = s.pick("unit distance", ["ParaView's", "a tenth of the mesh", "the mesh"])
     if unit != "ParaView's":  # ParaView's: the mean cell size, the most opaque
         side = max(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
         rep.ScalarOpacityUnitDistance = max(1e-6, side * (0.1 if unit.startswith("a tenth") else 1))
-    aim(s, view, bounds)
+    elif clean is not shown:
+        rep.ScalarOpacityUnitDistance = clean_unit
+    aim(s, view, bounds, clean is not shown)
     return rep, shown, tf, apply_settings(s, rep, lo, hi)
 
 
