@@ -27,7 +27,9 @@ pqPsiAccuracyReportActions::pqPsiAccuracyReportActions(QObject* parentObject)
 //-----------------------------------------------------------------------------
 const char* pqPsiAccuracyReportActions::pythonCode()
 {
-  return "import psivolume.gui\npsivolume.gui.run_report()\n";
+  // __import__ binds no name in the user's namespace, where ParaView runs the code; run_report
+  // leaves that namespace as it found it (psivolume.restore.main_namespace)
+  return "__import__('psivolume.gui').gui.run_report()\n";
 }
 
 //-----------------------------------------------------------------------------

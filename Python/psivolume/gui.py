@@ -9,14 +9,16 @@ From pvpython or the GUI's Python shell, once the plugin is loaded:
     psivolume.gui.OPTIONS.update(frames=1, budget=20)   # what the button runs with
     rows, views = psivolume.gui.run_report()
 
-The tables are ProgrammableSources whose scripts hold the rows: a saved state shows them again."""
+The tables are ProgrammableSources whose scripts hold the rows: a saved state shows them again.
+ParaView runs those scripts in __main__ after star imports of numpy: run_report leaves the user's
+namespace as it found it (restore.main_namespace), also when it fails."""
 import contextlib
 import json
 import tempfile
 
 from paraview import servermanager, simple
 
-from . import accuracy, accuracy_plots
+from . import accuracy, accuracy_plots, restore
 from .progress import Progress
 
 TITLE = "Accuracy report"
@@ -50,18 +52,19 @@ def run_report(view=None, src=None, out_dir=None, **options):
     active source), with OPTIONS updated by `options`, under ParaView's progress; writes its
     files to `out_dir` (default: a new temporary folder) and shows the rows (show_rows).
     Returns (rows, views)."""
-    view = view or simple.GetActiveView()
-    src = src or simple.GetActiveSource()
-    check_scene(view, src)
-    out_dir = out_dir or tempfile.mkdtemp(prefix="psi_accuracy_")
-    rep = servermanager.GetRepresentation(src, view)
-    with Progress(TITLE) as progress, alone(view, rep):
-        rows = accuracy.report(view, rep, src, out_dir, progress=progress,
-                               **dict(OPTIONS, **options))
-    views = show_rows(rows, "%s: %s" % (TITLE, source_name(src)))
-    simple.SetActiveSource(src)
-    print("%s: %s" % (TITLE, out_dir))
-    return rows, views
+    with restore.main_namespace():  # the tables' scripts run in the user's __main__
+        view = view or simple.GetActiveView()
+        src = src or simple.GetActiveSource()
+        check_scene(view, src)
+        out_dir = out_dir or tempfile.mkdtemp(prefix="psi_accuracy_")
+        rep = servermanager.GetRepresentation(src, view)
+        with Progress(TITLE) as progress, alone(view, rep):
+            rows = accuracy.report(view, rep, src, out_dir, progress=progress,
+                                   **dict(OPTIONS, **options))
+        views = show_rows(rows, "%s: %s" % (TITLE, source_name(src)))
+        simple.SetActiveSource(src)
+        print("%s: %s" % (TITLE, out_dir))
+        return rows, views
 
 
 def check_scene(view, src):

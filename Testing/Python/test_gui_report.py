@@ -67,8 +67,31 @@ simple.SetActiveSource(src)
 handler = servermanager.ActiveConnection.Session.GetProgressHandler()
 steps = []
 handler.AddObserver("ProgressEvent", lambda h, e: steps.append(h.GetLastProgressText()))
-rows, (sheet, chart) = gui.run_report(frames=1, budget=0.1, paraview_mappers=[],
-                                      resample_dims=[])
+
+
+def main_names():
+    """{name: id of its value} of __main__, the user's namespace."""
+    return {k: id(v) for k, v in vars(sys.modules["__main__"]).items()}
+
+
+def report_and_changed_names(*args, fails=False, **options):
+    """gui.run_report's result (with `fails`: the RuntimeError it raised) and the names of
+    __main__ it changed (bound, rebound or removed)."""
+    before = main_names()
+    try:
+        result = gui.run_report(*args, **options)
+    except RuntimeError as e:
+        if not fails:
+            raise
+        result = e
+    after = main_names()
+    return result, sorted(k for k in set(before) | set(after) if before.get(k) != after.get(k))
+
+
+(rows, (sheet, chart)), changed = report_and_changed_names(
+    frames=1, budget=0.1, paraview_mappers=[], resample_dims=[])
+check(not changed, "the user's namespace (__main__) as before the report: %d names changed %s"
+      % (len(changed), changed[:8]))
 
 methods = list(rep.GetProperty("IntegrationMethod").Available)
 expected = [n for m in methods for n in (m, m + " + adaptive")] + [
@@ -126,4 +149,18 @@ try:
     check(False, "run_report on a chart view raises")
 except RuntimeError as e:
     check("render view" in str(e), "run_report on a chart view says why not: %s" % e)
+
+
+def failing_chart(*args):
+    raise RuntimeError("a chart that fails")
+
+
+# A report that fails after its tables' scripts have run (the chart fails): the namespace as before.
+show_chart, gui.show_chart = gui.show_chart, failing_chart
+failed, changed = report_and_changed_names(view, src, fails=True, frames=1, budget=0.1,
+                                           paraview_mappers=[], resample_dims=[])
+gui.show_chart = show_chart
+check("a chart that fails" in str(failed), "a report whose chart fails raises: %s" % failed)
+check(not changed, "after a report that failed, the user's namespace as before: %d names changed "
+      "%s" % (len(changed), changed[:8]))
 finish()
