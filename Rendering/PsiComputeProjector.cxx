@@ -94,18 +94,30 @@ vtkShaderProgram* PsiComputeProjector::ReadyComputeProgram(
   const psi::ShaderFeatures& f, const char* integrator, std::string& error, bool& built)
 {
   const std::string key = f.Key();
-  built = !this->Compute || key != this->Key;
-  if (built)
+  built = false;
+  if (!this->Compute || key != this->Key)
   {
+    // The compute shader holds the vertex and geometry code only: the features of the fragment
+    // shader (the integration method, adaptive sampling) change the draw program, not it. Built
+    // programs are kept by their source, as VTK's shader cache keeps the draw programs: a new
+    // method reuses the compute shader (its compile is most of a new feature set's first frame
+    // on llvmpipe; one view of the isosurface test draws 42 feature sets of 3 compute sources).
     const psi::ComputeProjectorSources src = psi::ComposeComputeProjector(f, integrator);
-    vtkNew<PsiComputeProgram> program;
-    if (!program->Build(src.Compute, error))
+    vtkSmartPointer<vtkShaderProgram>& program = this->Built[src.Compute];
+    if (!program)
     {
-      this->Compute = nullptr;
-      this->Key.clear();
-      return nullptr;
+      vtkNew<PsiComputeProgram> fresh;
+      if (!fresh->Build(src.Compute, error))
+      {
+        this->Built.erase(src.Compute);
+        this->Compute = nullptr;
+        this->Key.clear();
+        return nullptr;
+      }
+      program = fresh.Get();
+      built = true;
     }
-    this->Compute = program.Get();
+    this->Compute = program;
     this->DrawVertex = src.Vertex;
     this->DrawFragment = src.Fragment;
     this->SlotVertices = src.SlotVertices;
@@ -238,11 +250,12 @@ bool PsiComputeProjector::Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder
 
 void PsiComputeProjector::ReleaseGraphicsResources(vtkWindow* win)
 {
-  if (this->Compute)
+  for (auto& built : this->Built)
   {
-    this->Compute->ReleaseGraphicsResources(win);
-    this->Compute = nullptr;
+    built.second->ReleaseGraphicsResources(win);
   }
+  this->Built.clear();
+  this->Compute = nullptr;
   this->Key.clear();
   this->DrawProgram = nullptr;
   (void)win;

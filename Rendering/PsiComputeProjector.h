@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <map>
 #include <string>
 
 class PsiVisibilityOrder;
@@ -58,7 +59,8 @@ private:
   void operator=(const PsiComputeProjector&) = delete;
   void ReserveBuffers(size_t tetsPerPass);
 
-  vtkSmartPointer<vtkShaderProgram> Compute;
+  vtkShaderProgram* Compute = nullptr; // the last ready, one of Built
+  std::map<std::string, vtkSmartPointer<vtkShaderProgram>> Built; // by compute shader source
   vtkShaderProgram* DrawProgram = nullptr; // owned by VTK's shader cache
   std::string DrawVertex, DrawFragment;
   std::string Key;
