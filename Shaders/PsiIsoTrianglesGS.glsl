@@ -100,6 +100,12 @@ void emitPiece(int j, float smin, float smax, bool nearClipped)
 // sEye is -inf or +inf, by the sign of the scalar's change along the view direction (0, 0, -1).
 // Front to back (nearestFirst) the same sequence is emitted in reverse.
 // At most PSI_ISO_COUNT + 1 pieces of 8 vertices and PSI_ISO_COUNT surfaces of 4.
+//
+// The sequence is one loop over its steps k (back to front: even k a piece, odd k the surface
+// after it; the nAbove pieces above sEye, then the nBelow below it, then piece e), with one call
+// of emitPiece and one of emitSurface: a shader compiler inlines every call, and a loop for each
+// part and direction inlined the projection of a piece seven times (with llvmpipe the isosurface
+// test's compute-projector run, camera inside, compiled for 169 s of CPU; 30.5 s as one loop).
 void emitPiecesAndSurfaces(float smin, float smax, bool nearClipped)
 {
   const float big = 3.0e38;
@@ -113,46 +119,37 @@ void emitPiecesAndSurfaces(float smin, float smax, bool nearClipped)
   {
     ++last;
   }
-  if (last < first)
-  {
-    emitPiece(PSI_ISO_COUNT + 1, smin, smax, nearClipped); // no crossing: the whole cell
-    return;
-  }
-  fetchNormals(); // only cells with a surface pay for the normals
-  float sEye = parallelProjection == 1 ? (gradient.z < 0.0 ? -big : big)
-                                       : scalar[0] - dot(gradient, viewP[0]);
   // piece j lies between isoValues[j - 1] and isoValues[j]; this cell has pieces first..last+1
-  int e = first;
-  while (e <= last && isoValues[e] <= sEye)
+  int e = PSI_ISO_COUNT + 1; // no crossing: the whole cell, one piece
+  int nAbove = 0, nBelow = 0;
+  if (last >= first)
   {
-    ++e;
-  }
-  if (nearestFirst) // the same sequence reversed, for front-to-back compositing
-  {
-    emitPiece(e, smin, smax, nearClipped);
-    for (int j = e - 1; j >= first; --j)
+    fetchNormals(); // only cells with a surface pay for the normals
+    float sEye = parallelProjection == 1 ? (gradient.z < 0.0 ? -big : big)
+                                         : scalar[0] - dot(gradient, viewP[0]);
+    e = first;
+    while (e <= last && isoValues[e] <= sEye)
     {
-      emitSurface(j);
+      ++e;
+    }
+    nAbove = last + 1 - e;
+    nBelow = e - first;
+  }
+  int steps = 2 * (nAbove + nBelow) + 1;
+  for (int i = 0; i < steps; ++i)
+  {
+    int k = nearestFirst ? steps - 1 - i : i; // the step's place back to front
+    int below = k - 2 * nAbove; // >= 0 among the pieces below sEye and their surfaces
+    int j = k == steps - 1 ? e : below < 0 ? last + 1 - k / 2 : first + below / 2;
+    if (k % 2 == 1)
+    {
+      emitSurface(below < 0 ? j - 1 : j); // the piece's lower end above sEye, upper end below
+    }
+    else
+    {
       emitPiece(j, smin, smax, nearClipped);
     }
-    for (int j = e + 1; j <= last + 1; ++j)
-    {
-      emitSurface(j - 1);
-      emitPiece(j, smin, smax, nearClipped);
-    }
-    return;
   }
-  for (int j = last + 1; j > e; --j)
-  {
-    emitPiece(j, smin, smax, nearClipped);
-    emitSurface(j - 1);
-  }
-  for (int j = first; j < e; ++j)
-  {
-    emitPiece(j, smin, smax, nearClipped);
-    emitSurface(j);
-  }
-  emitPiece(e, smin, smax, nearClipped);
 }
 
 //PSI::IsoTriangles::Emit
