@@ -1,9 +1,11 @@
-# The smoke set against the install tree: `cmake --install` into <build>/Testing/installed (the
-# fixture PsiInstalled.install, run before any test that needs it), then the scripts that
-# Python.cmake marks INSTALLED (pvpython, pvbatch and pvserver), with PYTHONPATH naming only the
-# installed package and no PSI_* override: psivolume finds the installed plugin
-# (installed_paths.py) and the reference renderer beside it, so a plugin that works only from
-# the build tree fails here.
+# What an install changes, checked from the install tree: `cmake --install` into
+# <build>/Testing/installed (the fixture PsiInstalled.install, run before any test that needs it),
+# then the scripts that Python.cmake marks INSTALLED: the plugin loaded by the ranks of pvbatch
+# under MPI and by a pvserver's ranks, with PYTHONPATH naming only the installed package and no
+# PSI_* override (psivolume finds the installed plugin, installed_paths.py). PsiPython.installed
+# (Testing/Install/run_installed.py) checks the rest of an install in pvpython: the files, the
+# plugin and psivolume from the tree, 'Psi Volume', the installed reference renderer and reader.
+# The other tests run once, from the build tree: an install changes none of what they check.
 set(_psi_tree "${CMAKE_BINARY_DIR}/Testing/installed")
 add_test(NAME PsiInstalled.install
   COMMAND "${CMAKE_COMMAND}" --install "${CMAKE_BINARY_DIR}" --prefix "${_psi_tree}")

@@ -4,17 +4,41 @@
 # Every render test runs once per projector (psi::Projectors), set on the mapper from the
 # command line (the test checks that the frames used it), and with FAN also drawn with Shirley
 # and Tuchman's fan instead of the default silhouettes. The geometry-shader run writes images.
+# With PARTS, each run is split into one test per part (the executable's --part NAME), named
+# <test>[.compute|.fan].<part>: a part compiles its own shader programs, which is most of a
+# render test's time on Mesa's llvmpipe with an empty shader cache.
 function(psi_add_render_test name executable)
-  cmake_parse_arguments(arg "FAN" "TIMEOUT" "" ${ARGN})
-  set(test PsiRendering.${name})
-  add_test(NAME ${test} COMMAND ${executable} "${CMAKE_BINARY_DIR}/Testing/Images"
-    --projector geometry)
-  add_test(NAME ${test}.compute COMMAND ${executable} --projector compute)
-  set(variants ${test} ${test}.compute)
+  cmake_parse_arguments(arg "FAN" "TIMEOUT" "PARTS" ${ARGN})
+  set(runs geometry compute)
   if (arg_FAN)
-    add_test(NAME ${test}.fan COMMAND ${executable} --decomposition fan)
-    list(APPEND variants ${test}.fan)
+    list(APPEND runs fan)
   endif ()
+  set(parts whole)
+  if (arg_PARTS)
+    set(parts ${arg_PARTS})
+  endif ()
+  set(variants)
+  foreach (run IN LISTS runs)
+    set(test PsiRendering.${name})
+    if (run STREQUAL "geometry") # the geometry-shader run writes images
+      set(options "${CMAKE_BINARY_DIR}/Testing/Images" --projector geometry)
+    elseif (run STREQUAL "compute")
+      set(test ${test}.compute)
+      set(options --projector compute)
+    else ()
+      set(test ${test}.fan)
+      set(options --decomposition fan)
+    endif ()
+    foreach (part IN LISTS parts)
+      if (part STREQUAL "whole")
+        add_test(NAME ${test} COMMAND ${executable} ${options})
+        list(APPEND variants ${test})
+      else ()
+        add_test(NAME ${test}.${part} COMMAND ${executable} ${options} --part ${part})
+        list(APPEND variants ${test}.${part})
+      endif ()
+    endforeach ()
+  endforeach ()
   if (arg_TIMEOUT)
     set_tests_properties(${variants} PROPERTIES TIMEOUT ${arg_TIMEOUT})
   endif ()
@@ -36,7 +60,7 @@ psi_add_render_test(VolumeRender TestPsiVolumeRender FAN)
 
 # Isosurfaces and adaptive transfer-function sampling.
 psi_add_gl_executable(TestPsiIsosurfaces)
-psi_add_render_test(Isosurfaces TestPsiIsosurfaces FAN)
+psi_add_render_test(Isosurfaces TestPsiIsosurfaces FAN PARTS view0 view1 view2 view3 others)
 
 # Degenerate projections (truth-table classes 3 and 4, exact in float) and the drawn visibility
 # order, both against exact references (PsiReferenceRaycaster; ray/tetrahedron intersection).

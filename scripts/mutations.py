@@ -22,6 +22,10 @@ TRANSLUCENT = ["PsiPython.translucent_geometry"]
 PEELED = ["PsiRendering.TranslucentGeometry"]
 SCALAR_RANGES = ["PsiPython.scalar_ranges"]
 CYCLIC = ["PsiRendering.CyclicOrder"]
+# TestPsiIsosurfaces runs as parts (Testing/Rendering.cmake): its checks in each view, and the
+# others (the adaptive spike, occlusion, isovalues at a vertex, a new time step).
+ISO_VIEWS = ["PsiRendering.Isosurfaces.view%d" % v for v in range(4)]
+ISO_OTHERS = ["PsiRendering.Isosurfaces.others"]
 
 MUTATIONS = [
     # --- Integrators (Shaders/PsiIntegrate*.glsl): Moreland & Angel 2004; Moreland's dissertation.
@@ -219,6 +223,14 @@ MUTATIONS = [
     Mutation("lod_lattice_on_the_bounds", "Representations/PsiLODImage.cxx",
              "const double inset = 1e-6 * sides[k];", "const double inset = 0 * sides[k];",
              ["PsiRepresentations.LODImage"]),
+    # Points that no cell uses (a shared point list) do not widen what a mesh's extent decides.
+    Mutation("cell_bounds_of_every_point", "Core/PsiCellPointBounds.cxx",
+             "if (std::find(used.begin(), used.end(), 0) == used.end())", "if (true)",
+             ["PsiCore.TetMesh"]),
+    Mutation("lod_lattice_over_the_point_list", "Representations/PsiLODImage.cxx",
+             "GlobalLattice(region.Parallel ? region.Global : used, resolution)",
+             "GlobalLattice(region.Parallel ? region.Global : piece->GetBounds(), resolution)",
+             ["PsiPython.lod_inputs"]),
     Mutation("lod_ghosts_everywhere", "Representations/PsiLODImage.cxx",
              "  vtkUnsignedCharArray* points = nullptr;",
              "  vtkUnsignedCharArray* points = image->AllocatePointGhostArray();",
@@ -271,7 +283,7 @@ MUTATIONS = [
              "    true);", ["PsiRendering.TranslucentGeometry"]),
     # in parallel: one lattice over the whole mesh, each rank drawing its own cut of it
     Mutation("lod_rank_own_lattice", "Representations/PsiLODImage.cxx",
-             "GlobalLattice(region.Parallel ? region.Global : piece->GetBounds(), resolution)",
+             "GlobalLattice(region.Parallel ? region.Global : used, resolution)",
              "GlobalLattice(piece->GetBounds(), resolution)", ["PsiPython.mpi_lod"]),
     Mutation("lod_lattice_over_own_cut", "Representations/vtkPsiVolumeRepresentationInteraction.cxx",
              "    all.AddBox(cut);", "    all.AddBox(own);", ["PsiPython.mpi_lod"]),
@@ -333,7 +345,7 @@ MUTATIONS = [
              "includePoint(mix(viewP[j], viewP[i], di / (di - dj)), lo, hi);", GL),
     Mutation("time_step_keeps_gradients", "Rendering/PsiMeshBuffers.cxx",
              "  this->UploadPoints(renWin);\n  this->GradientsOnGPU = false;\n  return true;",
-             "  this->UploadPoints(renWin);\n  return true;", ["PsiRendering.Isosurfaces"]),
+             "  this->UploadPoints(renWin);\n  return true;", ISO_OTHERS),
     Mutation("near_cull_needs_two_in_front", "Shaders/PsiNearClipGS.glsl",
              "nearClipped = inFront > 0;", "nearClipped = inFront > 1;", GL),
     Mutation("near_box_clamped_too_far", "Shaders/PsiNearClipGS.glsl",
@@ -356,17 +368,16 @@ MUTATIONS = [
              "ivec2(i1, 0), 0).r - before < 0.5;", "ivec2(i1, 0), 0).r - before < 1.5;", GL),
     # --- Isosurface piece order (Röttger et al. 2000 §10; Maximo et al. 2010 §3.4).
     Mutation("iso_eye_piece_first", "Shaders/PsiIsoTrianglesGS.glsl",
-             "  for (int j = last + 1; j > e; --j)\n",
-             "  emitPiece(e, smin, smax, nearClipped);\n  for (int j = last + 1; j > e; --j)\n",
-             ["PsiRendering.Isosurfaces"]),
+             "int j = k == steps - 1 ? e :", "int j = k == 0 ? e :", ISO_VIEWS + ISO_OTHERS),
     Mutation("iso_surface_at_wrong_end", "Shaders/PsiIsoTrianglesGS.glsl",
-             "    emitSurface(j - 1);\n  }", "    emitSurface(j);\n  }", ["PsiRendering.Isosurfaces"]),
-    # Front to back (early ray termination) the same sequence reversed, with the same mistake.
-    Mutation("iso_surface_at_wrong_end_nearest_first", "Shaders/PsiIsoTrianglesGS.glsl",
-             "      emitSurface(j - 1);\n", "      emitSurface(j);\n", ["PsiRendering.Isosurfaces"]),
+             "emitSurface(below < 0 ? j - 1 : j);", "emitSurface(below < 0 ? j : j);",
+             ISO_VIEWS + ISO_OTHERS),
+    # Front to back (early ray termination) the same sequence reversed.
+    Mutation("iso_sequence_not_reversed_nearest_first", "Shaders/PsiIsoTrianglesGS.glsl",
+             "int k = nearestFirst ? steps - 1 - i : i;", "int k = i;", ISO_VIEWS + ISO_OTHERS),
     Mutation("iso_parallel_eye_side", "Shaders/PsiIsoTrianglesGS.glsl",
              "(gradient.z < 0.0 ? -big : big)", "(gradient.z < 0.0 ? big : -big)",
-             ["PsiRendering.Isosurfaces"]),
+             ISO_VIEWS + ISO_OTHERS),
     # --- Psi table and pre-integration table (Moreland & Angel 2004 §4; Röttger et al. 2000 §4).
     Mutation("psi_table_lookup_unwarped", "Core/PsiPartialPreIntegrationTable.cxx",
              "return 1.0 - std::sqrt(std::max(1.0 - gamma, 0.0));", "return gamma;", ["PsiCore.Math"]),
@@ -498,10 +509,10 @@ MUTATIONS = [
     # prefix that sees spikes between samples, and the piece's node interval in the shader.
     Mutation("adaptive_piece_interval_off_by_one", "Shaders/PsiAdaptiveFS.glsl",
              "tfPiece = nStep > 0 ? ni - 1 : ni;", "tfPiece = nStep > 0 ? ni : ni;",
-             ["PsiRendering.Isosurfaces"]),
+             ISO_VIEWS + ISO_OTHERS),
     Mutation("adaptive_search_descending_bound", "Shaders/PsiAdaptiveFS.glsl",
              "int ni = ds >= 0.0 ? lo : lo - 1;", "int ni = ds >= 0.0 ? lo : lo;",
-             ["PsiRendering.Isosurfaces"]),
+             ISO_VIEWS + ISO_OTHERS),
     Mutation("nodes_step_not_split", "Core/PsiTransferFunctionNodes.cxx",
              "if (Distance(left, right) > 1e-6)", "if (Distance(left, right) > 1e6)",
              ["PsiCore.TransferFunctionNodes"]),
@@ -532,6 +543,12 @@ MUTATIONS = [
     # --- The accuracy report from the GUI (Python/psivolume/gui.py, Plugin/PsiPluginPython.cxx).
     Mutation("plugin_leaves_sys_path_alone", "Plugin/PsiPluginPython.cxx",
              "  if (!folder.empty())\n", "  if (folder.empty())\n", ["PsiPython.gui_report"]),
+    Mutation("report_keeps_numpy_names", "Python/psivolume/restore.py",
+             "                if names.get(name, _ABSENT) is not value:",
+             "                if False:", ["PsiPython.gui_report"]),
+    Mutation("report_keeps_names_it_bound", "Python/psivolume/restore.py",
+             "            for name in [n for n in names if n not in saved]:",
+             "            for name in []:", ["PsiPython.gui_report"]),
     Mutation("report_draws_beside_other_sources", "Python/psivolume/gui.py",
              "        r.Visibility = 0\n", "        pass\n", ["PsiPython.gui_report"]),
     Mutation("report_table_loses_its_first_row", "Python/psivolume/gui.py",

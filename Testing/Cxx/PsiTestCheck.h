@@ -22,6 +22,9 @@ struct RequestedSettings
 {
   int Projector = -1;
   int Decomposition = -1;
+  /// --part NAME: the part of a test's checks to run (a test split into several CTest tests,
+  /// each compiling its own shader programs); empty: all of them.
+  std::string Part;
 };
 
 inline RequestedSettings& Requested()
@@ -30,8 +33,8 @@ inline RequestedSettings& Requested()
   return r;
 }
 
-/// Reads `[IMAGE_FOLDER] [--projector geometry|compute] [--decomposition silhouette|fan]` into
-/// Requested() and returns the image folder ("" when none: no images are written).
+/// Reads `[IMAGE_FOLDER] [--projector geometry|compute] [--decomposition silhouette|fan]
+/// [--part NAME]` into Requested() and returns the image folder ("" when none: no images are written).
 inline std::string ParseArguments(int argc, char* argv[])
 {
   std::string folder;
@@ -49,12 +52,23 @@ inline std::string ParseArguments(int argc, char* argv[])
       Requested().Decomposition = value == "fan" ? 1 : 0;
       ++i;
     }
+    else if (a == "--part")
+    {
+      Requested().Part = value;
+      ++i;
+    }
     else
     {
       folder = a;
     }
   }
   return folder;
+}
+
+/// Whether the command line asked for the part `name` of a test's checks, or for all of them.
+inline bool RunsPart(const std::string& name)
+{
+  return Requested().Part.empty() || Requested().Part == name;
 }
 
 /// Gives `mapper` the projector and decomposition the command line asked for.

@@ -1,11 +1,14 @@
 """The plugin and the Python package as installed (`cmake --install`, the Debian package of
 scripts/build-deb.sh): psivolume imports from the install tree with the checkout's Python/ off
 the path, the plugin loads by path (--prefix) or by name (--by-name, from ParaView's plugin
-list) with every PsiVolume library from the installed directory, and 'Psi Volume' draws the
-embedded default (the Wavelet, tetrahedralized)."""
+list) with every PsiVolume library from the installed directory, 'Psi Volume' draws the
+embedded default (the Wavelet, tetrahedralized) as the installed reference renderer does, and
+ParaView's reader factory opens a .off file with the installed tetrahedral reader: what an
+install changes (the tests of the build tree cover the rest)."""
 import argparse
 import os
 import sys
+import tempfile
 
 from paraview import simple
 
@@ -57,4 +60,23 @@ reference = accuracy.find_reference_renderer()
 t.check(os.path.samefile(os.path.dirname(reference), os.path.dirname(plugin))
         and os.access(reference, os.X_OK),
         "the accuracy report's reference renderer is installed beside the plugin")
+# the installed reference renderer draws what 'Psi Volume' drew (the accuracy report's exact row)
+with tempfile.TemporaryDirectory() as work:
+    exact = accuracy.reference_image(accuracy.Capture(view, d, src, work), runs=1)[0][0]
+mean, worst = accuracy.errors(image, exact)
+t.check(mean < 1.0, "the installed reference renderer's image: 'Psi Volume' %.3f/255 from it "
+        "(worst %.0f)" % (mean, worst))
+
+# ParaView's reader factory offers the installed tetrahedral OFF reader (the plugin's XML)
+with tempfile.TemporaryDirectory() as work:
+    path = os.path.join(work, "one.off")
+    with open(path, "w") as f:
+        f.write("4 1\n0 0 0 0\n1 0 0 1\n0 1 0 2\n0 0 1 3\n0 1 2 3\n")
+    reader = simple.OpenDataFile(path)
+    t.check(reader is not None and reader.GetXMLName() == "PsiOFFTetReader",
+            "a .off file opens with the installed tetrahedral reader (%s)"
+            % (reader.GetXMLName() if reader else None))
+    if reader is not None:
+        reader.UpdatePipeline()
+        t.check(reader.GetDataInformation().GetNumberOfCells() == 1, "and reads its tetrahedron")
 t.finish()
