@@ -82,8 +82,11 @@ else ()
 endif ()
 
 # While the camera moves: the volume level of detail chosen by mode and budget, never in still
-# renders or screenshots, close to the full frame; rebuilt for new arrays and data; hard inputs.
-psi_add_python_test(interaction TIMEOUT 300)
+# renders or screenshots, close to the full frame, hard inputs, a state file (part `modes`); rebuilt
+# for new arrays and data (`changes`) and time steps (`time`).
+foreach (part IN ITEMS modes changes time)
+  psi_add_python_test(interaction.${part} SCRIPT interaction ARGS ${part} TIMEOUT 300)
+endforeach ()
 
 # Scenes nobody wrote by hand: a fixed set of seeds of the randomized scene checker (meshes,
 # arrays, transfer functions, cameras and settings drawn at random, each still frame against the

@@ -51,7 +51,7 @@ if [ -n "$tsan" ]; then
   bash "$root/scripts/lib/configure.sh" "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DPSI_SANITIZE_THREAD=ON -DPSI_BUILD_BENCHMARKS=OFF
   cmake --build "$build" -j"$(nproc)" --target PsiVolume TestLODImage
-  only=${only:-'^(PsiRepresentations\.LODImage|PsiPython\.(interaction|lod_inputs))$'}
+  only=${only:-'^(PsiRepresentations\.LODImage|PsiPython\.(interaction\..*|lod_inputs))$'}
 else
   bash "$root/scripts/build.sh"
 fi

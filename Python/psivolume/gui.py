@@ -9,11 +9,15 @@ From pvpython or the GUI's Python shell, once the plugin is loaded:
     psivolume.gui.OPTIONS.update(frames=1, budget=20)   # what the button runs with
     rows, views = psivolume.gui.run_report()
 
-The tables are ProgrammableSources whose scripts hold the rows: a saved state shows them again.
-ParaView runs those scripts in __main__ after star imports of numpy: run_report leaves the user's
-namespace as it found it (restore.main_namespace), also when it fails."""
+The tables are the plugin's 'PsiReportTable' sources (XML/PsiVolumeReportTable.xml: VTK's
+delimited-text reader reading a string property), which hold the rows as text: a saved state shows
+them again, and neither the report nor loading the state runs a script in the user's __main__ (a
+ProgrammableSource would, after star imports of numpy). run_report leaves the user's namespace as
+it found it (restore.main_namespace) all the same, also when it fails."""
 import contextlib
-import json
+import csv
+import io
+import math
 import tempfile
 
 from paraview import servermanager, simple
@@ -33,26 +37,13 @@ NUMBERS = [("2 s/frame", "spf"), ("3 CPU s/frame", "cpu"), ("4 once s", "once"),
            ("5 time / Average", "ratio"), ("6 mean err", "mean"), ("7 max err", "max"),
            ("8 mean err x s", "err_s")]
 
-# The script of a ProgrammableSource whose output (a vtkTable) has the columns given as
-# [name, "string" or "number", values] in JSON: NaN where a value is missing.
-TABLE_SCRIPT = """import json
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
-table = self.GetTableOutput()
-for name, kind, values in json.loads(%r):
-    column = vtkStringArray() if kind == "string" else vtkDoubleArray()
-    column.SetName(name)
-    for v in values:
-        column.InsertNextValue(v)
-    table.AddColumn(column)
-"""
-
 
 def run_report(view=None, src=None, out_dir=None, **options):
     """accuracy.report on `view` (default: the active one) and `src`'s volume in it (default: the
     active source), with OPTIONS updated by `options`, under ParaView's progress; writes its
     files to `out_dir` (default: a new temporary folder) and shows the rows (show_rows).
     Returns (rows, views)."""
-    with restore.main_namespace():  # the tables' scripts run in the user's __main__
+    with restore.main_namespace():  # whatever a step imports into __main__ leaves again
         view = view or simple.GetActiveView()
         src = src or simple.GetActiveSource()
         check_scene(view, src)
@@ -128,9 +119,35 @@ def chart_columns(rows):
     return columns
 
 
+def table_text(columns):
+    """`columns` ([name, "string" or "number", values]) as comma-separated text with a header
+    line, as VTK's delimited-text reader reads it back: a number as Python's repr ("nan" where
+    missing), a string without double quotes (the reader drops a field with doubled ones) and
+    "-" for an empty one (a column of empty strings would be read as numbers)."""
+    def field(kind, v):
+        if kind == "number":
+            return repr(float(v)) if math.isfinite(v) else "nan"
+        return str(v).replace('"', "'") or "-"
+    out = io.StringIO()
+    writer = csv.writer(out, quoting=csv.QUOTE_MINIMAL, lineterminator="\n")
+    writer.writerow([name.replace('"', "'") for name, _, _ in columns])
+    for row in zip(*[[field(kind, v) for v in values] for _, kind, values in columns]):
+        writer.writerow(row)
+    return out.getvalue()
+
+
 def table_source(columns, name):
-    return simple.ProgrammableSource(registrationName=name, OutputDataSetType="vtkTable",
-                                     Script=TABLE_SCRIPT % json.dumps(columns))
+    """A 'PsiReportTable' source holding `columns` (table_text), registered as `name` in the
+    pipeline browser."""
+    proxy = servermanager._getPyProxy(
+        servermanager.ProxyManager().NewProxy("internal_sources", "PsiReportTable"))
+    controller = servermanager.ParaViewPipelineController()
+    controller.PreInitializeProxy(proxy)
+    proxy.Text = table_text(columns)
+    proxy.UpdateVTKObjects()
+    controller.PostInitializeProxy(proxy)
+    controller.RegisterPipelineProxy(proxy, name)
+    return proxy
 
 
 def show_rows(rows, name):

@@ -76,9 +76,10 @@ _ABSENT = object()
 def main_namespace():
     """__main__'s names as they were when the block ends, however it ends: each name bound
     meanwhile removed, each one rebound or removed put back. ParaView runs a ProgrammableSource's
-    script (the report's tables) in __main__ after `from numpy import *` and numpy_interface's
-    algorithms' `*`: 608 names, among them `sum`, `max`, `min`, `abs`, `all` and `vtk`, would
-    replace the user's from then on."""
+    script in __main__ after `from numpy import *` and numpy_interface's algorithms' `*`: 608
+    names, among them `sum`, `max`, `min`, `abs`, `all` and `vtk`, would replace the user's from
+    then on (the report's tables were ProgrammableSources; they are now script-free sources,
+    and this guard stays for whatever a step of the report may import)."""
     main = sys.modules.get("__main__")
     saved = dict(vars(main)) if main is not None else {}
     try:

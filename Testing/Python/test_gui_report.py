@@ -15,6 +15,7 @@ import importlib.util
 import math
 import os
 import sys
+import tempfile
 
 from paraview import servermanager, simple
 
@@ -163,4 +164,30 @@ gui.show_chart = show_chart
 check("a chart that fails" in str(failed), "a report whose chart fails raises: %s" % failed)
 check(not changed, "after a report that failed, the user's namespace as before: %d names changed "
       "%s" % (len(changed), changed[:8]))
+
+# A saved state shows the tables again, and loading it (the tables' update included) leaves the
+# user's namespace as it was (a ProgrammableSource would run its script in __main__).
+def load_state_and_changed_names():
+    """The tables of a state saved now and loaded into a new session (their updates included),
+    and the names of __main__ the load changed (this test's own names are locals here)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        state = os.path.join(tmp, "report.pvsm")
+        simple.SaveState(state)
+        simple.ResetSession()
+        before = main_names()
+        simple.LoadState(state)
+        loaded = simple.FindSource(name)
+        tables = (servermanager.Fetch(loaded) if loaded else None,
+                  servermanager.Fetch(simple.FindSource(name + " (error against time)")))
+        after = main_names()
+    return tables, sorted(k for k in set(before) | set(after) if before.get(k) != after.get(k))
+
+
+(table, chart_table), changed = load_state_and_changed_names()
+column = table.GetColumnByName(gui.NAME) if table else None
+loaded_names = [column.GetValue(i) for i in range(column.GetNumberOfValues())] if column else []
+check(loaded_names == expected and chart_table.GetNumberOfColumns() == len(labels) + 1,
+      "a saved state shows the tables again: %s" % loaded_names)
+check(not changed, "loading the state leaves the user's namespace as it was: %d names changed %s"
+      % (len(changed), changed[:8]))
 finish()
