@@ -41,16 +41,11 @@ if [ -n "$missing" ]; then
   echo "which installs these packages: $(echo $missing)" >&2
   exit 1
 fi
-# Debian's build flags, as dpkg-buildpackage sets them (hardening: all of it), with CMake's
-# Release optimization in place of their -O2 and no debugging information (stripped anyway).
-export DEB_BUILD_MAINT_OPTIONS=hardening=+all
-export DEB_CFLAGS_MAINT_STRIP="-g -O2" DEB_CXXFLAGS_MAINT_STRIP="-g -O2"
-flag() { (cd "$root" && dpkg-buildflags --get "$1"); }
+# Debian's build flags, as dpkg-buildpackage sets them (scripts/lib/debian-flags.sh).
+mapfile -t flags < <(bash "$root/scripts/lib/debian-flags.sh")
 bash "$root/scripts/lib/configure.sh" "$build" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_INSTALL_PREFIX=/usr -DBUILD_TESTING=OFF -DPSI_BUILD_BENCHMARKS=OFF -DPSI_DEB_PACKAGE=ON \
-  -DCMAKE_C_FLAGS="$(flag CPPFLAGS) $(flag CFLAGS)" -DCMAKE_CXX_FLAGS="$(flag CPPFLAGS) $(flag CXXFLAGS)" \
-  -DCMAKE_EXE_LINKER_FLAGS="$(flag LDFLAGS)" -DCMAKE_SHARED_LINKER_FLAGS="$(flag LDFLAGS)" \
-  -DCMAKE_MODULE_LINKER_FLAGS="$(flag LDFLAGS)"
+  "${flags[@]}"
 cmake --build "$build" -j"$(nproc)" >&2
 rm -rf "$build/package"
 (cd "$build" && cpack -G DEB) >&2

@@ -58,7 +58,7 @@ COMMON=(paraview paraview-dev python3-paraview libutfcpp-dev libhdf5-dev libogg-
   libgl2ps-dev libgdal-dev libfreetype-dev libavcodec-dev libavformat-dev libswscale-dev
   libavutil-dev libeigen3-dev libexpat1-dev libboost-dev python3-dev libx11-dev libgl-dev
   zlib1g-dev python3-mpi4py libdouble-conversion-dev libcgal-dev xvfb xauth mesa-utils cmake g++
-  make python3-numpy python3-matplotlib clang git dpkg-dev file gdb)
+  make python3-numpy python3-matplotlib clang git dpkg-dev file gdb ccache)
 QT6=(qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-svg-dev qt6-5compat-dev libxcursor-dev)
 series=$(paraview_series)
 case "$series" in
