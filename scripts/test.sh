@@ -8,7 +8,7 @@
 #                                             scripts/debian-system.sh); 5.11, 5.13, 6.1 or all
 #   bash scripts/test.sh --only REGEX         only the tests whose names match REGEX
 #   bash scripts/test.sh --jobs N             N tests at a time (default 2; RUN_SERIAL ones alone)
-#   bash scripts/test.sh --tsan               the level of detail's and the interaction's tests
+#   bash scripts/test.sh --tsan               the level of detail's tests and the interaction's modes
 #                                             under ThreadSanitizer: the plugin built with
 #                                             PSI_SANITIZE_THREAD=ON into build-tsan/ (only what
 #                                             they need); any report fails its test
@@ -51,7 +51,7 @@ if [ -n "$tsan" ]; then
   bash "$root/scripts/lib/configure.sh" "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DPSI_SANITIZE_THREAD=ON -DPSI_BUILD_BENCHMARKS=OFF
   cmake --build "$build" -j"$(nproc)" --target PsiVolume TestLODImage
-  only=${only:-'^(PsiRepresentations\.LODImage|PsiPython\.(interaction\..*|lod_inputs))$'}
+  only=${only:-'^(PsiRepresentations\.LODImage|PsiPython\.(interaction\.modes|lod_inputs))$'}
 else
   bash "$root/scripts/build.sh"
 fi
