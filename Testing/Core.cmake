@@ -34,6 +34,12 @@ target_link_libraries(TestTetMesh PRIVATE PsiVolume::Filters PsiVolume::Core VTK
   VTK::CommonDataModel VTK::CommonExecutionModel VTK::RenderingCore)
 add_test(NAME PsiCore.TetMesh COMMAND TestTetMesh)
 
+# Several volumes as one mesh: placement, slot scalars, the concatenated tables, neighbours.
+add_executable(TestIntermixedMesh Cxx/TestIntermixedMesh.cxx)
+target_link_libraries(TestIntermixedMesh PRIVATE PsiVolume::Core VTK::CommonCore
+  VTK::CommonDataModel VTK::RenderingCore)
+add_test(NAME PsiCore.IntermixedMesh COMMAND TestIntermixedMesh)
+
 # MPVONC's order against CGAL's exact orientation from many views.
 set(CGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE TRUE)
 find_package(CGAL REQUIRED)

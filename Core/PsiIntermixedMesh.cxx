@@ -1,0 +1,181 @@
+#include "PsiIntermixedMesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace psi
+{
+namespace
+{
+// Point i of `mesh` in the world: its unshifted coordinates placed by the row-major `m`.
+std::array<double, 3> WorldPoint(const TetMesh& mesh, const std::array<double, 16>& m, size_t i)
+{
+  const float* p = &mesh.Points4[4 * i];
+  const double x[3] = { p[0] + mesh.Shift[0], p[1] + mesh.Shift[1], p[2] + mesh.Shift[2] };
+  std::array<double, 3> w;
+  for (int r = 0; r < 3; ++r)
+  {
+    w[r] = m[4 * r] * x[0] + m[4 * r + 1] * x[1] + m[4 * r + 2] * x[2] + m[4 * r + 3];
+  }
+  return w;
+}
+
+// The world bounds of the points the volumes' cells use (empty: all zero).
+void CellPointWorldBounds(const std::vector<IntermixedVolume>& volumes, double b[6])
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k)
+  {
+    b[2 * k] = inf;
+    b[2 * k + 1] = -inf;
+  }
+  for (const IntermixedVolume& v : volumes)
+  {
+    const TetCells cells = v.Mesh->Cells();
+    for (size_t t = 0; t < v.Mesh->NumberOfTets(); ++t)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        const std::array<double, 3> w = WorldPoint(*v.Mesh, v.ModelToWorld, cells(t, c));
+        for (int k = 0; k < 3; ++k)
+        {
+          b[2 * k] = std::min(b[2 * k], w[k]);
+          b[2 * k + 1] = std::max(b[2 * k + 1], w[k]);
+        }
+      }
+    }
+  }
+  if (!(b[0] <= b[1]))
+  {
+    std::fill(b, b + 6, 0.0);
+  }
+}
+
+// The longest and the shortest (non-zero) edge of the mesh's tetrahedra.
+void MeasureEdges(TetMesh& m)
+{
+  double maxEdge2 = 0, minEdge2 = std::numeric_limits<double>::infinity();
+  for (size_t t = 0; t < m.NumberOfTets(); ++t)
+  {
+    for (int a = 0; a < 4; ++a)
+    {
+      const float* p = &m.Points4[4 * size_t(m.Tets[4 * t + a])];
+      for (int c = a + 1; c < 4; ++c)
+      {
+        const float* q = &m.Points4[4 * size_t(m.Tets[4 * t + c])];
+        const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+          (p[2] - q[2]) * (p[2] - q[2]);
+        maxEdge2 = std::max(maxEdge2, d2);
+        minEdge2 = d2 > 0 ? std::min(minEdge2, d2) : minEdge2;
+      }
+    }
+  }
+  m.MaxEdgeLength = std::sqrt(maxEdge2);
+  m.MinEdgeLength = std::isfinite(minEdge2) ? std::sqrt(minEdge2) : 0;
+}
+} // namespace
+
+TetMesh IntermixMeshes(
+  const std::vector<IntermixedVolume>& volumes, int samples, std::vector<size_t>* firstTet)
+{
+  TetMesh m;
+  double b[6];
+  CellPointWorldBounds(volumes, b);
+  for (int k = 0; k < 3; ++k)
+  {
+    m.Shift[k] = 0.5 * (b[2 * k] + b[2 * k + 1]);
+    m.Bounds[2 * k] = b[2 * k] - m.Shift[k];
+    m.Bounds[2 * k + 1] = b[2 * k + 1] - m.Shift[k];
+  }
+  const bool opacity = std::any_of(volumes.begin(), volumes.end(),
+    [](const IntermixedVolume& v) { return !v.Mesh->Opacity.empty(); });
+  const int n = static_cast<int>(volumes.size());
+  if (firstTet)
+  {
+    firstTet->assign(1, 0);
+  }
+  for (int k = 0; k < n; ++k)
+  {
+    const TetMesh& v = *volumes[k].Mesh;
+    const uint32_t base = static_cast<uint32_t>(m.NumberOfPoints());
+    for (size_t i = 0; i < v.NumberOfPoints(); ++i)
+    {
+      const std::array<double, 3> w = WorldPoint(v, volumes[k].ModelToWorld, i);
+      const double u = v.Points4[4 * i + 3];
+      m.Points4.insert(m.Points4.end(),
+        { static_cast<float>(w[0] - m.Shift[0]), static_cast<float>(w[1] - m.Shift[1]),
+          static_cast<float>(w[2] - m.Shift[2]), static_cast<float>(SlotScalar(k, n, samples, u)) });
+      if (opacity)
+      {
+        const double o = v.Opacity.empty() ? u : v.Opacity[i];
+        m.Opacity.push_back(static_cast<float>(SlotScalar(k, n, samples, o)));
+      }
+    }
+    const TetCells cells = v.Cells();
+    for (size_t t = 0; t < v.NumberOfTets(); ++t)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        m.Tets.push_back(base + cells(t, c));
+      }
+    }
+    m.NonTetCells += v.NonTetCells;
+    m.NonFiniteTets += v.NonFiniteTets;
+    m.CellScalars = m.CellScalars || v.CellScalars;
+    if (firstTet)
+    {
+      firstTet->push_back(m.NumberOfTets());
+    }
+  }
+  MeasureEdges(m);
+  return m;
+}
+
+TransferFunctionTable IntermixTables(const std::vector<TransferFunctionTable>& tables)
+{
+  TransferFunctionTable all;
+  for (const TransferFunctionTable& t : tables)
+  {
+    all.Rgba.insert(all.Rgba.end(), t.Rgba.begin(), t.Rgba.end());
+    all.Size += t.Size;
+  }
+  return all; // Range and OpacityRange [0, 1]: slot scalars
+}
+
+std::vector<float> IntermixOpacityPrefixes(const std::vector<std::vector<float>>& prefixes)
+{
+  std::vector<float> all;
+  float before = 0;
+  for (const std::vector<float>& p : prefixes)
+  {
+    for (float count : p)
+    {
+      all.push_back(before + count);
+    }
+    before = all.empty() ? 0.0f : all.back();
+  }
+  return all;
+}
+
+std::vector<int32_t> IntermixNeighbors(
+  const std::vector<std::vector<int32_t>>& neighbors, const std::vector<size_t>& firstTet)
+{
+  std::vector<int32_t> all(4 * firstTet.back(), -1);
+  for (size_t k = 0; k < neighbors.size() && k + 1 < firstTet.size(); ++k)
+  {
+    const size_t count = 4 * (firstTet[k + 1] - firstTet[k]);
+    if (neighbors[k].size() != count)
+    {
+      continue; // none, or not this mesh's: the volume's cells keep -1
+    }
+    for (size_t i = 0; i < count; ++i)
+    {
+      const int32_t t = neighbors[k][i];
+      all[4 * firstTet[k] + i] = t < 0 ? -1 : static_cast<int32_t>(t + firstTet[k]);
+    }
+  }
+  return all;
+}
+
+} // namespace psi
