@@ -10,6 +10,7 @@
 #define PsiGpuTable_h
 
 #include "PsiPreIntegrationTable.h"
+#include "PsiTransferFunctionTable.h"
 #include "PsiSettings.h" // the defaults of the table sizes
 
 #include <vector>
@@ -32,6 +33,12 @@ struct PsiTableSources
   psi::PreIntegrationLengthAxis LengthAxis; ///< the mesh's segment lengths (full pre-integration)
   int MaxNodes = psi::MaxAdaptiveNodes;     ///< adaptive sampling's node budget
   double NodeTolerance = psi::AdaptiveNodeTolerance; ///< how closely the nodes follow the function
+  /// A sampled transfer function made elsewhere (several volumes intermixed: psi::IntermixTables)
+  /// with its opacity prefix counts and whether it has a zero region, used instead of sampling
+  /// Property; nullptr: sample Property.
+  const psi::TransferFunctionTable* Table = nullptr;
+  const std::vector<float>* OpacityPrefix = nullptr;
+  bool ZeroOpacity = false;
 };
 
 class PsiGpuTable

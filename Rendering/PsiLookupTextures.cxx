@@ -26,7 +26,7 @@ bool PsiTransferFunctionTexture::NeedsUpdate(const PsiTableSources& in) const
 {
   const double* range = in.ScalarRange;
   const double* orange = in.OpacityRange ? in.OpacityRange : range;
-  return in.Property->GetMTime() > this->Time || this->Range[0] != range[0] ||
+  return in.Table || in.Property->GetMTime() > this->Time || this->Range[0] != range[0] ||
     this->Range[1] != range[1] || this->OpacityRange[0] != orange[0] ||
     this->OpacityRange[1] != orange[1] || this->Samples != in.Samples;
 }
@@ -37,10 +37,11 @@ void PsiTransferFunctionTexture::Update(vtkOpenGLRenderWindow* renWin, const Psi
   const double* range = in.ScalarRange;
   const double* opacityRange = in.OpacityRange;
   psi::TransferFunctionTable tf =
-    psi::SampleTransferFunction(property, range, in.Samples, opacityRange);
+    in.Table ? *in.Table : psi::SampleTransferFunction(property, range, in.Samples, opacityRange);
   // the prefix also sees control points between samples, which the table may not show
-  bool zero = false;
-  std::vector<float> prefix = psi::OpacityPrefixCounts(tf, property, zero);
+  bool zero = in.ZeroOpacity;
+  std::vector<float> prefix =
+    in.Table ? *in.OpacityPrefix : psi::OpacityPrefixCounts(tf, property, zero);
   if (tf.Rgba != this->Table.Rgba || prefix != this->OpacityPrefix || !this->IsUploaded())
   {
     this->TextureIn(renWin)->Create1DFromRaw(tf.Size, 4, VTK_FLOAT, tf.Rgba.data());

@@ -99,6 +99,21 @@ bool PsiMeshBuffers::Update(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBa
   this->ScalarsTime = scalars->GetMTime();
   this->Geometry = GeometryOf(input);
   this->ArrayKey = arrayKey;
+  return this->Upload(renWin, maxTexels, error);
+}
+
+bool PsiMeshBuffers::UseMesh(vtkOpenGLRenderWindow* renWin, psi::TetMesh mesh,
+  const std::string& key, long long maxTexels, std::string& error)
+{
+  this->Mesh = std::move(mesh);
+  this->GeometryTime = this->ScalarsTime = 0;
+  this->Geometry = {};
+  this->ArrayKey = key;
+  return this->Upload(renWin, maxTexels, error);
+}
+
+bool PsiMeshBuffers::Upload(vtkOpenGLRenderWindow* renWin, long long maxTexels, std::string& error)
+{
   ++this->Version;
   bool fits = true;
   // one texel per point in each texture buffer (points, opacity scalars, gradients)

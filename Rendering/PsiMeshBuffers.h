@@ -52,6 +52,12 @@ public:
   bool Update(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBase* input,
     vtkDataArray* scalars, bool cellScalars, psi::ScalarComponent component,
     const std::string& arrayKey, long long maxTexels, std::string& error);
+  /// Uploads `mesh`, made elsewhere (several volumes intermixed: psi::IntermixMeshes), as Update
+  /// uploads a gathered one; `key` names it (GetKey).
+  bool UseMesh(vtkOpenGLRenderWindow* renWin, psi::TetMesh mesh, const std::string& key,
+    long long maxTexels, std::string& error);
+  /// The array key of the gathered mesh, or the key given with UseMesh.
+  const std::string& GetKey() const { return this->ArrayKey; }
   /// Uploads the smoothed point gradients once per mesh.
   void UpdateGradients(vtkOpenGLRenderWindow* renWin);
 
@@ -68,6 +74,7 @@ private:
   PsiMeshBuffers(const PsiMeshBuffers&) = delete;
   void operator=(const PsiMeshBuffers&) = delete;
   void UploadPoints(vtkOpenGLRenderWindow* renWin);
+  bool Upload(vtkOpenGLRenderWindow* renWin, long long maxTexels, std::string& error);
 
   psi::TetMesh Mesh;
   int Version = 0;

@@ -97,6 +97,15 @@ double* vtkPsiVolumeMapper::GetBounds()
 {
   vtkDataSet* input = this->GetDataSetInput();
   Internals& I = *this->Impl;
+  if (I.Given) // several volumes intermixed: the world bounds of their mesh
+  {
+    const psi::TetMesh& m = I.Given->Mesh;
+    for (int k = 0; k < 6; ++k)
+    {
+      this->Bounds[k] = m.Bounds[k] + m.Shift[k / 2];
+    }
+    return this->Bounds;
+  }
   if (!input)
   {
     I.BoundsInput = nullptr;
@@ -123,7 +132,8 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   Internals& I = *this->Impl;
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   vtkUnstructuredGridBase* input = this->GetInput();
-  if (!renWin || !input || I.Peeling.StageOf(this, vol) == PsiDepthPeelingCalls::Skip)
+  if (!renWin || (!input && !I.Given) || (!I.Given && this->RenderIntermixed(ren, vol)) ||
+    I.Peeling.StageOf(this, vol) == PsiDepthPeelingCalls::Skip)
   {
     return;
   }
@@ -144,10 +154,13 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     I.Release(I.Context);
   }
   I.Context = renWin;
-  if (!this->UpdateMesh(renWin, vol, input) || I.Mesh.GetMesh().NumberOfTets() == 0)
+  if (!(I.Given ? this->UpdateGivenMesh(renWin) : this->UpdateMesh(renWin, vol, input)) ||
+    I.Mesh.GetMesh().NumberOfTets() == 0)
   {
     return;
   }
+  // (also after frames of several volumes intermixed, whose read-outs were the combined draw's)
+  this->Stats.NumberOfTetrahedra = static_cast<vtkIdType>(I.Mesh.GetMesh().NumberOfTets());
   const PsiFrameCamera cam = PsiFrameCamera::FromRenderer(ren, vol, I.Mesh.GetMesh().Shift);
   const PsiTableSources sources = this->UpdateTransferFunction(renWin, vol);
   const PsiFramePlan plan = PlanFrame(this->Settings, this->SceneFacts(ren, vol, cam));
@@ -196,7 +209,11 @@ bool vtkPsiVolumeMapper::UpdateVisibilityOrder(
   }
   vtkVLogScopeF(this->LogVerbosity, "Psi Volume: visibility order");
   std::vector<int32_t> neighbors;
-  if (method == psi::Sorts::MPVONC && I.Order.NeedsMesh(I.Mesh.GetVersion(), method))
+  if (method == psi::Sorts::MPVONC && I.Order.NeedsMesh(I.Mesh.GetVersion(), method) && I.Given)
+  {
+    neighbors = I.Given->Neighbors;
+  }
+  else if (method == psi::Sorts::MPVONC && I.Order.NeedsMesh(I.Mesh.GetVersion(), method))
   {
     psi::FaceNeighborsFromArray(I.Mesh.GetMesh(),
       input->GetCellData() ? input->GetCellData()->GetArray("FaceNeighbors") : nullptr,

@@ -225,6 +225,9 @@ private:
 #endif
   void SetIsosurfaceVector(std::vector<double>& member, std::vector<double> v);
   void UpdateIsosurfaceList();
+  // several volumes intermixed (vtkPsiVolumeMapperIntermixed.cxx)
+  bool RenderIntermixed(vtkRenderer* ren, vtkVolume* vol);
+  bool UpdateGivenMesh(vtkOpenGLRenderWindow* renWin);
   bool UpdateMesh(
     vtkOpenGLRenderWindow* renWin, vtkVolume* vol, vtkUnstructuredGridBase* input);
   bool UpdateVisibilityOrder(

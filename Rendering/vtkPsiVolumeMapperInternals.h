@@ -10,13 +10,18 @@
 #include "PsiDepthPeelingCalls.h"
 #include "PsiDriverLimits.h"
 #include "PsiGeometryProjector.h"
+#include "PsiIntermixedScene.h"
 #include "PsiMeshBuffers.h"
 #include "PsiRenderTarget.h"
 #include "PsiSamplesPassed.h"
 #include "PsiLookupTextures.h"
 #include "PsiVisibilityOrder.h"
 
+#include "vtkSmartPointer.h"
+#include "vtkVolume.h"
+
 #include <cstdint>
+#include <memory>
 #include <string>
 
 struct vtkPsiVolumeMapper::Internals
@@ -46,6 +51,15 @@ struct vtkPsiVolumeMapper::Internals
   // Transfer-function nodes for adaptive sampling, for the property and range they came from.
   PsiAdaptiveNodes AdaptiveNodes;
 
+  // Several volumes intermixed (vtkPsiVolumeMapperIntermixed.cxx): the mapper that draws them as
+  // one mesh when this one draws a frame's intermixed volumes, its volume and the scene made for
+  // it; on that mapper, the scene it draws instead of an input (nullptr: its own input).
+  vtkSmartPointer<vtkPsiVolumeMapper> Union;
+  vtkSmartPointer<vtkVolume> UnionVolume;
+  std::unique_ptr<PsiIntermixedScene> Scene;
+  const PsiIntermixedScene* Given = nullptr;
+  std::string LastIntermixNote; // why volumes are not intermixed, said once
+
   PsiDriverLimits TestingLimits; // lowered limits for tests (SetDriverLimitsForTesting)
   /// The current context's buffer limits, lowered for tests.
   PsiDriverLimits Limits() const { return PsiDriverLimits::Query().LoweredTo(this->TestingLimits); }
@@ -67,6 +81,10 @@ struct vtkPsiVolumeMapper::Internals
     this->Target.ReleaseGraphicsResources(win);
     this->Geometry.ReleaseGraphicsResources();
     this->Compute.ReleaseGraphicsResources(win);
+    if (this->Union)
+    {
+      this->Union->ReleaseGraphicsResources(win);
+    }
     this->Context = nullptr;
   }
 };

@@ -72,6 +72,11 @@ psi_add_render_test(DegenerateProjections TestPsiDegenerateProjections FAN TIMEO
 psi_add_gl_executable(TestPsiCyclicOrder VTK::FiltersCore)
 psi_add_render_test(CyclicOrder TestPsiCyclicOrder)
 
+# Several volumes in one renderer drawn intermixed: disjoint volumes equal their union drawn as
+# one, in either order and from three views; their own transfer functions; one hidden.
+psi_add_gl_executable(TestPsiIntermixedVolumes VTK::FiltersCore)
+psi_add_render_test(IntermixedVolumes TestPsiIntermixedVolumes)
+
 psi_add_gl_executable(TestPsiVisibilityOrder)
 add_test(NAME PsiRendering.VisibilityOrder COMMAND TestPsiVisibilityOrder)
 set_tests_properties(PsiRendering.VisibilityOrder PROPERTIES TIMEOUT 120)

@@ -1,0 +1,93 @@
+#include "PsiIntermixedFrames.h"
+
+#include "vtkPsiVolumeMapper.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkNew.h"
+#include "vtkRenderer.h"
+#include "vtkUnstructuredGridBase.h"
+#include "vtkVolume.h"
+#include "vtkVolumeCollection.h"
+
+#include <map>
+
+namespace
+{
+// Per renderer: its frames so far, and which mapper claimed which frame.
+struct Frames
+{
+  unsigned long Frame = 0;
+  unsigned long ClaimedFrame = 0;
+  const vtkPsiVolumeMapper* Claimant = nullptr;
+};
+
+std::map<const vtkRenderer*, Frames>& AllFrames()
+{
+  static std::map<const vtkRenderer*, Frames> frames;
+  return frames;
+}
+
+void OnRendererEvent(vtkObject* caller, unsigned long event, void*, void*)
+{
+  const auto* ren = static_cast<const vtkRenderer*>(caller);
+  if (event == vtkCommand::DeleteEvent)
+  {
+    AllFrames().erase(ren);
+  }
+  else
+  {
+    ++AllFrames()[ren].Frame;
+  }
+}
+
+// The frames of `ren`, counted from the first call on (observers added once per renderer).
+Frames& FramesOf(vtkRenderer* ren)
+{
+  auto found = AllFrames().find(ren);
+  if (found != AllFrames().end())
+  {
+    return found->second;
+  }
+  vtkNew<vtkCallbackCommand> count;
+  count->SetCallback(OnRendererEvent);
+  ren->AddObserver(vtkCommand::StartEvent, count);
+  ren->AddObserver(vtkCommand::DeleteEvent, count);
+  Frames& frames = AllFrames()[ren];
+  frames.Frame = 1; // this call's frame, started before the observer was there
+  return frames;
+}
+} // namespace
+
+std::vector<PsiIntermixedMember> PsiIntermixedFrames::Members(vtkRenderer* ren)
+{
+  std::vector<PsiIntermixedMember> members;
+  vtkVolumeCollection* volumes = ren ? ren->GetVolumes() : nullptr;
+  if (!volumes)
+  {
+    return members;
+  }
+  vtkCollectionSimpleIterator it;
+  volumes->InitTraversal(it);
+  while (vtkVolume* vol = volumes->GetNextVolume(it))
+  {
+    auto* mapper = vtkPsiVolumeMapper::SafeDownCast(vol->GetMapper());
+    if (vol->GetVisibility() && mapper && mapper->GetInput() &&
+      mapper->GetInput()->GetNumberOfCells() > 0)
+    {
+      members.push_back({ vol, mapper });
+    }
+  }
+  return members;
+}
+
+bool PsiIntermixedFrames::Claim(vtkRenderer* ren, const vtkPsiVolumeMapper* mapper)
+{
+  Frames& frames = FramesOf(ren);
+  if (frames.ClaimedFrame != frames.Frame)
+  {
+    frames.ClaimedFrame = frames.Frame;
+    frames.Claimant = mapper;
+  }
+  return frames.Claimant == mapper;
+}

@@ -1,0 +1,26 @@
+// PsiIntermixedScene: what the mapper that draws several volumes intermixed is given instead of
+// an input and a property (vtkPsiVolumeMapperIntermixed.cxx): their tetrahedra as one mesh, its
+// face neighbours, and their transfer functions as one table (Core/PsiIntermixedMesh.h).
+#ifndef PsiIntermixedScene_h
+#define PsiIntermixedScene_h
+
+#include "PsiTetMesh.h"
+#include "PsiTransferFunctionTable.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+struct PsiIntermixedScene
+{
+  psi::TetMesh Mesh;
+  /// Names the volumes, their meshes' versions and their matrices: the mesh is made again when
+  /// it changes.
+  std::string Key;
+  std::vector<int32_t> Neighbors; ///< 4 per tetrahedron (MPVONC); empty when not asked for
+  psi::TransferFunctionTable Table;
+  std::vector<float> OpacityPrefix;
+  bool ZeroOpacity = false;
+};
+
+#endif

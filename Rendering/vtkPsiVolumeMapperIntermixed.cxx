@@ -1,0 +1,198 @@
+// vtkPsiVolumeMapper's side of several volumes in one renderer (PsiIntermixedFrames.h): every
+// visible volume drawn by a vtkPsiVolumeMapper goes into one mesh and one visibility order,
+// composited in one pass (Core/PsiIntermixedMesh.h), each volume with its own color map, opacity
+// function (or separate opacity array) and unit distance. The call that draws a frame's
+// volumes gathers each volume's mesh with its own mapper, makes the scene, and hands it to a
+// mapper of its own (Union) that draws it as it would draw one input; the settings of the
+// renderer's first such volume apply to the whole draw.
+#include "vtkPsiVolumeMapper.h"
+#include "vtkPsiVolumeMapperInternals.h"
+
+#include "PsiIntermixedFrames.h"
+#include "PsiIntermixedMesh.h"
+#include "PsiTransferFunctionAnalysis.h"
+
+#include "vtkCellData.h"
+#include "vtkMatrix4x4.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkUnstructuredGridBase.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+// Why the renderer's members are drawn one by one instead ("" when they are intermixed).
+std::string NotIntermixed(const std::vector<PsiIntermixedMember>& members)
+{
+  for (const PsiIntermixedMember& m : members)
+  {
+    if (m.Mapper->GetSettings().Isosurfaces().Count() > 0)
+    {
+      return "Psi Volume: volumes with isosurfaces are not yet intermixed with other volumes of "
+             "the view; each volume is drawn on its own, the later over the earlier.";
+    }
+  }
+  return "";
+}
+
+// The volume's matrix, row-major.
+std::array<double, 16> RowMajor(vtkVolume* vol)
+{
+  std::array<double, 16> m;
+  vtkMatrix4x4* matrix = vol->GetMatrix();
+  for (int i = 0; i < 16; ++i)
+  {
+    m[i] = matrix->GetElement(i / 4, i % 4);
+  }
+  return m;
+}
+} // namespace
+
+// True when this call is handled: the renderer's intermixed volumes drawn (this is the frame's
+// first call) or already drawn (a later one). False: this volume is drawn on its own.
+bool vtkPsiVolumeMapper::RenderIntermixed(vtkRenderer* ren, vtkVolume* vol)
+{
+  Internals& I = *this->Impl;
+  const std::vector<PsiIntermixedMember> members = PsiIntermixedFrames::Members(ren);
+  const std::string note = members.size() > 1 ? NotIntermixed(members) : "";
+  if (!note.empty() && note != I.LastIntermixNote)
+  {
+    vtkWarningMacro(<< note);
+  }
+  I.LastIntermixNote = note;
+  if (members.size() < 2 || !note.empty())
+  {
+    return false;
+  }
+  if (!PsiIntermixedFrames::Claim(ren, this))
+  {
+    this->ResetStatistics(); // drawn by the frame's first call, with the others
+    return true;
+  }
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  const psi::Settings& lead = members[0].Mapper->GetSettings();
+  const int samples = lead.TransferFunctionSamples;
+  // each volume's mesh, gathered by its own mapper, and its table at the lead's sample count
+  std::vector<psi::IntermixedVolume> volumes;
+  std::vector<PsiIntermixedMember> drawn;
+  std::vector<psi::TransferFunctionTable> tables;
+  std::vector<std::vector<float>> prefixes;
+  bool zero = false;
+  std::ostringstream key;
+  for (const PsiIntermixedMember& m : members)
+  {
+    Internals& M = *m.Mapper->Impl;
+    vtkVolumeProperty* property = m.Volume->GetProperty();
+    if (!psi::UnitDistanceProblem(property).empty())
+    {
+      continue; // as alone: no optical depth, nothing drawn (the mapper warns when alone)
+    }
+    if (M.Context && M.Context != renWin)
+    {
+      M.Release(M.Context);
+    }
+    M.Context = renWin;
+    if (!m.Mapper->UpdateMesh(renWin, m.Volume, m.Mapper->GetInput()) ||
+      M.Mesh.GetMesh().NumberOfTets() == 0)
+    {
+      continue;
+    }
+    const psi::TetMesh& mesh = M.Mesh.GetMesh();
+    psi::IntermixedVolume v;
+    v.Mesh = &mesh;
+    v.ModelToWorld = RowMajor(m.Volume);
+    volumes.push_back(v);
+    drawn.push_back(m);
+    key << m.Mapper << ':' << M.Mesh.GetVersion();
+    for (double e : v.ModelToWorld)
+    {
+      key << ',' << e;
+    }
+    key << ';';
+    tables.push_back(psi::SampleTransferFunction(
+      property, mesh.ScalarRange, samples, mesh.Opacity.empty() ? nullptr : mesh.OpacityRange));
+    bool z = false;
+    prefixes.push_back(psi::OpacityPrefixCounts(tables.back(), property, z));
+    zero = zero || z;
+  }
+  if (volumes.empty())
+  {
+    this->ResetStatistics();
+    return true;
+  }
+  if (!I.Scene)
+  {
+    I.Scene.reset(new PsiIntermixedScene);
+  }
+  PsiIntermixedScene& scene = *I.Scene;
+  key << "samples " << samples << " sort " << static_cast<int>(lead.SortMethod);
+  if (scene.Key != key.str())
+  {
+    std::vector<size_t> firstTet;
+    scene.Mesh = psi::IntermixMeshes(volumes, samples, &firstTet);
+    scene.Neighbors.clear();
+    if (lead.SortMethod == psi::Sorts::MPVONC)
+    {
+      std::vector<std::vector<int32_t>> neighbors(drawn.size());
+      for (size_t k = 0; k < drawn.size(); ++k)
+      {
+        vtkUnstructuredGridBase* input = drawn[k].Mapper->GetInput();
+        psi::FaceNeighborsFromArray(*volumes[k].Mesh,
+          input->GetCellData() ? input->GetCellData()->GetArray("FaceNeighbors") : nullptr,
+          input->GetNumberOfCells(), neighbors[k]);
+      }
+      scene.Neighbors = psi::IntermixNeighbors(neighbors, firstTet);
+    }
+    scene.Key = key.str();
+  }
+  scene.Table = psi::IntermixTables(tables);
+  scene.OpacityPrefix = psi::IntermixOpacityPrefixes(prefixes);
+  scene.ZeroOpacity = zero;
+
+  if (!I.Union)
+  {
+    I.Union = vtkSmartPointer<vtkPsiVolumeMapper>::New();
+    I.UnionVolume = vtkSmartPointer<vtkVolume>::New();
+    I.UnionVolume->SetMapper(I.Union);
+  }
+  vtkPsiVolumeMapper& draw = *I.Union;
+  draw.Impl->Given = &scene;
+  draw.SetSettings(lead);
+  draw.SetLogVerbosity(this->LogVerbosity);
+  I.UnionVolume->SetProperty(drawn[0].Volume->GetProperty());
+  I.UnionVolume->SetPropertyKeys(vol->GetPropertyKeys()); // depth peeling's passes
+  draw.Render(ren, I.UnionVolume);
+  // the read-outs of the combined draw, on the mapper that drew it
+  this->Stats = draw.Stats;
+  this->Frame = draw.Frame;
+  this->LastStillSeconds = draw.LastStillSeconds;
+  this->LastUsedProjector = draw.LastUsedProjector;
+  this->LastUsedEarlyDiscard = draw.LastUsedEarlyDiscard;
+  this->LastUsedEarlyRayTermination = draw.LastUsedEarlyRayTermination;
+  this->LastUsedNearPlaneClipping = draw.LastUsedNearPlaneClipping;
+  this->LastUsedOpaqueClipping = draw.LastUsedOpaqueClipping;
+  this->LastFeatureDefines = draw.LastFeatureDefines;
+  return true;
+}
+
+// The scene's mesh on the GPU, uploaded when it was made again. False: nothing to draw.
+bool vtkPsiVolumeMapper::UpdateGivenMesh(vtkOpenGLRenderWindow* renWin)
+{
+  Internals& I = *this->Impl;
+  if (I.Mesh.GetKey() != I.Given->Key)
+  {
+    std::string error;
+    if (!I.Mesh.UseMesh(renWin, I.Given->Mesh, I.Given->Key, I.Limits().MaxTextureBufferTexels,
+          error))
+    {
+      vtkErrorMacro("Psi Volume: " << error);
+    }
+    this->Stats.NumberOfTetrahedra = static_cast<vtkIdType>(I.Mesh.GetMesh().NumberOfTets());
+  }
+  return I.Mesh.GetMesh().NumberOfTets() > 0;
+}

@@ -1,0 +1,199 @@
+// Several volumes in one renderer, intermixed (PsiIntermixedFrames.h, Core/PsiIntermixedMesh.h):
+//  - two Wavelets that do not share space but overlap on screen (the second placed by its
+//    volume's matrix) give the image of their union drawn as one volume (vtkAppendFilter of the
+//    two, the second moved by the same transform), in both orders of the renderer's volumes, from
+//    three views (each volume in front in one of them): within 1/255;
+//  - with different color maps, opacity functions and unit distances, the image does not depend
+//    on the order of the volumes, and each volume keeps its own transfer function (each
+//    differs from the scene drawn with the other's);
+//  - hiding one gives the other alone; the read-outs say how many tetrahedra the draw had.
+// On one renderer's volumes drawn one after the other the later is pasted over the earlier:
+// the orders differ by up to 70/255 there.
+#include "PsiTestCheck.h"
+#include "PsiTestImageCompare.h"
+#include "PsiTestMeshes.h"
+#include "PsiTestTransferFunction.h"
+#include "PsiTestView.h"
+#include "vtkPsiVolumeMapper.h"
+
+#include "vtkAppendFilter.h"
+#include "vtkCamera.h"
+#include "vtkNew.h"
+#include "vtkTransform.h"
+#include "vtkTransformFilter.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace
+{
+const int W = 160, H = 160;
+const double Offset[3] = { 3, 2, 12 }; // the second Wavelet's place: apart in z, overlapping in x, y
+
+struct Scene
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkVolume> A, B;
+  vtkNew<vtkPsiVolumeMapper> MapperA, MapperB;
+
+  Scene(vtkUnstructuredGrid* grid, vtkVolumeProperty* pa, vtkVolumeProperty* pb, bool bFirst)
+  {
+    this->Window->SetSize(W, H);
+    this->Window->SetMultiSamples(0);
+    this->Renderer->SetBackground(0.1, 0.1, 0.15);
+    this->Window->AddRenderer(this->Renderer);
+    this->MapperA->SetInputData(grid);
+    this->MapperB->SetInputData(grid);
+    psitest::ApplyRequested(this->MapperA.GetPointer());
+    psitest::ApplyRequested(this->MapperB.GetPointer());
+    this->A->SetMapper(this->MapperA);
+    this->B->SetMapper(this->MapperB);
+    this->A->SetProperty(pa);
+    this->B->SetProperty(pb);
+    this->B->SetPosition(Offset[0], Offset[1], Offset[2]);
+    this->Renderer->AddVolume(bFirst ? this->B : this->A);
+    this->Renderer->AddVolume(bFirst ? this->A : this->B);
+  }
+};
+
+// Camera `view` of three around the two Wavelets' middle: from +z (the second in front), from -z
+// (the first in front), and from the side.
+void SetView(vtkRenderer* ren, int view)
+{
+  const double c[3] = { 2, 1, 6 };
+  const double dir[3][3] = { { 0.15, 0.1, 1 }, { -0.1, 0.2, -1 }, { 1, 0.4, 0.3 } };
+  const double d = 48 / std::sqrt(dir[view][0] * dir[view][0] + dir[view][1] * dir[view][1] +
+                         dir[view][2] * dir[view][2]);
+  vtkCamera* cam = ren->GetActiveCamera();
+  cam->SetFocalPoint(c[0], c[1], c[2]);
+  cam->SetPosition(c[0] + d * dir[view][0], c[1] + d * dir[view][1], c[2] + d * dir[view][2]);
+  cam->SetViewUp(0, 1, 0);
+  cam->SetViewAngle(30);
+  ren->ResetCameraClippingRange();
+}
+
+std::vector<double> Draw(vtkRenderWindow* win, vtkRenderer* ren, int view)
+{
+  SetView(ren, view);
+  return psitest::GrabRGB(win);
+}
+
+double Mean(const std::vector<double>& a, const std::vector<double>& b)
+{
+  double sum = 0;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    sum += std::abs(a[i] - b[i]);
+  }
+  return a.empty() ? 0 : sum / a.size();
+}
+
+// Pixels that differ from the background: how much of the image a volume covers.
+int Covered(const std::vector<double>& a)
+{
+  int n = 0;
+  for (size_t i = 0; i + 2 < a.size(); i += 3)
+  {
+    n += std::abs(a[i] - 0.1) + std::abs(a[i + 1] - 0.1) + std::abs(a[i + 2] - 0.15) > 0.02;
+  }
+  return n;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const std::string out = psitest::ParseArguments(argc, argv);
+  vtkNew<vtkUnstructuredGrid> grid;
+  psitest::MakeWaveletTets(grid, 5, 1.0);
+  // the union: the Wavelet and its copy moved where the second volume's matrix places it
+  vtkNew<vtkTransform> move;
+  move->Translate(Offset[0], Offset[1], Offset[2]);
+  vtkNew<vtkTransformFilter> moved;
+  moved->SetTransform(move);
+  moved->SetInputData(grid);
+  vtkNew<vtkAppendFilter> both;
+  both->AddInputData(grid);
+  both->AddInputConnection(moved->GetOutputPort());
+  both->Update();
+  vtkNew<vtkUnstructuredGrid> united;
+  united->ShallowCopy(both->GetOutput());
+
+  psitest::TransferFunction tf(2.0);
+  psitest::BlueWhiteRed(tf.Color, 40, 280);
+  psitest::LinearOpacity(tf.Opacity, 40, 280, 0.0, 0.6);
+
+  // --- disjoint volumes: the image of their union, in both orders and three views
+  vtkNew<vtkPsiVolumeMapper> unionMapper;
+  unionMapper->SetInputData(united);
+  psitest::ApplyRequested(unionMapper.GetPointer());
+  psitest::VolumeView one(W, H, unionMapper, tf.Property);
+  Scene ab(grid, tf.Property, tf.Property, false), ba(grid, tf.Property, tf.Property, true);
+  for (int view = 0; view < 3; ++view)
+  {
+    const std::vector<double> ref = Draw(one.Window, one.Renderer, view);
+    const std::vector<double> imgAB = Draw(ab.Window, ab.Renderer, view);
+    const std::vector<double> imgBA = Draw(ba.Window, ba.Renderer, view);
+    const double ab_ = psitest::LargestDifference(imgAB, ref);
+    const double ba_ = psitest::LargestDifference(imgBA, ref);
+    std::printf("view %d: two volumes against their union: largest %.1f/255 (%.1f/255 in the other "
+                "order), mean %.4f/255\n",
+      view, 255 * ab_, 255 * ba_, 255 * Mean(imgAB, ref));
+    PSI_CHECK(Covered(ref) > W * H / 8 && ab_ <= 1.0 / 255 + 1e-9 && ba_ <= 1.0 / 255 + 1e-9,
+      "view %d: both orders of two disjoint volumes are their union drawn as one within 1/255 "
+      "(largest %.1f/255 and %.1f/255, mean %.3f/255; %d pixels covered)",
+      view, 255 * ab_, 255 * ba_, 255 * Mean(imgAB, ref), Covered(ref));
+    PSI_CHECK(ab.MapperA->GetNumberOfTetrahedra() + ab.MapperB->GetNumberOfTetrahedra() ==
+        united->GetNumberOfCells(),
+      "view %d: one draw of both volumes' %lld tetrahedra (read out %lld + %lld)", view,
+      static_cast<long long>(united->GetNumberOfCells()),
+      static_cast<long long>(ab.MapperA->GetNumberOfTetrahedra()),
+      static_cast<long long>(ab.MapperB->GetNumberOfTetrahedra()));
+    if (!out.empty())
+    {
+      psitest::WritePng(out + "/intermixed_union_" + std::to_string(view) + ".png", ref, W, H);
+      psitest::WritePng(out + "/intermixed_ab_" + std::to_string(view) + ".png", imgAB, W, H);
+    }
+  }
+
+  // --- different transfer functions and unit distances: independent of the order
+  psitest::TransferFunction other(0.5);
+  psitest::BlueToYellow(other.Color, 40, 280);
+  psitest::LinearOpacity(other.Opacity, 40, 280, 0.5, 0.05);
+  Scene mixedAB(grid, tf.Property, other.Property, false);
+  Scene mixedBA(grid, tf.Property, other.Property, true);
+  Scene sameAB(grid, tf.Property, tf.Property, false);
+  for (int view = 0; view < 2; ++view)
+  {
+    const std::vector<double> a = Draw(mixedAB.Window, mixedAB.Renderer, view);
+    const std::vector<double> b = Draw(mixedBA.Window, mixedBA.Renderer, view);
+    const std::vector<double> same = Draw(sameAB.Window, sameAB.Renderer, view);
+    PSI_CHECK(psitest::LargestDifference(a, b) <= 1.0 / 255 + 1e-9 &&
+        psitest::LargestDifference(a, same) > 0.25,
+      "view %d: two volumes with their own color maps and unit distances do not depend on the "
+      "order (largest %.1f/255), and the second keeps its own (largest %.0f/255 from the scene "
+      "with one transfer function)",
+      view, 255 * psitest::LargestDifference(a, b), 255 * psitest::LargestDifference(a, same));
+    if (!out.empty())
+    {
+      psitest::WritePng(out + "/intermixed_mixed_" + std::to_string(view) + ".png", a, W, H);
+    }
+  }
+
+  // --- hiding one gives the other alone
+  vtkNew<vtkPsiVolumeMapper> aloneMapper;
+  aloneMapper->SetInputData(grid);
+  psitest::ApplyRequested(aloneMapper.GetPointer());
+  psitest::VolumeView alone(W, H, aloneMapper, tf.Property);
+  ab.B->VisibilityOff();
+  const std::vector<double> hidden = Draw(ab.Window, ab.Renderer, 0);
+  const std::vector<double> single = Draw(alone.Window, alone.Renderer, 0);
+  PSI_CHECK(psitest::LargestDifference(hidden, single) <= 1.0 / 255 + 1e-9 &&
+      ab.MapperA->GetNumberOfTetrahedra() == grid->GetNumberOfCells(),
+    "one volume hidden: the other alone (largest %.1f/255)",
+    255 * psitest::LargestDifference(hidden, single));
+  return psitest::Report("TestPsiIntermixedVolumes");
+}
