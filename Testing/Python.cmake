@@ -88,6 +88,10 @@ foreach (part IN ITEMS modes changes time)
   psi_add_python_test(interaction.${part} SCRIPT interaction ARGS ${part} TIMEOUT 300)
 endforeach ()
 
+# Several 'Psi Volume' displays in one view, intermixed: either show order the same image, their
+# own arrays and maps, one hidden or deleted, a state file.
+psi_add_python_test(intermixed TIMEOUT 300)
+
 # Scenes nobody wrote by hand: a fixed set of seeds of the randomized scene checker (meshes,
 # arrays, transfer functions, cameras and settings drawn at random, each still frame against the
 # exact reference, the interactive frame against the still one). `--seeds N` runs more.
