@@ -2,6 +2,8 @@
 # Makes the README's pictures in docs/:
 #   psi_volume.png  the Blunt Fin (or, without the shared data, ../shared/data or
 #                   $PSI_DATA_DIR, the embedded default) rendered by scripts/run.sh;
+#   intermixed.png  two volumes in one view, 'Psi Volume' against 'Volume' in both show orders
+#                   (scripts/intermixed_picture.py);
 #   panel.png       the real paraview client with 'Psi Volume' shown and its Properties panel, as
 #                   scripts/panel_screenshot.py sets it up (the screen of an Xvfb server of
 #                   scripts/lib/with-xvfb.sh, kept in a file by its --fbdir, converted by
@@ -24,6 +26,10 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 build=${PSI_BUILD_DIR:-$root/build}
 plugin_dir="$build/lib/paraview-$(installed_paraview_series)/plugins/PsiVolume"
+if [ "${1:-}" != "--panel-only" ]; then
+  bash "$root/scripts/lib/with-xvfb.sh" pvpython --force-offscreen-rendering \
+    "$root/scripts/intermixed_picture.py" "$plugin_dir/PsiVolume.so" "$root/docs/intermixed.png"
+fi
 # paraview passes its --script no arguments: a script of two lines gives panel_screenshot.py its own.
 printf 'import sys\nsys.argv = [%s, %s, %s]\nexec(open(sys.argv[0]).read())\n' \
   "'$root/scripts/panel_screenshot.py'" "'$work/ready'" "'$build'" > "$work/panel.py"
