@@ -19,6 +19,7 @@ DOCS = ROOT / "docs" / "benchmarks"
 SECTIONS = [
     ("Benchmarks/bench_scale.py", "against 'Projected tetra' as the mesh grows"),
     ("Benchmarks/bench_interaction.py", "while the camera moves: the level of detail"),
+    ("Benchmarks/bench_intermixed.py", "several volumes in one view: one of n against two of n/2"),
     ("Benchmarks/bench_moreland_table.py", "Moreland's Table 6.4 side by side"),
     ("scripts/accuracy-report.sh", "accuracy against time, every method and ParaView's mappers"),
     ("Benchmarks/bench_integration.py", "what accuracy costs in time, per method"),
