@@ -1,8 +1,12 @@
 #include "PsiIntermixedMesh.h"
 
+#include "PsiTetConnectivity.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
+#include <tuple>
 
 namespace psi
 {
@@ -158,24 +162,33 @@ std::vector<float> IntermixOpacityPrefixes(const std::vector<std::vector<float>>
   return all;
 }
 
-std::vector<int32_t> IntermixNeighbors(
-  const std::vector<std::vector<int32_t>>& neighbors, const std::vector<size_t>& firstTet)
+std::vector<int32_t> WeldedFaceNeighbors(const TetMesh& mesh)
 {
-  std::vector<int32_t> all(4 * firstTet.back(), -1);
-  for (size_t k = 0; k < neighbors.size() && k + 1 < firstTet.size(); ++k)
+  // each point's id: the first point at exactly its position (the same world point of two
+  // volumes has the same float coordinates after the same shift)
+  const size_t np = mesh.NumberOfPoints();
+  std::vector<uint32_t> byPosition(np);
+  std::iota(byPosition.begin(), byPosition.end(), 0u);
+  const auto key = [&mesh](uint32_t i) {
+    const float* p = &mesh.Points4[4 * size_t(i)];
+    return std::make_tuple(p[0], p[1], p[2]);
+  };
+  std::sort(byPosition.begin(), byPosition.end(),
+    [&key](uint32_t a, uint32_t b) { return key(a) < key(b) || (key(a) == key(b) && a < b); });
+  std::vector<uint32_t> welded(np);
+  for (size_t k = 0; k < np; ++k)
   {
-    const size_t count = 4 * (firstTet[k + 1] - firstTet[k]);
-    if (neighbors[k].size() != count)
-    {
-      continue; // none, or not this mesh's: the volume's cells keep -1
-    }
-    for (size_t i = 0; i < count; ++i)
-    {
-      const int32_t t = neighbors[k][i];
-      all[4 * firstTet[k] + i] = t < 0 ? -1 : static_cast<int32_t>(t + firstTet[k]);
-    }
+    const bool same = k > 0 && key(byPosition[k]) == key(byPosition[k - 1]);
+    welded[byPosition[k]] = same ? welded[byPosition[k - 1]] : byPosition[k];
   }
-  return all;
+  std::vector<uint32_t> tets(mesh.Tets.size());
+  for (size_t i = 0; i < tets.size(); ++i)
+  {
+    tets[i] = welded[mesh.Tets[i]];
+  }
+  std::vector<int32_t> neighbors;
+  ComputeTetNeighbors(TetCells(tets.data()), mesh.NumberOfTets(), np, neighbors);
+  return neighbors;
 }
 
 } // namespace psi

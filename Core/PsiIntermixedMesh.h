@@ -61,11 +61,12 @@ PSIVOLUMECORE_EXPORT TransferFunctionTable IntermixTables(
 PSIVOLUMECORE_EXPORT std::vector<float> IntermixOpacityPrefixes(
   const std::vector<std::vector<float>>& prefixes);
 
-/// Face neighbours (4 per tetrahedron, -1 on the boundary) of each volume's mesh as the
-/// intermixed mesh's: tetrahedron ids moved by `firstTet` (IntermixMeshes). A volume without
-/// neighbours (empty) gets -1 everywhere: the sorts then order its cells by their keys alone.
-PSIVOLUMECORE_EXPORT std::vector<int32_t> IntermixNeighbors(
-  const std::vector<std::vector<int32_t>>& neighbors, const std::vector<size_t>& firstTet);
+/// Face neighbours of the intermixed mesh (4 per tetrahedron, face i opposite vertex i, -1 on the
+/// boundary; psi::ComputeTetNeighbors) with the points welded by position: tetrahedra of two
+/// volumes that share a face (an interface between regions, each volume with its own points there)
+/// are neighbours, so that MPVONC orders them exactly across it, as within one mesh, instead of
+/// by their keys (Williams 1992 §6: between components only the heuristic order).
+PSIVOLUMECORE_EXPORT std::vector<int32_t> WeldedFaceNeighbors(const TetMesh& mesh);
 
 } // namespace psi
 

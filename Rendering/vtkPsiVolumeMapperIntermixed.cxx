@@ -12,7 +12,6 @@
 #include "PsiIntermixedMesh.h"
 #include "PsiTransferFunctionAnalysis.h"
 
-#include "vtkCellData.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderer.h"
@@ -133,20 +132,12 @@ bool vtkPsiVolumeMapper::RenderIntermixed(vtkRenderer* ren, vtkVolume* vol)
   key << "samples " << samples << " sort " << static_cast<int>(lead.SortMethod);
   if (scene.Key != key.str())
   {
-    std::vector<size_t> firstTet;
-    scene.Mesh = psi::IntermixMeshes(volumes, samples, &firstTet);
+    scene.Mesh = psi::IntermixMeshes(volumes, samples);
+    // MPVONC's neighbours: across the faces two volumes share too
     scene.Neighbors.clear();
     if (lead.SortMethod == psi::Sorts::MPVONC)
     {
-      std::vector<std::vector<int32_t>> neighbors(drawn.size());
-      for (size_t k = 0; k < drawn.size(); ++k)
-      {
-        vtkUnstructuredGridBase* input = drawn[k].Mapper->GetInput();
-        psi::FaceNeighborsFromArray(*volumes[k].Mesh,
-          input->GetCellData() ? input->GetCellData()->GetArray("FaceNeighbors") : nullptr,
-          input->GetNumberOfCells(), neighbors[k]);
-      }
-      scene.Neighbors = psi::IntermixNeighbors(neighbors, firstTet);
+      scene.Neighbors = psi::WeldedFaceNeighbors(scene.Mesh);
     }
     scene.Key = key.str();
   }

@@ -74,7 +74,7 @@ psi_add_render_test(CyclicOrder TestPsiCyclicOrder)
 
 # Several volumes in one renderer drawn intermixed: disjoint volumes equal their union drawn as
 # one, in either order and from three views; their own transfer functions; one hidden.
-psi_add_gl_executable(TestPsiIntermixedVolumes VTK::FiltersCore)
+psi_add_gl_executable(TestPsiIntermixedVolumes VTK::FiltersCore VTK::FiltersExtraction)
 psi_add_render_test(IntermixedVolumes TestPsiIntermixedVolumes)
 
 psi_add_gl_executable(TestPsiVisibilityOrder)

@@ -4,8 +4,8 @@
 //  - the concatenated table read at a point's slot scalar gives what the volume's own table
 //    gives at its scalar, for every volume, at the ends of the range and between samples, with
 //    different unit distances and ranges (each volume keeps its own attenuation);
-//  - cells keep their points, moved by the volumes before them; neighbours move the same way,
-//    and a volume without them gets none;
+//  - cells keep their points, moved by the volumes before them; with points welded by position
+//    a face two volumes share makes their tetrahedra neighbours, as within one mesh;
 //  - the opacity prefix counts continue across slots, and a separate opacity array of one volume
 //    gives the others their color scalar's fraction.
 #include "PsiIntermixedMesh.h"
@@ -45,6 +45,25 @@ vtkSmartPointer<vtkUnstructuredGrid> TwoTets(double a, double b)
   const vtkIdType t0[4] = { 0, 1, 2, 3 }, t1[4] = { 1, 2, 3, 4 };
   grid->InsertNextCell(VTK_TETRA, 4, t0);
   grid->InsertNextCell(VTK_TETRA, 4, t1);
+  return grid;
+}
+
+// One tetrahedron a b c d, scalar s = x.
+vtkSmartPointer<vtkUnstructuredGrid> OneTet(
+  const double* a, const double* b, const double* c, const double* d)
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkDoubleArray> s;
+  for (const double* x : { a, b, c, d })
+  {
+    pts->InsertNextPoint(x);
+    s->InsertNextValue(x[0]);
+  }
+  grid->SetPoints(pts);
+  grid->GetPointData()->SetScalars(s);
+  const vtkIdType ids[4] = { 0, 1, 2, 3 };
+  grid->InsertNextCell(VTK_TETRA, 4, ids);
   return grid;
 }
 
@@ -164,13 +183,29 @@ int main()
       c.back() == c0.back() + c1.back() && c[samples] == c0.back() + c1[0],
     "the opacity prefix counts of the second slot continue the first's");
 
-  // --- neighbours move with their cells; a volume without gets none
-  const std::vector<int32_t> n0 = { -1, -1, -1, 1, -1, -1, -1, 0 };
-  const std::vector<int32_t> n = psi::IntermixNeighbors({ n0, n0 }, firstTet);
-  PSI_CHECK(n.size() == 16 && n[3] == 1 && n[7] == 0 && n[11] == 3 && n[15] == 2,
-    "the second volume's neighbours moved by the first volume's cells");
-  const std::vector<int32_t> none = psi::IntermixNeighbors({ n0, {} }, firstTet);
-  PSI_CHECK(none[3] == 1 && none[11] == -1 && none[15] == -1, "a volume without neighbours gets none");
+  // --- neighbours: across a face shared by two volumes (points welded by position), none across
+  // faces that only touch nothing
+  const double corner[5][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 1, 1 } };
+  auto lowerTet = OneTet(corner[0], corner[1], corner[2], corner[3]);
+  auto upperTet = OneTet(corner[1], corner[2], corner[3], corner[4]); // shares face 1, 2, 3
+  const psi::TetMesh ml = psi::GatherTetMesh(lowerTet, lowerTet->GetPointData()->GetScalars(), false);
+  const psi::TetMesh mu = psi::GatherTetMesh(upperTet, upperTet->GetPointData()->GetScalars(), false);
+  std::vector<psi::IntermixedVolume> touching(2);
+  touching[0].Mesh = &ml;
+  touching[1].Mesh = &mu;
+  const std::vector<int32_t> across =
+    psi::WeldedFaceNeighbors(psi::IntermixMeshes(touching, samples));
+  // the first volume's face opposite its point 0 is the second's face opposite its point 3
+  PSI_CHECK(across.size() == 8 && across[0] == 1 && across[7] == 0 && across[1] == -1,
+    "across the face two volumes share, each other's neighbour (%d, %d)", across[0], across[7]);
+  const std::vector<int32_t> apart = psi::WeldedFaceNeighbors(all);
+  bool crosses = false;
+  for (size_t i = 0; i < apart.size(); ++i)
+  {
+    crosses = crosses || (apart[i] >= 0 && (apart[i] >= 2) != (i >= 8));
+  }
+  PSI_CHECK(apart[0] == 1 && apart[8] == 3 && !crosses,
+    "volumes apart: their own neighbours within, none between them");
 
   // --- a separate opacity array in one volume
   psi::TetMesh withOpacity = m0;
