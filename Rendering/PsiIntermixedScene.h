@@ -7,8 +7,10 @@
 #include "PsiTetMesh.h"
 #include "PsiTransferFunctionTable.h"
 
+#include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 struct PsiIntermixedScene
@@ -21,6 +23,9 @@ struct PsiIntermixedScene
   psi::TransferFunctionTable Table;
   std::vector<float> OpacityPrefix;
   bool ZeroOpacity = false;
+  /// Each isovalue (a slot scalar) with its color, its volume's color map at its own value: the
+  /// draw's property knows one volume's map only.
+  std::vector<std::pair<double, std::array<double, 3>>> IsoColors;
 };
 
 #endif

@@ -173,8 +173,21 @@ void SetIsosurfaceShaderParameters(vtkShaderProgram* program, const psi::Isosurf
     // a value outside the range meets no cell: any fraction outside [0, 1] says so
     values[i] = static_cast<float>(
       std::min(std::max(psi::UnitScalar(scalarRange, list.Values[i]), -1.0), 2.0));
-    double rgba[4];
-    psi::EvaluateTransferFunction(property, list.Values[i], rgba);
+    double rgba[4] = { 1, 1, 1, 1 };
+    if (style.ValueColors)
+    {
+      for (const auto& vc : *style.ValueColors)
+      {
+        if (vc.first == list.Values[i])
+        {
+          std::copy(vc.second.begin(), vc.second.end(), rgba);
+        }
+      }
+    }
+    else
+    {
+      psi::EvaluateTransferFunction(property, list.Values[i], rgba);
+    }
     for (int k = 0; k < 3; ++k)
     {
       colors[3 * i + k] = static_cast<float>(

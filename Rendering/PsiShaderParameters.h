@@ -7,6 +7,10 @@
 
 #include "PsiIsosurfaceList.h"
 
+#include <array>
+#include <utility>
+#include <vector>
+
 class vtkRenderer;
 class vtkShaderProgram;
 class vtkVolume;
@@ -54,6 +58,9 @@ struct PsiIsosurfaceStyle
   bool Lighting = true;
   bool Smooth = true;         ///< interpolated point gradients (needs normalMatrix)
   int MaxLights = 8;
+  /// The color map's color of each isovalue, given (several volumes intermixed: each volume's
+  /// own map, PsiIntermixedScene::IsoColors); nullptr: the property's color map at the value.
+  const std::vector<std::pair<double, std::array<double, 3>>>* ValueColors = nullptr;
 };
 
 /// isoValues (fractions of `scalarRange`, as the mesh's scalars: psi::TetMesh::Points4),

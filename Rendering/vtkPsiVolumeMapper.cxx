@@ -418,6 +418,7 @@ void vtkPsiVolumeMapper::SetShaderParameters(vtkShaderProgram* program, vtkRende
     style.Lighting = s.IsosurfaceShading != psi::IsosurfaceShadings::Unlit;
     style.Smooth = f.IsoSmooth;
     style.MaxLights = f.MaxLights;
+    style.ValueColors = I.Given ? &I.Given->IsoColors : nullptr;
     SetIsosurfaceShaderParameters(
       program, this->Isosurfaces, I.Mesh.GetMesh().ScalarRange, style, property, ren, cam);
     if (f.IsoTriangles)

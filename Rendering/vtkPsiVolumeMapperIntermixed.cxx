@@ -25,18 +25,36 @@
 
 namespace
 {
-// Why the renderer's members are drawn one by one instead ("" when they are intermixed).
-std::string NotIntermixed(const std::vector<PsiIntermixedMember>& members)
+// The isovalues of each volume as slot scalars of the intermixed mesh (those outside the volume's
+// own range dropped: they would fall into another volume's slot), with each one's opacity, and
+// its color through its volume's color map.
+void IntermixIsosurfaces(const std::vector<PsiIntermixedMember>& drawn,
+  const std::vector<psi::IntermixedVolume>& volumes, int samples, psi::Settings& s,
+  PsiIntermixedScene& scene)
 {
-  for (const PsiIntermixedMember& m : members)
+  s.IsosurfaceValues.clear();
+  s.IsosurfaceOpacities.clear();
+  scene.IsoColors.clear();
+  const int n = static_cast<int>(drawn.size());
+  for (int k = 0; k < n; ++k)
   {
-    if (m.Mapper->GetSettings().Isosurfaces().Count() > 0)
+    const psi::Settings& own = drawn[k].Mapper->GetSettings();
+    for (size_t i = 0; i < own.IsosurfaceValues.size(); ++i)
     {
-      return "Psi Volume: volumes with isosurfaces are not yet intermixed with other volumes of "
-             "the view; each volume is drawn on its own, the later over the earlier.";
+      const double u = psi::UnitScalar(volumes[k].Mesh->ScalarRange, own.IsosurfaceValues[i]);
+      if (u >= 0 && u <= 1)
+      {
+        s.IsosurfaceValues.push_back(psi::SlotScalar(k, n, samples, u));
+        s.IsosurfaceOpacities.push_back(i < own.IsosurfaceOpacities.size()
+            ? own.IsosurfaceOpacities[i]
+            : own.IsosurfaceOpacity);
+        double rgba[4];
+        psi::EvaluateTransferFunction(
+          drawn[k].Volume->GetProperty(), own.IsosurfaceValues[i], rgba);
+        scene.IsoColors.push_back({ s.IsosurfaceValues.back(), { { rgba[0], rgba[1], rgba[2] } } });
+      }
     }
   }
-  return "";
 }
 
 // The volume's matrix, row-major.
@@ -58,13 +76,7 @@ bool vtkPsiVolumeMapper::RenderIntermixed(vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& I = *this->Impl;
   const std::vector<PsiIntermixedMember> members = PsiIntermixedFrames::Members(ren);
-  const std::string note = members.size() > 1 ? NotIntermixed(members) : "";
-  if (!note.empty() && note != I.LastIntermixNote)
-  {
-    vtkWarningMacro(<< note);
-  }
-  I.LastIntermixNote = note;
-  if (members.size() < 2 || !note.empty())
+  if (members.size() < 2)
   {
     return false;
   }
@@ -153,7 +165,9 @@ bool vtkPsiVolumeMapper::RenderIntermixed(vtkRenderer* ren, vtkVolume* vol)
   }
   vtkPsiVolumeMapper& draw = *I.Union;
   draw.Impl->Given = &scene;
-  draw.SetSettings(lead);
+  psi::Settings settings = lead; // the first volume's, with every volume's isosurfaces
+  IntermixIsosurfaces(drawn, volumes, samples, settings, scene);
+  draw.SetSettings(settings);
   draw.SetLogVerbosity(this->LogVerbosity);
   I.UnionVolume->SetProperty(drawn[0].Volume->GetProperty());
   I.UnionVolume->SetPropertyKeys(vol->GetPropertyKeys()); // depth peeling's passes
@@ -168,6 +182,7 @@ bool vtkPsiVolumeMapper::RenderIntermixed(vtkRenderer* ren, vtkVolume* vol)
   this->LastUsedNearPlaneClipping = draw.LastUsedNearPlaneClipping;
   this->LastUsedOpaqueClipping = draw.LastUsedOpaqueClipping;
   this->LastFeatureDefines = draw.LastFeatureDefines;
+  this->LastUsedIsosurfaceMethod = draw.LastUsedIsosurfaceMethod;
   return true;
 }
 

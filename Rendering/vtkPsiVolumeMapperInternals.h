@@ -58,7 +58,6 @@ struct vtkPsiVolumeMapper::Internals
   vtkSmartPointer<vtkVolume> UnionVolume;
   std::unique_ptr<PsiIntermixedScene> Scene;
   const PsiIntermixedScene* Given = nullptr;
-  std::string LastIntermixNote; // why volumes are not intermixed, said once
 
   PsiDriverLimits TestingLimits; // lowered limits for tests (SetDriverLimitsForTesting)
   /// The current context's buffer limits, lowered for tests.

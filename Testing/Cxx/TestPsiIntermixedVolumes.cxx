@@ -6,6 +6,8 @@
 //  - with different color maps, opacity functions and unit distances, the image does not depend
 //    on the order of the volumes, and each volume keeps its own transfer function (each
 //    differs from the scene drawn with the other's);
+//  - an isosurface in each volume (a value outside one's range dropped) gives the union's image
+//    with it; a mesh split into two volumes along a slanted plane draws as the whole mesh;
 //  - hiding one gives the other alone; the read-outs say how many tetrahedra the draw had.
 // On one renderer's volumes drawn one after the other the later is pasted over the earlier:
 // the orders differ by up to 70/255 there.
@@ -246,6 +248,36 @@ int main(int argc, char* argv[])
         psitest::LargestDifference(a, b) <= 1.0 / 255 + 1e-9,
       "view %d: a mesh split into two volumes at an interface draws as the whole mesh (largest "
       "%.1f/255)", view, 255 * psitest::LargestDifference(a, b));
+  }
+
+  // --- isosurfaces: each volume's, in its own slot; the union's image with the same isovalue
+  for (vtkPsiVolumeMapper* m : { unionMapper.GetPointer(), ab.MapperA.GetPointer(),
+         ab.MapperB.GetPointer() })
+  {
+    m->SetIsosurfaceValues({ 150.0 });
+    m->SetIsosurfaceOpacity(0.6);
+  }
+  ab.MapperB->SetIsosurfaceValues({ 150.0, 1e6 }); // a value outside the volume's range: dropped
+  for (int view = 0; view < 2; ++view)
+  {
+    const std::vector<double> ref = Draw(one.Window, one.Renderer, view);
+    const std::vector<double> img = Draw(ab.Window, ab.Renderer, view);
+    std::printf("view %d: two volumes with isosurfaces against their union: largest %.1f/255\n",
+      view, 255 * psitest::LargestDifference(img, ref));
+    if (!out.empty())
+    {
+      psitest::WritePng(out + "/intermixed_iso_union_" + std::to_string(view) + ".png", ref, W, H);
+      psitest::WritePng(out + "/intermixed_iso_ab_" + std::to_string(view) + ".png", img, W, H);
+    }
+    PSI_CHECK(psitest::LargestDifference(img, ref) <= 2.0 / 255 + 1e-9 &&
+        ab.MapperA->GetLastUsedIsosurfaceMethod() >= 0,
+      "view %d: two volumes with an isosurface each are their union with it (largest %.1f/255)",
+      view, 255 * psitest::LargestDifference(img, ref));
+  }
+  for (vtkPsiVolumeMapper* m : { unionMapper.GetPointer(), ab.MapperA.GetPointer(),
+         ab.MapperB.GetPointer() })
+  {
+    m->SetIsosurfaceValues({});
   }
 
   // --- hiding one gives the other alone
