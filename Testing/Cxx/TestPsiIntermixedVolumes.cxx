@@ -8,6 +8,7 @@
 //    differs from the scene drawn with the other's);
 //  - an isosurface in each volume (a value outside one's range dropped) gives the union's image
 //    with it; a mesh split into two volumes along a slanted plane draws as the whole mesh;
+//  - a translucent plane through both, within dual depth peeling: the union's image;
 //  - hiding one gives the other alone; the read-outs say how many tetrahedra the draw had.
 // On one renderer's volumes drawn one after the other the later is pasted over the earlier:
 // the orders differ by up to 70/255 there.
@@ -22,6 +23,9 @@
 #include "vtkCamera.h"
 #include "vtkExtractCells.h"
 #include "vtkIdList.h"
+#include "vtkPlaneSource.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkNew.h"
 #include "vtkTransform.h"
 #include "vtkTransformFilter.h"
@@ -123,6 +127,29 @@ vtkSmartPointer<vtkUnstructuredGrid> Side(vtkUnstructuredGrid* grid, bool below)
   extract->SetCellList(ids);
   extract->Update();
   return extract->GetOutput();
+}
+
+// A translucent slanted plane through both Wavelets, and depth peeling with volumes on `ren`
+// (VTK's dual depth peeling calls each volume once per stage of a frame).
+void AddTranslucentPlane(vtkRenderWindow* win, vtkRenderer* ren)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-8, -6, -4);
+  plane->SetPoint1(14, -6, 20);
+  plane->SetPoint2(-8, 10, -4);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(plane->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->LightingOff();
+  actor->GetProperty()->SetColor(0.2, 0.8, 0.3);
+  actor->GetProperty()->SetOpacity(0.4);
+  ren->AddActor(actor);
+  win->SetAlphaBitPlanes(1);
+  ren->SetUseDepthPeeling(1);
+  ren->SetUseDepthPeelingForVolumes(true);
+  ren->SetMaximumNumberOfPeels(16);
+  ren->SetOcclusionRatio(0.0);
 }
 
 // Pixels that differ from the background: how much of the image a volume covers.
@@ -279,6 +306,28 @@ int main(int argc, char* argv[])
   {
     m->SetIsosurfaceValues({});
   }
+
+  // --- translucent geometry through both, within depth peeling: still the union's image
+  AddTranslucentPlane(one.Window, one.Renderer);
+  AddTranslucentPlane(ab.Window, ab.Renderer);
+  for (int view = 0; view < 2; ++view)
+  {
+    const std::vector<double> ref = Draw(one.Window, one.Renderer, view);
+    const std::vector<double> img = Draw(ab.Window, ab.Renderer, view);
+    std::printf("view %d: with a translucent plane through both (depth peeling) against their "
+                "union: largest %.1f/255\n", view, 255 * psitest::LargestDifference(img, ref));
+    PSI_CHECK(psitest::LargestDifference(img, ref) <= 1.0 / 255 + 1e-9,
+      "view %d: a translucent plane through two volumes within depth peeling: the union's image "
+      "(largest %.1f/255)", view, 255 * psitest::LargestDifference(img, ref));
+    if (!out.empty())
+    {
+      psitest::WritePng(out + "/intermixed_peel_" + std::to_string(view) + ".png", img, W, H);
+    }
+  }
+  ab.Renderer->RemoveAllViewProps();
+  ab.Renderer->AddVolume(ab.A);
+  ab.Renderer->AddVolume(ab.B);
+  ab.Renderer->SetUseDepthPeeling(0);
 
   // --- hiding one gives the other alone
   vtkNew<vtkPsiVolumeMapper> aloneMapper;
