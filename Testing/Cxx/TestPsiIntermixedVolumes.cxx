@@ -8,7 +8,8 @@
 //    differs from the scene drawn with the other's);
 //  - an isosurface in each volume (a value outside one's range dropped) gives the union's image
 //    with it; a mesh split into two volumes along a slanted plane draws as the whole mesh;
-//  - a translucent plane through both, within dual depth peeling: the union's image;
+//  - the camera inside one of them, an opaque plane through both, a translucent plane through
+//    both within dual depth peeling: the union's image;
 //  - hiding one gives the other alone; the read-outs say how many tetrahedra the draw had.
 // On one renderer's volumes drawn one after the other the later is pasted over the earlier:
 // the orders differ by up to 70/255 there.
@@ -306,6 +307,37 @@ int main(int argc, char* argv[])
   {
     m->SetIsosurfaceValues({});
   }
+
+  // --- the camera inside one of them, and an opaque plane through both: the union's image
+  for (vtkRenderer* ren : { one.Renderer.GetPointer(), ab.Renderer.GetPointer() })
+  {
+    psitest::SetCameraInside(ren->GetActiveCamera());
+  }
+  {
+    const std::vector<double> ref = psitest::GrabRGB(one.Window);
+    const std::vector<double> img = psitest::GrabRGB(ab.Window);
+    std::printf("camera inside the first volume, against the union: largest %.1f/255 (near-plane "
+                "path %d)\n", 255 * psitest::LargestDifference(img, ref),
+      static_cast<int>(ab.MapperA->GetLastUsedNearPlaneClipping()));
+    PSI_CHECK(psitest::LargestDifference(img, ref) <= 1.0 / 255 + 1e-9 &&
+        ab.MapperA->GetLastUsedNearPlaneClipping() && Covered(ref) > W * H / 4,
+      "the camera inside one of two volumes: the union's image (largest %.1f/255)",
+      255 * psitest::LargestDifference(img, ref));
+  }
+  vtkSmartPointer<vtkActor> opaqueOne = psitest::MakeOpaquePlane(6),
+                            opaqueAB = psitest::MakeOpaquePlane(6);
+  one.Renderer->AddActor(opaqueOne);
+  ab.Renderer->AddActor(opaqueAB);
+  for (int view = 0; view < 2; ++view)
+  {
+    const std::vector<double> ref = Draw(one.Window, one.Renderer, view);
+    const std::vector<double> img = Draw(ab.Window, ab.Renderer, view);
+    PSI_CHECK(psitest::LargestDifference(img, ref) <= 1.0 / 255 + 1e-9,
+      "view %d: an opaque plane through two volumes: the union's image (largest %.1f/255)", view,
+      255 * psitest::LargestDifference(img, ref));
+  }
+  one.Renderer->RemoveActor(opaqueOne);
+  ab.Renderer->RemoveActor(opaqueAB);
 
   // --- translucent geometry through both, within depth peeling: still the union's image
   AddTranslucentPlane(one.Window, one.Renderer);
