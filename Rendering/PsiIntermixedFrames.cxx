@@ -81,6 +81,11 @@ std::vector<PsiIntermixedMember> PsiIntermixedFrames::Members(vtkRenderer* ren)
   return members;
 }
 
+const vtkPsiVolumeMapper* PsiIntermixedFrames::Claimant(vtkRenderer* ren)
+{
+  return FramesOf(ren).Claimant;
+}
+
 bool PsiIntermixedFrames::Claim(vtkRenderer* ren, const vtkPsiVolumeMapper* mapper)
 {
   Frames& frames = FramesOf(ren);

@@ -27,6 +27,8 @@ std::vector<PsiIntermixedMember> Members(vtkRenderer* ren);
 /// mapper called since `ren` started its frame (vtkCommand::StartEvent), and for each of its
 /// later calls in the frame (depth-peeling stages); false for the other mappers' calls.
 bool Claim(vtkRenderer* ren, const vtkPsiVolumeMapper* mapper);
+/// The mapper that claimed `ren`'s current frame (nullptr before any).
+const vtkPsiVolumeMapper* Claimant(vtkRenderer* ren);
 } // namespace PsiIntermixedFrames
 
 #endif

@@ -228,6 +228,7 @@ private:
   // several volumes intermixed (vtkPsiVolumeMapperIntermixed.cxx)
   bool RenderIntermixed(vtkRenderer* ren, vtkVolume* vol);
   bool UpdateGivenMesh(vtkOpenGLRenderWindow* renWin);
+  void CountOwnCells();
   bool UpdateMesh(
     vtkOpenGLRenderWindow* renWin, vtkVolume* vol, vtkUnstructuredGridBase* input);
   bool UpdateVisibilityOrder(

@@ -82,7 +82,10 @@ bool vtkPsiVolumeMapper::RenderIntermixed(vtkRenderer* ren, vtkVolume* vol)
   }
   if (!PsiIntermixedFrames::Claim(ren, this))
   {
-    this->ResetStatistics(); // drawn by the frame's first call, with the others
+    // drawn by the frame's first call, with the others: its read-outs, with this volume's own
+    // tetrahedra
+    this->Stats = PsiIntermixedFrames::Claimant(ren)->Stats;
+    this->CountOwnCells();
     return true;
   }
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
@@ -183,7 +186,17 @@ bool vtkPsiVolumeMapper::RenderIntermixed(vtkRenderer* ren, vtkVolume* vol)
   this->LastUsedOpaqueClipping = draw.LastUsedOpaqueClipping;
   this->LastFeatureDefines = draw.LastFeatureDefines;
   this->LastUsedIsosurfaceMethod = draw.LastUsedIsosurfaceMethod;
+  this->CountOwnCells();
   return true;
+}
+
+// The read-outs of this volume's own cells (its mesh as its last gather left it), beside the
+// combined draw's times.
+void vtkPsiVolumeMapper::CountOwnCells()
+{
+  const psi::TetMesh& mesh = this->Impl->Mesh.GetMesh();
+  this->Stats.NumberOfTetrahedra = static_cast<vtkIdType>(mesh.NumberOfTets());
+  this->Stats.NumberOfSkippedCells = mesh.NonTetCells + mesh.NonFiniteTets;
 }
 
 // The scene's mesh on the GPU, uploaded when it was made again. False: nothing to draw.

@@ -10,7 +10,7 @@
 //    with it; a mesh split into two volumes along a slanted plane draws as the whole mesh;
 //  - the camera inside one of them, an opaque plane through both, a translucent plane through
 //    both within dual depth peeling: the union's image;
-//  - hiding one gives the other alone; the read-outs say how many tetrahedra the draw had.
+//  - hiding one gives the other alone; each volume reads out its own tetrahedra.
 // On one renderer's volumes drawn one after the other the later is pasted over the earlier:
 // the orders differ by up to 70/255 there.
 #include "PsiTestCheck.h"
@@ -209,10 +209,10 @@ int main(int argc, char* argv[])
       view, 255 * ab_, 255 * ba_, 255 * Mean(imgAB, ref), Covered(ref));
     PSI_CHECK(ab.MapperA->GetNumberOfTetrahedra() + ab.MapperB->GetNumberOfTetrahedra() ==
         united->GetNumberOfCells(),
-      "view %d: one draw of both volumes' %lld tetrahedra (read out %lld + %lld)", view,
-      static_cast<long long>(united->GetNumberOfCells()),
+      "view %d: each volume reads out its own tetrahedra (%lld + %lld of %lld)", view,
       static_cast<long long>(ab.MapperA->GetNumberOfTetrahedra()),
-      static_cast<long long>(ab.MapperB->GetNumberOfTetrahedra()));
+      static_cast<long long>(ab.MapperB->GetNumberOfTetrahedra()),
+      static_cast<long long>(united->GetNumberOfCells()));
     if (!out.empty())
     {
       psitest::WritePng(out + "/intermixed_union_" + std::to_string(view) + ".png", ref, W, H);
