@@ -285,7 +285,8 @@ int main(int argc, char* argv[])
     m->SetIsosurfaceValues({ 150.0 });
     m->SetIsosurfaceOpacity(0.6);
   }
-  ab.MapperB->SetIsosurfaceValues({ 150.0, 1e6 }); // a value outside the volume's range: dropped
+  // a value below the second volume's range, dropped (kept, it would fall into the first's slot)
+  ab.MapperB->SetIsosurfaceValues({ 150.0, -83.0 });
   for (int view = 0; view < 2; ++view)
   {
     const std::vector<double> ref = Draw(one.Window, one.Renderer, view);
