@@ -28,7 +28,7 @@ pqPsiAccuracyReportActions::pqPsiAccuracyReportActions(QObject* parentObject)
 const char* pqPsiAccuracyReportActions::pythonCode()
 {
   // __import__ binds no name in the user's namespace, where ParaView runs the code; run_report
-  // leaves that namespace as it found it (psivolume.restore.main_namespace)
+  // binds none there either (its tables run no script)
   return "__import__('psivolume.gui').gui.run_report()\n";
 }
 

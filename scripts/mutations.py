@@ -543,12 +543,6 @@ MUTATIONS = [
     # --- The accuracy report from the GUI (Python/psivolume/gui.py, Plugin/PsiPluginPython.cxx).
     Mutation("plugin_leaves_sys_path_alone", "Plugin/PsiPluginPython.cxx",
              "  if (!folder.empty())\n", "  if (folder.empty())\n", ["PsiPython.gui_report"]),
-    Mutation("report_keeps_numpy_names", "Python/psivolume/restore.py",
-             "                if names.get(name, _ABSENT) is not value:",
-             "                if False:", ["PsiPython.gui_report"]),
-    Mutation("report_keeps_names_it_bound", "Python/psivolume/restore.py",
-             "            for name in [n for n in names if n not in saved]:",
-             "            for name in []:", ["PsiPython.gui_report"]),
     Mutation("report_draws_beside_other_sources", "Python/psivolume/gui.py",
              "        r.Visibility = 0\n", "        pass\n", ["PsiPython.gui_report"]),
     Mutation("report_table_loses_its_first_row", "Python/psivolume/gui.py",

@@ -7,15 +7,8 @@ merging filter the active source.
         ...   # anything of rep, its color and opacity maps, the view, its camera
 
 Every setting of those proxies (each property but the information-only ones) is put back where
-it differs, the camera with the view's properties (ParaView keeps them in step with it).
-
-    with restore.main_namespace():
-        ...   # anything that makes ParaView run Python in __main__
-
-The user's Python namespace (the Python shell's and pvpython's __main__) as it was, also when the
-work fails."""
+it differs, the camera with the view's properties (ParaView keeps them in step with it)."""
 import contextlib
-import sys
 
 from paraview import simple
 
@@ -67,28 +60,3 @@ def scene(view, rep):
         if simple.GetActiveSource() != active:
             simple.SetActiveSource(active)
         simple.Render(view)
-
-
-_ABSENT = object()
-
-
-@contextlib.contextmanager
-def main_namespace():
-    """__main__'s names as they were when the block ends, however it ends: each name bound
-    meanwhile removed, each one rebound or removed put back. ParaView runs a ProgrammableSource's
-    script in __main__ after `from numpy import *` and numpy_interface's algorithms' `*`: 608
-    names, among them `sum`, `max`, `min`, `abs`, `all` and `vtk`, would replace the user's from
-    then on (the report's tables were ProgrammableSources; they are now script-free sources,
-    and this guard stays for whatever a step of the report may import)."""
-    main = sys.modules.get("__main__")
-    saved = dict(vars(main)) if main is not None else {}
-    try:
-        yield
-    finally:
-        if main is not None:
-            names = vars(main)
-            for name in [n for n in names if n not in saved]:
-                del names[name]
-            for name, value in saved.items():
-                if names.get(name, _ABSENT) is not value:
-                    names[name] = value
