@@ -34,6 +34,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -165,39 +166,51 @@ int Covered(const std::vector<double>& a)
 }
 } // namespace
 
-int main(int argc, char* argv[])
+// The scene every check shares: the Wavelet, the union of it and its moved copy drawn as one
+// volume (`One`), and the two volumes in both orders of the renderer (`AB`, `BA`).
+struct Fixture
 {
-  const std::string out = psitest::ParseArguments(argc, argv);
-  vtkNew<vtkUnstructuredGrid> grid;
-  psitest::MakeWaveletTets(grid, 5, 1.0);
-  // the union: the Wavelet and its copy moved where the second volume's matrix places it
-  vtkNew<vtkTransform> move;
-  move->Translate(Offset[0], Offset[1], Offset[2]);
-  vtkNew<vtkTransformFilter> moved;
-  moved->SetTransform(move);
-  moved->SetInputData(grid);
-  vtkNew<vtkAppendFilter> both;
-  both->AddInputData(grid);
-  both->AddInputConnection(moved->GetOutputPort());
-  both->Update();
-  vtkNew<vtkUnstructuredGrid> united;
-  united->ShallowCopy(both->GetOutput());
+  std::string Out;
+  vtkNew<vtkUnstructuredGrid> Grid, United;
+  psitest::TransferFunction TF{ 2.0 };
+  vtkNew<vtkPsiVolumeMapper> UnionMapper;
+  std::unique_ptr<psitest::VolumeView> One;
+  std::unique_ptr<Scene> AB, BA;
 
-  psitest::TransferFunction tf(2.0);
-  psitest::BlueWhiteRed(tf.Color, 40, 280);
-  psitest::LinearOpacity(tf.Opacity, 40, 280, 0.0, 0.6);
+  explicit Fixture(const std::string& out)
+    : Out(out)
+  {
+    psitest::MakeWaveletTets(this->Grid, 5, 1.0);
+    // the union: the Wavelet and its copy moved where the second volume's matrix places it
+    vtkNew<vtkTransform> move;
+    move->Translate(Offset[0], Offset[1], Offset[2]);
+    vtkNew<vtkTransformFilter> moved;
+    moved->SetTransform(move);
+    moved->SetInputData(this->Grid);
+    vtkNew<vtkAppendFilter> both;
+    both->AddInputData(this->Grid);
+    both->AddInputConnection(moved->GetOutputPort());
+    both->Update();
+    this->United->ShallowCopy(both->GetOutput());
+    psitest::BlueWhiteRed(this->TF.Color, 40, 280);
+    psitest::LinearOpacity(this->TF.Opacity, 40, 280, 0.0, 0.6);
+    this->UnionMapper->SetInputData(this->United);
+    psitest::ApplyRequested(this->UnionMapper.GetPointer());
+    this->One.reset(new psitest::VolumeView(W, H, this->UnionMapper, this->TF.Property));
+    this->AB.reset(new Scene(this->Grid, this->TF.Property, this->TF.Property, false));
+    this->BA.reset(new Scene(this->Grid, this->TF.Property, this->TF.Property, true));
+  }
+};
 
+// Two disjoint volumes: the image of their union, in both orders and three views.
+void TestDisjointUnion(Fixture& f)
+{
   // --- disjoint volumes: the image of their union, in both orders and three views
-  vtkNew<vtkPsiVolumeMapper> unionMapper;
-  unionMapper->SetInputData(united);
-  psitest::ApplyRequested(unionMapper.GetPointer());
-  psitest::VolumeView one(W, H, unionMapper, tf.Property);
-  Scene ab(grid, tf.Property, tf.Property, false), ba(grid, tf.Property, tf.Property, true);
   for (int view = 0; view < 3; ++view)
   {
-    const std::vector<double> ref = Draw(one.Window, one.Renderer, view);
-    const std::vector<double> imgAB = Draw(ab.Window, ab.Renderer, view);
-    const std::vector<double> imgBA = Draw(ba.Window, ba.Renderer, view);
+    const std::vector<double> ref = Draw(f.One->Window, f.One->Renderer, view);
+    const std::vector<double> imgAB = Draw(f.AB->Window, f.AB->Renderer, view);
+    const std::vector<double> imgBA = Draw(f.BA->Window, f.BA->Renderer, view);
     const double ab_ = psitest::LargestDifference(imgAB, ref);
     const double ba_ = psitest::LargestDifference(imgBA, ref);
     std::printf("view %d: two volumes against their union: largest %.1f/255 (%.1f/255 in the other "
@@ -207,26 +220,30 @@ int main(int argc, char* argv[])
       "view %d: both orders of two disjoint volumes are their union drawn as one within 1/255 "
       "(largest %.1f/255 and %.1f/255, mean %.3f/255; %d pixels covered)",
       view, 255 * ab_, 255 * ba_, 255 * Mean(imgAB, ref), Covered(ref));
-    PSI_CHECK(ab.MapperA->GetNumberOfTetrahedra() + ab.MapperB->GetNumberOfTetrahedra() ==
-        united->GetNumberOfCells(),
+    PSI_CHECK(f.AB->MapperA->GetNumberOfTetrahedra() + f.AB->MapperB->GetNumberOfTetrahedra() ==
+        f.United->GetNumberOfCells(),
       "view %d: each volume reads out its own tetrahedra (%lld + %lld of %lld)", view,
-      static_cast<long long>(ab.MapperA->GetNumberOfTetrahedra()),
-      static_cast<long long>(ab.MapperB->GetNumberOfTetrahedra()),
-      static_cast<long long>(united->GetNumberOfCells()));
-    if (!out.empty())
+      static_cast<long long>(f.AB->MapperA->GetNumberOfTetrahedra()),
+      static_cast<long long>(f.AB->MapperB->GetNumberOfTetrahedra()),
+      static_cast<long long>(f.United->GetNumberOfCells()));
+    if (!f.Out.empty())
     {
-      psitest::WritePng(out + "/intermixed_union_" + std::to_string(view) + ".png", ref, W, H);
-      psitest::WritePng(out + "/intermixed_ab_" + std::to_string(view) + ".png", imgAB, W, H);
+      psitest::WritePng(f.Out + "/intermixed_union_" + std::to_string(view) + ".png", ref, W, H);
+      psitest::WritePng(f.Out + "/intermixed_ab_" + std::to_string(view) + ".png", imgAB, W, H);
     }
   }
+}
 
+// Their own color maps and unit distances: independent of the order, and their own.
+void TestOwnTransferFunctions(Fixture& f)
+{
   // --- different transfer functions and unit distances: independent of the order
   psitest::TransferFunction other(0.5);
   psitest::BlueToYellow(other.Color, 40, 280);
   psitest::LinearOpacity(other.Opacity, 40, 280, 0.5, 0.05);
-  Scene mixedAB(grid, tf.Property, other.Property, false);
-  Scene mixedBA(grid, tf.Property, other.Property, true);
-  Scene sameAB(grid, tf.Property, tf.Property, false);
+  Scene mixedAB(f.Grid, f.TF.Property, other.Property, false);
+  Scene mixedBA(f.Grid, f.TF.Property, other.Property, true);
+  Scene sameAB(f.Grid, f.TF.Property, f.TF.Property, false);
   for (int view = 0; view < 2; ++view)
   {
     const std::vector<double> a = Draw(mixedAB.Window, mixedAB.Renderer, view);
@@ -238,25 +255,25 @@ int main(int argc, char* argv[])
       "order (largest %.1f/255), and the second keeps its own (largest %.0f/255 from the scene "
       "with one transfer function)",
       view, 255 * psitest::LargestDifference(a, b), 255 * psitest::LargestDifference(a, same));
-    if (!out.empty())
+    if (!f.Out.empty())
     {
-      psitest::WritePng(out + "/intermixed_mixed_" + std::to_string(view) + ".png", a, W, H);
+      psitest::WritePng(f.Out + "/intermixed_mixed_" + std::to_string(view) + ".png", a, W, H);
     }
   }
 
   // --- an interface: one mesh split into two volumes, each with its own points on the shared
   // faces, draws as the whole mesh (MPVONC orders the tetrahedra across the interface as within
   // one mesh: the volumes' points welded by position)
-  auto lower = Side(grid, true), upper = Side(grid, false);
+  auto lower = Side(f.Grid, true), upper = Side(f.Grid, false);
   vtkNew<vtkPsiVolumeMapper> wholeMapper, lowerMapper, upperMapper;
-  wholeMapper->SetInputData(grid);
+  wholeMapper->SetInputData(f.Grid);
   lowerMapper->SetInputData(lower);
   upperMapper->SetInputData(upper);
-  psitest::VolumeView whole(W, H, wholeMapper, tf.Property);
-  psitest::VolumeView split(W, H, lowerMapper, tf.Property);
+  psitest::VolumeView whole(W, H, wholeMapper, f.TF.Property);
+  psitest::VolumeView split(W, H, lowerMapper, f.TF.Property);
   vtkNew<vtkVolume> upperVolume;
   upperVolume->SetMapper(upperMapper);
-  upperVolume->SetProperty(tf.Property);
+  upperVolume->SetProperty(f.TF.Property);
   split.Renderer->AddVolume(upperVolume);
   for (vtkPsiVolumeMapper* m : { wholeMapper.GetPointer(), lowerMapper.GetPointer(),
          upperMapper.GetPointer() })
@@ -265,7 +282,51 @@ int main(int argc, char* argv[])
   }
   for (int view = 0; view < 3; ++view)
   {
-    whole.Renderer->GetActiveCamera()->DeepCopy(ab.Renderer->GetActiveCamera());
+    whole.Renderer->GetActiveCamera()->DeepCopy(f.AB->Renderer->GetActiveCamera());
+    SetView(whole.Renderer, view);
+    const std::vector<double> a = psitest::GrabRGB(whole.Window);
+    SetView(split.Renderer, view);
+    const std::vector<double> b = psitest::GrabRGB(split.Window);
+    std::printf("view %d: a mesh split into two volumes at an interface against the whole mesh: "
+                "largest %.1f/255\n", view, 255 * psitest::LargestDifference(a, b));
+    PSI_CHECK(lower->GetNumberOfCells() > 0 && upper->GetNumberOfCells() > 0 &&
+        psitest::LargestDifference(a, b) <= 1.0 / 255 + 1e-9,
+      "view %d: a mesh split into two volumes at an interface draws as the whole mesh (largest "
+      "%.1f/255)", view, 255 * psitest::LargestDifference(a, b));
+  }
+}
+
+// An isosurface in each volume, in its own slot: the union's image with it.
+void TestIsosurfaces(Fixture& f)
+{
+
+}
+
+// One mesh split into two volumes at an interface: the whole mesh's image.
+void TestInterface(Fixture& f)
+{
+  // --- an interface: one mesh split into two volumes, each with its own points on the shared
+  // faces, draws as the whole mesh (MPVONC orders the tetrahedra across the interface as within
+  // one mesh: the volumes' points welded by position)
+  auto lower = Side(f.Grid, true), upper = Side(f.Grid, false);
+  vtkNew<vtkPsiVolumeMapper> wholeMapper, lowerMapper, upperMapper;
+  wholeMapper->SetInputData(f.Grid);
+  lowerMapper->SetInputData(lower);
+  upperMapper->SetInputData(upper);
+  psitest::VolumeView whole(W, H, wholeMapper, f.TF.Property);
+  psitest::VolumeView split(W, H, lowerMapper, f.TF.Property);
+  vtkNew<vtkVolume> upperVolume;
+  upperVolume->SetMapper(upperMapper);
+  upperVolume->SetProperty(f.TF.Property);
+  split.Renderer->AddVolume(upperVolume);
+  for (vtkPsiVolumeMapper* m : { wholeMapper.GetPointer(), lowerMapper.GetPointer(),
+         upperMapper.GetPointer() })
+  {
+    psitest::ApplyRequested(m);
+  }
+  for (int view = 0; view < 3; ++view)
+  {
+    whole.Renderer->GetActiveCamera()->DeepCopy(f.AB->Renderer->GetActiveCamera());
     SetView(whole.Renderer, view);
     const std::vector<double> a = psitest::GrabRGB(whole.Window);
     SetView(split.Renderer, view);
@@ -279,100 +340,124 @@ int main(int argc, char* argv[])
   }
 
   // --- isosurfaces: each volume's, in its own slot; the union's image with the same isovalue
-  for (vtkPsiVolumeMapper* m : { unionMapper.GetPointer(), ab.MapperA.GetPointer(),
-         ab.MapperB.GetPointer() })
+  for (vtkPsiVolumeMapper* m : { f.UnionMapper.GetPointer(), f.AB->MapperA.GetPointer(),
+         f.AB->MapperB.GetPointer() })
   {
     m->SetIsosurfaceValues({ 150.0 });
     m->SetIsosurfaceOpacity(0.6);
   }
   // a value below the second volume's range, dropped (kept, it would fall into the first's slot)
-  ab.MapperB->SetIsosurfaceValues({ 150.0, -83.0 });
+  f.AB->MapperB->SetIsosurfaceValues({ 150.0, -83.0 });
   for (int view = 0; view < 2; ++view)
   {
-    const std::vector<double> ref = Draw(one.Window, one.Renderer, view);
-    const std::vector<double> img = Draw(ab.Window, ab.Renderer, view);
+    const std::vector<double> ref = Draw(f.One->Window, f.One->Renderer, view);
+    const std::vector<double> img = Draw(f.AB->Window, f.AB->Renderer, view);
     std::printf("view %d: two volumes with isosurfaces against their union: largest %.1f/255\n",
       view, 255 * psitest::LargestDifference(img, ref));
-    if (!out.empty())
+    if (!f.Out.empty())
     {
-      psitest::WritePng(out + "/intermixed_iso_union_" + std::to_string(view) + ".png", ref, W, H);
-      psitest::WritePng(out + "/intermixed_iso_ab_" + std::to_string(view) + ".png", img, W, H);
+      psitest::WritePng(f.Out + "/intermixed_iso_union_" + std::to_string(view) + ".png", ref, W, H);
+      psitest::WritePng(f.Out + "/intermixed_iso_ab_" + std::to_string(view) + ".png", img, W, H);
     }
     PSI_CHECK(psitest::LargestDifference(img, ref) <= 2.0 / 255 + 1e-9 &&
-        ab.MapperA->GetLastUsedIsosurfaceMethod() >= 0,
+        f.AB->MapperA->GetLastUsedIsosurfaceMethod() >= 0,
       "view %d: two volumes with an isosurface each are their union with it (largest %.1f/255)",
       view, 255 * psitest::LargestDifference(img, ref));
   }
-  for (vtkPsiVolumeMapper* m : { unionMapper.GetPointer(), ab.MapperA.GetPointer(),
-         ab.MapperB.GetPointer() })
+  for (vtkPsiVolumeMapper* m : { f.UnionMapper.GetPointer(), f.AB->MapperA.GetPointer(),
+         f.AB->MapperB.GetPointer() })
   {
     m->SetIsosurfaceValues({});
   }
+}
 
+// The camera inside one volume, then an opaque plane through both: the union's image.
+void TestInsideAndOpaque(Fixture& f)
+{
   // --- the camera inside one of them, and an opaque plane through both: the union's image
-  for (vtkRenderer* ren : { one.Renderer.GetPointer(), ab.Renderer.GetPointer() })
+  for (vtkRenderer* ren : { f.One->Renderer.GetPointer(), f.AB->Renderer.GetPointer() })
   {
     psitest::SetCameraInside(ren->GetActiveCamera());
   }
   {
-    const std::vector<double> ref = psitest::GrabRGB(one.Window);
-    const std::vector<double> img = psitest::GrabRGB(ab.Window);
+    const std::vector<double> ref = psitest::GrabRGB(f.One->Window);
+    const std::vector<double> img = psitest::GrabRGB(f.AB->Window);
     std::printf("camera inside the first volume, against the union: largest %.1f/255 (near-plane "
                 "path %d)\n", 255 * psitest::LargestDifference(img, ref),
-      static_cast<int>(ab.MapperA->GetLastUsedNearPlaneClipping()));
+      static_cast<int>(f.AB->MapperA->GetLastUsedNearPlaneClipping()));
     PSI_CHECK(psitest::LargestDifference(img, ref) <= 1.0 / 255 + 1e-9 &&
-        ab.MapperA->GetLastUsedNearPlaneClipping() && Covered(ref) > W * H / 4,
+        f.AB->MapperA->GetLastUsedNearPlaneClipping() && Covered(ref) > W * H / 4,
       "the camera inside one of two volumes: the union's image (largest %.1f/255)",
       255 * psitest::LargestDifference(img, ref));
   }
   vtkSmartPointer<vtkActor> opaqueOne = psitest::MakeOpaquePlane(6),
                             opaqueAB = psitest::MakeOpaquePlane(6);
-  one.Renderer->AddActor(opaqueOne);
-  ab.Renderer->AddActor(opaqueAB);
+  f.One->Renderer->AddActor(opaqueOne);
+  f.AB->Renderer->AddActor(opaqueAB);
   for (int view = 0; view < 2; ++view)
   {
-    const std::vector<double> ref = Draw(one.Window, one.Renderer, view);
-    const std::vector<double> img = Draw(ab.Window, ab.Renderer, view);
+    const std::vector<double> ref = Draw(f.One->Window, f.One->Renderer, view);
+    const std::vector<double> img = Draw(f.AB->Window, f.AB->Renderer, view);
     PSI_CHECK(psitest::LargestDifference(img, ref) <= 1.0 / 255 + 1e-9,
       "view %d: an opaque plane through two volumes: the union's image (largest %.1f/255)", view,
       255 * psitest::LargestDifference(img, ref));
   }
-  one.Renderer->RemoveActor(opaqueOne);
-  ab.Renderer->RemoveActor(opaqueAB);
+  f.One->Renderer->RemoveActor(opaqueOne);
+  f.AB->Renderer->RemoveActor(opaqueAB);
+}
 
+// A translucent plane through both within dual depth peeling: the union's image.
+void TestTranslucent(Fixture& f)
+{
   // --- translucent geometry through both, within depth peeling: still the union's image
-  AddTranslucentPlane(one.Window, one.Renderer);
-  AddTranslucentPlane(ab.Window, ab.Renderer);
+  AddTranslucentPlane(f.One->Window, f.One->Renderer);
+  AddTranslucentPlane(f.AB->Window, f.AB->Renderer);
   for (int view = 0; view < 2; ++view)
   {
-    const std::vector<double> ref = Draw(one.Window, one.Renderer, view);
-    const std::vector<double> img = Draw(ab.Window, ab.Renderer, view);
+    const std::vector<double> ref = Draw(f.One->Window, f.One->Renderer, view);
+    const std::vector<double> img = Draw(f.AB->Window, f.AB->Renderer, view);
     std::printf("view %d: with a translucent plane through both (depth peeling) against their "
                 "union: largest %.1f/255\n", view, 255 * psitest::LargestDifference(img, ref));
     PSI_CHECK(psitest::LargestDifference(img, ref) <= 1.0 / 255 + 1e-9,
       "view %d: a translucent plane through two volumes within depth peeling: the union's image "
       "(largest %.1f/255)", view, 255 * psitest::LargestDifference(img, ref));
-    if (!out.empty())
+    if (!f.Out.empty())
     {
-      psitest::WritePng(out + "/intermixed_peel_" + std::to_string(view) + ".png", img, W, H);
+      psitest::WritePng(f.Out + "/intermixed_peel_" + std::to_string(view) + ".png", img, W, H);
     }
   }
-  ab.Renderer->RemoveAllViewProps();
-  ab.Renderer->AddVolume(ab.A);
-  ab.Renderer->AddVolume(ab.B);
-  ab.Renderer->SetUseDepthPeeling(0);
+  f.AB->Renderer->RemoveAllViewProps();
+  f.AB->Renderer->AddVolume(f.AB->A);
+  f.AB->Renderer->AddVolume(f.AB->B);
+  f.AB->Renderer->SetUseDepthPeeling(0);
+}
 
+// One hidden: the other alone.
+void TestHidden(Fixture& f)
+{
   // --- hiding one gives the other alone
   vtkNew<vtkPsiVolumeMapper> aloneMapper;
-  aloneMapper->SetInputData(grid);
+  aloneMapper->SetInputData(f.Grid);
   psitest::ApplyRequested(aloneMapper.GetPointer());
-  psitest::VolumeView alone(W, H, aloneMapper, tf.Property);
-  ab.B->VisibilityOff();
-  const std::vector<double> hidden = Draw(ab.Window, ab.Renderer, 0);
+  psitest::VolumeView alone(W, H, aloneMapper, f.TF.Property);
+  f.AB->B->VisibilityOff();
+  const std::vector<double> hidden = Draw(f.AB->Window, f.AB->Renderer, 0);
   const std::vector<double> single = Draw(alone.Window, alone.Renderer, 0);
   PSI_CHECK(psitest::LargestDifference(hidden, single) <= 1.0 / 255 + 1e-9 &&
-      ab.MapperA->GetNumberOfTetrahedra() == grid->GetNumberOfCells(),
+      f.AB->MapperA->GetNumberOfTetrahedra() == f.Grid->GetNumberOfCells(),
     "one volume hidden: the other alone (largest %.1f/255)",
     255 * psitest::LargestDifference(hidden, single));
+}
+
+int main(int argc, char* argv[])
+{
+  Fixture f(psitest::ParseArguments(argc, argv));
+  TestDisjointUnion(f);
+  TestOwnTransferFunctions(f);
+  TestIsosurfaces(f);
+  TestInterface(f);
+  TestInsideAndOpaque(f);
+  TestTranslucent(f);
+  TestHidden(f);
   return psitest::Report("TestPsiIntermixedVolumes");
 }
