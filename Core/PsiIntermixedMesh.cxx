@@ -25,7 +25,7 @@ std::array<double, 3> WorldPoint(const TetMesh& mesh, const std::array<double, 1
   return w;
 }
 
-// The world bounds of the points the volumes' cells use (empty: all zero).
+// The world bounds of the points the volumes' cells use (empty: all zero), each point placed once.
 void CellPointWorldBounds(const std::vector<IntermixedVolume>& volumes, double b[6])
 {
   const double inf = std::numeric_limits<double>::infinity();
@@ -36,17 +36,26 @@ void CellPointWorldBounds(const std::vector<IntermixedVolume>& volumes, double b
   }
   for (const IntermixedVolume& v : volumes)
   {
+    std::vector<char> used(v.Mesh->NumberOfPoints(), 0);
     const TetCells cells = v.Mesh->Cells();
     for (size_t t = 0; t < v.Mesh->NumberOfTets(); ++t)
     {
       for (int c = 0; c < 4; ++c)
       {
-        const std::array<double, 3> w = WorldPoint(*v.Mesh, v.ModelToWorld, cells(t, c));
-        for (int k = 0; k < 3; ++k)
-        {
-          b[2 * k] = std::min(b[2 * k], w[k]);
-          b[2 * k + 1] = std::max(b[2 * k + 1], w[k]);
-        }
+        used[cells(t, c)] = 1;
+      }
+    }
+    for (size_t i = 0; i < used.size(); ++i)
+    {
+      if (!used[i])
+      {
+        continue;
+      }
+      const std::array<double, 3> w = WorldPoint(*v.Mesh, v.ModelToWorld, i);
+      for (int k = 0; k < 3; ++k)
+      {
+        b[2 * k] = std::min(b[2 * k], w[k]);
+        b[2 * k + 1] = std::max(b[2 * k + 1], w[k]);
       }
     }
   }
@@ -55,33 +64,9 @@ void CellPointWorldBounds(const std::vector<IntermixedVolume>& volumes, double b
     std::fill(b, b + 6, 0.0);
   }
 }
-
-// The longest and the shortest (non-zero) edge of the mesh's tetrahedra.
-void MeasureEdges(TetMesh& m)
-{
-  double maxEdge2 = 0, minEdge2 = std::numeric_limits<double>::infinity();
-  for (size_t t = 0; t < m.NumberOfTets(); ++t)
-  {
-    for (int a = 0; a < 4; ++a)
-    {
-      const float* p = &m.Points4[4 * size_t(m.Tets[4 * t + a])];
-      for (int c = a + 1; c < 4; ++c)
-      {
-        const float* q = &m.Points4[4 * size_t(m.Tets[4 * t + c])];
-        const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-          (p[2] - q[2]) * (p[2] - q[2]);
-        maxEdge2 = std::max(maxEdge2, d2);
-        minEdge2 = d2 > 0 ? std::min(minEdge2, d2) : minEdge2;
-      }
-    }
-  }
-  m.MaxEdgeLength = std::sqrt(maxEdge2);
-  m.MinEdgeLength = std::isfinite(minEdge2) ? std::sqrt(minEdge2) : 0;
-}
 } // namespace
 
-TetMesh IntermixMeshes(
-  const std::vector<IntermixedVolume>& volumes, int samples, std::vector<size_t>* firstTet)
+TetMesh IntermixMeshes(const std::vector<IntermixedVolume>& volumes, int samples)
 {
   TetMesh m;
   double b[6];
@@ -95,10 +80,6 @@ TetMesh IntermixMeshes(
   const bool opacity = std::any_of(volumes.begin(), volumes.end(),
     [](const IntermixedVolume& v) { return !v.Mesh->Opacity.empty(); });
   const int n = static_cast<int>(volumes.size());
-  if (firstTet)
-  {
-    firstTet->assign(1, 0);
-  }
   for (int k = 0; k < n; ++k)
   {
     const TetMesh& v = *volumes[k].Mesh;
@@ -127,12 +108,8 @@ TetMesh IntermixMeshes(
     m.NonTetCells += v.NonTetCells;
     m.NonFiniteTets += v.NonFiniteTets;
     m.CellScalars = m.CellScalars || v.CellScalars;
-    if (firstTet)
-    {
-      firstTet->push_back(m.NumberOfTets());
-    }
   }
-  MeasureEdges(m);
+  MeasureEdgeLengths(m);
   return m;
 }
 

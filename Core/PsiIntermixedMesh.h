@@ -46,10 +46,9 @@ inline double SlotScalar(int slot, int slots, int samples, double u)
 /// the bounds of the points the cells use, scalars (and separate opacity scalars, where any
 /// volume has them: a volume without reads its color scalar's fraction, over whose range its
 /// attenuation is then sampled) as slot scalars of `samples` samples per volume, cells one
-/// volume after the other (`firstTet[k]`: volume k's first tetrahedron; one entry more, the
-/// total). The scalar ranges are [0, 1]; edge lengths are measured in the world.
+/// volume after the other. The scalar ranges are [0, 1]; edge lengths are measured in the world.
 PSIVOLUMECORE_EXPORT TetMesh IntermixMeshes(
-  const std::vector<IntermixedVolume>& volumes, int samples, std::vector<size_t>* firstTet = nullptr);
+  const std::vector<IntermixedVolume>& volumes, int samples);
 
 /// The tables of the volumes, each sampled at the same number of scalars, one after the other:
 /// the table of the intermixed mesh (domain [0, 1] in slot scalars).

@@ -216,12 +216,11 @@ void SetRange(double lo, double hi, double range[2])
 }
 
 // Scalar ranges of the drawn tetrahedra (never empty; the separate opacity scalars' too) and,
-// when `edges`, the longest and shortest edge, in one pass.
+// when `edges`, the longest and shortest edge (MeasureEdgeLengths).
 void MeasureTets(TetMesh& m, const RawScalars& raw, bool edges = true)
 {
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo, maxEdge2 = 0;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   double olo = lo, ohi = hi;
-  double minEdge2 = std::numeric_limits<double>::infinity();
   const bool opacity = !raw.O.empty();
   const TetCells cells = m.Cells();
   for (size_t t = 0; t < m.NumberOfTets(); ++t)
@@ -230,7 +229,6 @@ void MeasureTets(TetMesh& m, const RawScalars& raw, bool edges = true)
     cells.Get(t, v);
     for (int a = 0; a < 4; ++a)
     {
-      const float* p = &m.Points4[4 * static_cast<size_t>(v[a])];
       lo = std::min(lo, raw.S[v[a]]);
       hi = std::max(hi, raw.S[v[a]]);
       if (opacity)
@@ -238,20 +236,11 @@ void MeasureTets(TetMesh& m, const RawScalars& raw, bool edges = true)
         olo = std::min(olo, raw.O[v[a]]);
         ohi = std::max(ohi, raw.O[v[a]]);
       }
-      for (int c = a + 1; c < 4 && edges; ++c)
-      {
-        const float* q = &m.Points4[4 * static_cast<size_t>(v[c])];
-        const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-          (p[2] - q[2]) * (p[2] - q[2]);
-        maxEdge2 = std::max(maxEdge2, d2);
-        minEdge2 = d2 > 0 ? std::min(minEdge2, d2) : minEdge2;
-      }
     }
   }
   if (edges)
   {
-    m.MaxEdgeLength = std::sqrt(maxEdge2);
-    m.MinEdgeLength = std::isfinite(minEdge2) ? std::sqrt(minEdge2) : 0;
+    MeasureEdgeLengths(m);
   }
   SetRange(lo, hi, m.ScalarRange);
   SetRange(olo, ohi, m.OpacityRange);
@@ -277,6 +266,31 @@ void NormalizeScalars(TetMesh& m, const RawScalars& raw)
   }
 }
 } // namespace
+
+void MeasureEdgeLengths(TetMesh& m)
+{
+  double maxEdge2 = 0, minEdge2 = std::numeric_limits<double>::infinity();
+  const TetCells cells = m.Cells();
+  for (size_t t = 0; t < m.NumberOfTets(); ++t)
+  {
+    uint32_t v[4];
+    cells.Get(t, v);
+    for (int a = 0; a < 4; ++a)
+    {
+      const float* p = &m.Points4[4 * static_cast<size_t>(v[a])];
+      for (int c = a + 1; c < 4; ++c)
+      {
+        const float* q = &m.Points4[4 * static_cast<size_t>(v[c])];
+        const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+          (p[2] - q[2]) * (p[2] - q[2]);
+        maxEdge2 = std::max(maxEdge2, d2);
+        minEdge2 = d2 > 0 ? std::min(minEdge2, d2) : minEdge2;
+      }
+    }
+  }
+  m.MaxEdgeLength = std::sqrt(maxEdge2);
+  m.MinEdgeLength = std::isfinite(minEdge2) ? std::sqrt(minEdge2) : 0;
+}
 
 double ScalarValue(vtkDataArray* array, int64_t i, ScalarComponent c)
 {

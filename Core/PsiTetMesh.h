@@ -105,6 +105,10 @@ struct ScalarComponent
 /// scalar, not the separate opacity).
 PSIVOLUMECORE_EXPORT double ScalarValue(vtkDataArray* array, int64_t i, ScalarComponent c);
 
+/// Sets the mesh's MaxEdgeLength and MinEdgeLength (the shortest non-zero edge) from its
+/// tetrahedra's edges.
+PSIVOLUMECORE_EXPORT void MeasureEdgeLengths(TetMesh& mesh);
+
 /// Gathers the tetrahedra of `input` with the scalars of `scalars` (point or cell data).
 PSIVOLUMECORE_EXPORT TetMesh GatherTetMesh(vtkUnstructuredGridBase* input, vtkDataArray* scalars,
   bool cellScalars, ScalarComponent component = ScalarComponent());
