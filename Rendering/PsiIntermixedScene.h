@@ -20,6 +20,9 @@ struct PsiIntermixedScene
   /// it changes.
   std::string Key;
   std::vector<int32_t> Neighbors; ///< 4 per tetrahedron (MPVONC); empty when not asked for
+  /// Names the volumes' properties, their modification times and their meshes' ranges: the
+  /// table is sampled again when it changes.
+  std::string TablesKey;
   psi::TransferFunctionTable Table;
   std::vector<float> OpacityPrefix;
   bool ZeroOpacity = false;

@@ -57,6 +57,28 @@ void IntermixIsosurfaces(const std::vector<PsiIntermixedMember>& drawn,
   }
 }
 
+// Each volume's transfer function sampled at `samples` scalars over its own range (its separate
+// opacity array's, when it has one) with its opacity prefix counts, one slot after the other.
+void IntermixTransferFunctions(const std::vector<PsiIntermixedMember>& drawn,
+  const std::vector<psi::IntermixedVolume>& volumes, int samples, PsiIntermixedScene& scene)
+{
+  std::vector<psi::TransferFunctionTable> tables;
+  std::vector<std::vector<float>> prefixes;
+  scene.ZeroOpacity = false;
+  for (size_t k = 0; k < drawn.size(); ++k)
+  {
+    const psi::TetMesh& mesh = *volumes[k].Mesh;
+    vtkVolumeProperty* property = drawn[k].Volume->GetProperty();
+    tables.push_back(psi::SampleTransferFunction(
+      property, mesh.ScalarRange, samples, mesh.Opacity.empty() ? nullptr : mesh.OpacityRange));
+    bool zero = false;
+    prefixes.push_back(psi::OpacityPrefixCounts(tables.back(), property, zero));
+    scene.ZeroOpacity = scene.ZeroOpacity || zero;
+  }
+  scene.Table = psi::IntermixTables(tables);
+  scene.OpacityPrefix = psi::IntermixOpacityPrefixes(prefixes);
+}
+
 // The volume's matrix, row-major.
 std::array<double, 16> RowMajor(vtkVolume* vol)
 {
@@ -91,13 +113,10 @@ bool vtkPsiVolumeMapper::RenderIntermixed(vtkRenderer* ren, vtkVolume* vol)
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   const psi::Settings& lead = members[0].Mapper->GetSettings();
   const int samples = lead.TransferFunctionSamples;
-  // each volume's mesh, gathered by its own mapper, and its table at the lead's sample count
+  // each volume's mesh, gathered by its own mapper; what its table is sampled from
   std::vector<psi::IntermixedVolume> volumes;
   std::vector<PsiIntermixedMember> drawn;
-  std::vector<psi::TransferFunctionTable> tables;
-  std::vector<std::vector<float>> prefixes;
-  bool zero = false;
-  std::ostringstream key;
+  std::ostringstream key, tablesKey;
   for (const PsiIntermixedMember& m : members)
   {
     Internals& M = *m.Mapper->Impl;
@@ -128,11 +147,9 @@ bool vtkPsiVolumeMapper::RenderIntermixed(vtkRenderer* ren, vtkVolume* vol)
       key << ',' << e;
     }
     key << ';';
-    tables.push_back(psi::SampleTransferFunction(
-      property, mesh.ScalarRange, samples, mesh.Opacity.empty() ? nullptr : mesh.OpacityRange));
-    bool z = false;
-    prefixes.push_back(psi::OpacityPrefixCounts(tables.back(), property, z));
-    zero = zero || z;
+    tablesKey << property << ':' << property->GetMTime() << ',' << mesh.ScalarRange[0] << ','
+              << mesh.ScalarRange[1] << ',' << mesh.Opacity.empty() << ',' << mesh.OpacityRange[0]
+              << ',' << mesh.OpacityRange[1] << ';';
   }
   if (volumes.empty())
   {
@@ -156,9 +173,12 @@ bool vtkPsiVolumeMapper::RenderIntermixed(vtkRenderer* ren, vtkVolume* vol)
     }
     scene.Key = key.str();
   }
-  scene.Table = psi::IntermixTables(tables);
-  scene.OpacityPrefix = psi::IntermixOpacityPrefixes(prefixes);
-  scene.ZeroOpacity = zero;
+  tablesKey << "samples " << samples;
+  if (scene.TablesKey != tablesKey.str()) // sampled again only when one of them changed, as alone
+  {
+    IntermixTransferFunctions(drawn, volumes, samples, scene);
+    scene.TablesKey = tablesKey.str();
+  }
 
   if (!I.Union)
   {
