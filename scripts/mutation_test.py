@@ -163,6 +163,14 @@ def configure(work, log, data_dir):
                log) == 0
 
 
+def targets_of_tests(names, tests):
+    """The build targets the CTests `names` run; None (the whole build) when one of them runs no
+    executable of the build (PsiPython.installed installs the whole build)."""
+    if any(not tests[t] for t in names):
+        return None
+    return {x for t in names for x in tests[t]}
+
+
 def build(work, targets, jobs, log):
     """Builds `targets` in the scratch build; no target (a test that runs no executable of the
     build, as `PsiPython.installed` installs the build with cmake --install): the whole build."""
@@ -238,7 +246,7 @@ def main():
     needed = sorted({t for m in mutations for t in m.tests})
     print(f"scratch tree {work / 'src'}, build {work / 'build'}, log {log}")
     t0 = time.time()
-    if not build(work, {x for t in needed for x in tests[t]}, args.jobs, log):
+    if not build(work, targets_of_tests(needed, tests), args.jobs, log):
         print(f"the unmutated scratch tree does not build: see {log}")
         return 1
     for t in needed:
@@ -256,7 +264,7 @@ def main():
         caught = "survived"
         try:
             path.write_text(original.replace(m.original, m.replacement, 1))
-            if not build(work, {x for t in m.tests for x in tests[t]}, args.jobs, log):
+            if not build(work, targets_of_tests(m.tests, tests), args.jobs, log):
                 caught = "(build error)"
             else:
                 for t in m.tests:
