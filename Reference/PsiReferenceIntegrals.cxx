@@ -41,6 +41,44 @@ Rgba IntegrateReference(const Segment& s)
   return out;
 }
 
+Rgba IntegrateReferenceMedia(const std::vector<Segment>& media)
+{
+  using R = long double;
+  Rgba out{ { 0, 0, 0, 0 } };
+  if (media.empty() || !(media[0].D > 0))
+  {
+    return out;
+  }
+  // As IntegrateReference, u in [0, 1] from the front, with the sums of the media:
+  //   T(u) = D sum_k (tau_fk u + (tau_bk - tau_fk) u^2 / 2),
+  //   emission density D sum_k tau_k(u) L_k(u) exp(-T(u)).
+  const R D = media[0].D;
+  R tf = 0, tb = 0;
+  for (const Segment& m : media)
+  {
+    tf += m.tauf;
+    tb += m.taub;
+  }
+  const R umax = TruncationPoint<R>(D * tf, D * (tb - tf) / 2, R(46));
+  using GK = boost::math::quadrature::gauss_kronrod<R, 61>;
+  for (int c = 0; c < 3; ++c)
+  {
+    auto g = [&](R u) {
+      R emission = 0;
+      for (const Segment& m : media)
+      {
+        const R tau = m.tauf + (R(m.taub) - m.tauf) * u;
+        emission += tau * (m.Lf[c] + (R(m.Lb[c]) - m.Lf[c]) * u);
+      }
+      const R T = D * (tf * u + (tb - tf) * u * u / 2);
+      return D * emission * std::exp(-T);
+    };
+    out[c] = static_cast<double>(GK::integrate(g, R(0), umax, 15, R(1e-14)));
+  }
+  out[3] = static_cast<double>(-std::expm1(-D * (tf + tb) / 2));
+  return out;
+}
+
 namespace
 {
 // Opacity 1 over the whole segment (D > 0). The color is (Moreland's dissertation §5.3, Eq. 5.12)

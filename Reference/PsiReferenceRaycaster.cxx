@@ -1,6 +1,7 @@
 #include "PsiReferenceRaycaster.h"
 
 #include "PsiIntegration.h"
+#include "PsiReferenceRays.h"
 #include "PsiVec3.h"
 
 #include <algorithm>
@@ -10,16 +11,6 @@ namespace psi
 {
 namespace
 {
-// Homogeneous transform of (x, y, z, 1) by a row-major matrix, divided by w.
-Vec3 Transform(const std::array<double, 16>& m, double x, double y, double z)
-{
-  double o[4];
-  for (int r = 0; r < 4; ++r)
-  {
-    o[r] = m[4 * r] * x + m[4 * r + 1] * y + m[4 * r + 2] * z + m[4 * r + 3];
-  }
-  return { { o[0] / o[3], o[1] / o[3], o[2] / o[3] } };
-}
 
 struct TetGeometry
 {
@@ -68,119 +59,6 @@ TetGeometry MakeTet(const ReferenceScene& sc, const std::array<int, 4>& t)
   g.Origin = V[0];
   g.S0 = sc.Scalars[t[0]];
   return g;
-}
-} // namespace
-
-namespace
-{
-struct Layer
-{
-  double T;
-  Rgba Color; // premultiplied
-};
-
-// The crossings of the ray o + t d (0 < t < tMax) with the surfaces' triangles, nearest first
-// (Moeller and Trumbore's ray/triangle test).
-std::vector<Layer> SurfaceLayers(
-  const ReferenceScene& sc, const Vec3& o, const Vec3& d, double tMax)
-{
-  std::vector<Layer> layers;
-  for (const ReferenceSurface& surface : sc.Surfaces)
-  {
-    const Rgba c{ { surface.Opacity * surface.Color[0], surface.Opacity * surface.Color[1],
-      surface.Opacity * surface.Color[2], surface.Opacity } };
-    for (const auto& tri : surface.Triangles)
-    {
-      const Vec3 e1 = Sub(tri[1], tri[0]), e2 = Sub(tri[2], tri[0]);
-      const Vec3 p = Cross(d, e2);
-      const double det = Dot(e1, p);
-      if (std::abs(det) < 1e-300)
-      {
-        continue;
-      }
-      const Vec3 s = Sub(o, tri[0]);
-      const double u = Dot(s, p) / det;
-      const Vec3 q = Cross(s, e1);
-      const double v = Dot(d, q) / det;
-      const double t = Dot(e2, q) / det;
-      if (u >= 0 && v >= 0 && u + v <= 1 && t > 0 && t < tMax)
-      {
-        layers.push_back({ t, c });
-      }
-    }
-  }
-  std::sort(layers.begin(), layers.end(), [](const Layer& a, const Layer& b) { return a.T < b.T; });
-  return layers;
-}
-// The inverse of a row-major 4x4 matrix (Gauss-Jordan, partial pivoting).
-std::array<double, 16> Inverse(const std::array<double, 16>& m)
-{
-  double a[4][8];
-  for (int r = 0; r < 4; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      a[r][c] = m[4 * r + c];
-      a[r][c + 4] = r == c;
-    }
-  }
-  for (int c = 0; c < 4; ++c)
-  {
-    int p = c;
-    for (int r = c + 1; r < 4; ++r)
-    {
-      if (std::abs(a[r][c]) > std::abs(a[p][c]))
-      {
-        p = r;
-      }
-    }
-    std::swap(a[c], a[p]);
-    const double d = a[c][c];
-    for (double& v : a[c])
-    {
-      v /= d;
-    }
-    for (int r = 0; r < 4; ++r)
-    {
-      if (r != c)
-      {
-        const double f = a[r][c];
-        for (int k = 0; k < 8; ++k)
-        {
-          a[r][k] -= f * a[c][k];
-        }
-      }
-    }
-  }
-  std::array<double, 16> inverse{};
-  for (int r = 0; r < 4; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      inverse[4 * r + c] = a[r][c + 4];
-    }
-  }
-  return inverse;
-}
-
-// The ray of pixel (i, j): from the near plane `o` along the unit direction `d`, `len` to the
-// far plane.
-struct PixelRay
-{
-  Vec3 o, d;
-  double len;
-};
-
-PixelRay RayOf(const ReferenceCamera& cam, int i, int j)
-{
-  PixelRay ray;
-  const double x = (i + 0.5) / cam.Width * 2 - 1, y = (j + 0.5) / cam.Height * 2 - 1;
-  ray.o = Transform(cam.NdcToWorld, x, y, -1);
-  const Vec3 f = Transform(cam.NdcToWorld, x, y, 1);
-  ray.d = Sub(f, ray.o);
-  ray.len = std::sqrt(Dot(ray.d, ray.d));
-  ray.d = { { ray.d[0] / ray.len, ray.d[1] / ray.len, ray.d[2] / ray.len } };
-  return ray;
 }
 
 // The pixels (i0..i1, j0..j1) tetrahedron `t` may cover: its screen box; every pixel when it
@@ -262,7 +140,7 @@ std::vector<std::vector<ReferencePiece>> ReferencePixelPieces(
   const int W = cam.Width, H = cam.Height;
   std::vector<std::vector<ReferencePiece>> pixels(static_cast<size_t>(W) * H);
   // Screen boxes: tetrahedra are binned into the pixels they may cover.
-  const std::array<double, 16> worldToNdc = Inverse(cam.NdcToWorld);
+  const std::array<double, 16> worldToNdc = InverseMatrix(cam.NdcToWorld);
   for (const auto& t : sc.Tets)
   {
     const TetGeometry g = MakeTet(sc, t);
@@ -320,17 +198,8 @@ void IntegratePiece(const ReferenceScene& sc, const std::vector<double>& bps,
     }
     const double sa = p.s0 + (s1 - p.s0) * (ts[k] - p.t0) / (t1 - p.t0);
     const double sb = p.s0 + (s1 - p.s0) * (ts[k + 1] - p.t0) / (t1 - p.t0);
-    double f[4], b[4];
-    sc.Transfer(sa, f);
-    sc.Transfer(sb, b);
-    Segment seg;
-    seg.Lf = { { f[0], f[1], f[2] } };
-    seg.Lb = { { b[0], b[1], b[2] } };
-    seg.tauf = f[3];
-    seg.taub = b[3];
-    seg.D = ts[k + 1] - ts[k];
-    const Rgba c = IntegrateWithPsi(seg, Psi(seg.taub * seg.D, seg.tauf * seg.D));
-    acc = Over(acc, c);
+    const Segment seg = TransferSegment(sc, sa, sb, ts[k + 1] - ts[k]);
+    acc = Over(acc, IntegrateWithPsi(seg, Psi(seg.taub * seg.D, seg.tauf * seg.D)));
   }
 }
 
@@ -339,19 +208,12 @@ void IntegratePiece(const ReferenceScene& sc, const std::vector<double>& bps,
 Vec3 CompositePixel(const ReferenceScene& sc, const ReferenceCamera& cam,
   const std::vector<double>& bps, int i, int j, std::vector<ReferencePiece>& list)
 {
-  const size_t px = static_cast<size_t>(j) * cam.Width + i;
   std::sort(list.begin(), list.end(),
     [](const ReferencePiece& a, const ReferencePiece& b) { return a.t0 < b.t0; });
   const PixelRay ray = RayOf(cam, i, j);
-  double tOpaque = 1e300;
-  if (!cam.OpaqueDepth.empty() && cam.OpaqueDepth[px] < 1.0f)
-  {
-    const double x = (i + 0.5) / cam.Width * 2 - 1, y = (j + 0.5) / cam.Height * 2 - 1;
-    const Vec3 q = Transform(cam.NdcToWorld, x, y, 2.0 * cam.OpaqueDepth[px] - 1.0);
-    tOpaque = std::sqrt(Dot(Sub(q, ray.o), Sub(q, ray.o)));
-  }
+  const double tOpaque = OpaqueDistance(cam, ray, i, j);
   Rgba acc{ { 0, 0, 0, 0 } };
-  const std::vector<Layer> layers = SurfaceLayers(sc, ray.o, ray.d, std::min(ray.len, tOpaque));
+  const std::vector<Layer> layers = SurfaceLayers(sc.Surfaces, ray.o, ray.d, std::min(ray.len, tOpaque));
   size_t nextLayer = 0;
   for (const ReferencePiece& p : list)
   {
@@ -367,18 +229,7 @@ Vec3 CompositePixel(const ReferenceScene& sc, const ReferenceCamera& cam,
   {
     acc = Over(acc, layers[nextLayer].Color);
   }
-  Vec3 behind = cam.Background;
-  if (!cam.OpaqueColor.empty() && !cam.OpaqueDepth.empty() && cam.OpaqueDepth[px] < 1.0f)
-  {
-    behind = { { cam.OpaqueColor[3 * px], cam.OpaqueColor[3 * px + 1],
-      cam.OpaqueColor[3 * px + 2] } };
-  }
-  Vec3 rgb;
-  for (int k = 0; k < 3; ++k)
-  {
-    rgb[k] = acc[k] + (1 - acc[3]) * behind[k];
-  }
-  return rgb;
+  return OverBehind(cam, i, j, acc);
 }
 } // namespace
 

@@ -59,3 +59,9 @@ add_test(NAME PsiCore.Settings COMMAND TestSettings
 add_executable(TestFramePlan Cxx/TestFramePlan.cxx)
 target_link_libraries(TestFramePlan PRIVATE PsiVolume::Core)
 add_test(NAME PsiCore.FramePlan COMMAND TestFramePlan)
+
+# The exact reference of several media sharing space against what it reduces to.
+add_executable(TestReferenceMedia Cxx/TestReferenceMedia.cxx)
+target_link_libraries(TestReferenceMedia PRIVATE PsiVolume::Core PsiReference VTK::RenderingCore
+  VTK::FiltersGeneral VTK::FiltersSources VTK::ImagingCore)
+add_test(NAME PsiCore.ReferenceMedia COMMAND TestReferenceMedia)

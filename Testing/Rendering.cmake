@@ -132,3 +132,9 @@ if (TARGET PsiVolumeVTKPython AND Python3_Interpreter_FOUND)
       "${CMAKE_BINARY_DIR}/${PSI_PYTHON_DESTINATION}")
   set_tests_properties(PsiRendering.PlainVTKPython PROPERTIES TIMEOUT 120)
 endif ()
+
+# Two volumes sharing space, intermixed, against the exact reference of two media: within the
+# documented bound, and closer as the cells get smaller.
+psi_add_gl_executable(TestPsiInterpenetratingVolumes)
+add_test(NAME PsiRendering.InterpenetratingVolumes COMMAND TestPsiInterpenetratingVolumes
+  "${CMAKE_BINARY_DIR}/Testing/Images" --projector geometry)

@@ -572,6 +572,15 @@ MUTATIONS = [
              "    style.ValueColors = nullptr;", ["PsiRendering.IntermixedVolumes"]),
     Mutation("intermixed_iso_from_other_slots", "Rendering/vtkPsiVolumeMapperIntermixed.cxx",
              "      if (u >= 0 && u <= 1)", "      if (true)", ["PsiRendering.IntermixedVolumes"]),
+    # --- The exact reference of several media (Reference/PsiReferenceMedia, PsiReferenceIntegrals).
+    Mutation("media_emission_of_the_last_only", "Reference/PsiReferenceIntegrals.cxx",
+             "        emission += tau * (m.Lf[c] + (R(m.Lb[c]) - m.Lf[c]) * u);",
+             "        emission = tau * (m.Lf[c] + (R(m.Lb[c]) - m.Lf[c]) * u);",
+             ["PsiCore.ReferenceMedia"]),
+    Mutation("media_overlap_takes_the_first", "Reference/PsiReferenceMedia.cxx",
+             "      acc = Over(acc, IntegrateReferenceMedia(overlap));",
+             "      acc = Over(acc, IntegrateReferenceMedia({ overlap[0] }));",
+             ["PsiCore.ReferenceMedia", "PsiRendering.InterpenetratingVolumes"]),
     # --- The install tree (cmake/PsiVolumeInstall.cmake, docs/install.md).
     Mutation("installed_package_misses_its_plugin", "Python/psivolume/data.py",
              "        from . import installed_paths\n", "        from . import installed_path\n",
