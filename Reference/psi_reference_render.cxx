@@ -2,13 +2,17 @@
 // transfer function and a camera written by a script, for accuracy reports
 // (the package module psivolume.accuracy, Python/psivolume/accuracy.py). Not part of the plugin.
 //
-// Usage: psi_reference_render MESH.vtu SCENE.txt OUT.raw
-//   MESH.vtu   an unstructured grid; non-tetrahedral cells are split by vtkDataSetTriangleFilter
-//              (as ParaView's 'Volume' does); cell scalars get private points per tetrahedron
+// Usage: psi_reference_render MESH.vtu SCENE.txt [MESH.vtu SCENE.txt ...] OUT.raw
+//   MESH.vtu   an unstructured grid in world coordinates; non-tetrahedral cells are split by
+//              vtkDataSetTriangleFilter (as ParaView's 'Volume' does); cell scalars get private
+//              points per tetrahedron
 //   SCENE.txt  the scene file: array and association, component, size, background, unit,
 //              ndc_to_world and the transfer function's table (PsiReferenceSceneFile.h)
 //   OUT.raw    W * H * 3 float64 RGB in [0, 1] (not clamped), rows from the bottom
+// Several pairs: several volumes, each with its own transfer function, drawn as media that
+// may share space (PsiReferenceMedia.h); the first scene file's size, camera and background.
 // Prints the seconds the ray casting took. A failure exits 2, its reason the last line on stderr.
+#include "PsiReferenceMedia.h"
 #include "PsiReferenceRaycaster.h"
 #include "PsiReferenceSceneFile.h"
 
@@ -66,44 +70,75 @@ int Fail(const std::string& reason)
   std::cerr << "psi_reference_render: " << reason << std::endl;
   return 2;
 }
+
+// The volume of `meshPath` and `scenePath` into `ref` (its camera into `cam` when given): an
+// empty string, or why not.
+std::string ReadVolume(
+  const char* meshPath, const char* scenePath, psi::ReferenceScene& ref, psi::ReferenceCamera* cam)
+{
+  psi::ReferenceSceneFile s;
+  std::string why = psi::ReadReferenceSceneFile(scenePath, s);
+  if (!why.empty())
+  {
+    return why;
+  }
+  const vtkSmartPointer<vtkUnstructuredGrid> grid = psi::ReadTetrahedralGrid(meshPath);
+  if (!grid)
+  {
+    return "cannot read the mesh " + std::string(meshPath) + " (a VTK XML unstructured grid)";
+  }
+  why = psi::GatherReferenceMesh(grid, s, ref);
+  if (!why.empty())
+  {
+    return why + " (" + meshPath + ")";
+  }
+  SetTransfer(s, ref);
+  if (cam)
+  {
+    *cam = psi::ReferenceCameraOf(s);
+  }
+  return std::string();
+}
 } // namespace
 
 int main(int argc, char* argv[])
 {
-  if (argc != 4)
+  if (argc < 4 || argc % 2 != 0)
   {
-    return Fail("usage: psi_reference_render MESH.vtu SCENE.txt OUT.raw");
+    return Fail("usage: psi_reference_render MESH.vtu SCENE.txt [MESH.vtu SCENE.txt ...] OUT.raw");
   }
-  psi::ReferenceSceneFile s;
-  std::string why = psi::ReadReferenceSceneFile(argv[2], s);
-  if (!why.empty())
+  const int volumes = (argc - 2) / 2;
+  std::vector<psi::ReferenceScene> refs(volumes);
+  psi::ReferenceCamera cam;
+  for (int k = 0; k < volumes; ++k)
   {
-    return Fail(why);
+    const std::string why =
+      ReadVolume(argv[1 + 2 * k], argv[2 + 2 * k], refs[k], k == 0 ? &cam : nullptr);
+    if (!why.empty())
+    {
+      return Fail(why);
+    }
   }
-  const vtkSmartPointer<vtkUnstructuredGrid> grid = psi::ReadTetrahedralGrid(argv[1]);
-  if (!grid)
-  {
-    return Fail("cannot read the mesh " + std::string(argv[1]) + " (a VTK XML unstructured grid)");
-  }
-  psi::ReferenceScene ref;
-  why = psi::GatherReferenceMesh(grid, s, ref);
-  if (!why.empty())
-  {
-    return Fail(why + " (" + argv[1] + ")");
-  }
-  SetTransfer(s, ref);
-  const psi::ReferenceCamera cam = psi::ReferenceCameraOf(s);
+  const char* outPath = argv[argc - 1];
   const auto t0 = std::chrono::steady_clock::now();
-  const std::vector<double> image = psi::RenderReference(ref, cam);
+  std::vector<const psi::ReferenceScene*> media;
+  size_t tets = 0;
+  for (const psi::ReferenceScene& r : refs)
+  {
+    media.push_back(&r);
+    tets += r.Tets.size();
+  }
+  const std::vector<double> image =
+    volumes == 1 ? psi::RenderReference(refs[0], cam) : psi::RenderReferenceMedia(media, cam);
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::ofstream out(argv[3], std::ios::binary);
+  std::ofstream out(outPath, std::ios::binary);
   out.write(reinterpret_cast<const char*>(image.data()),
     static_cast<std::streamsize>(image.size() * sizeof(double)));
   if (!out)
   {
-    return Fail("cannot write " + std::string(argv[3]));
+    return Fail("cannot write " + std::string(outPath));
   }
-  std::printf("tetrahedra %zu\nseconds %.4f\n", ref.Tets.size(), seconds);
+  std::printf("tetrahedra %zu\nseconds %.4f\n", tets, seconds);
   return 0;
 }

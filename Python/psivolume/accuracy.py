@@ -39,9 +39,10 @@ import numpy as np
 from paraview import servermanager, simple
 from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes, vtkUnstructuredGrid
 from vtkmodules.vtkCommonMath import vtkMatrix4x4
-from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
+from vtkmodules.vtkCommonTransforms import vtkTransform
+from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter, vtkTransformFilter
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
-from vtkmodules.vtkRenderingCore import vtkColorTransferFunction
+from vtkmodules.vtkRenderingCore import vtkColorTransferFunction, vtkVolume
 
 from . import accuracy_plots, data, process, restore, timing
 from .images import grab
@@ -106,12 +107,32 @@ class Capture:
             tets.SetInputData(grid)
             tets.Update()
             grid = tets.GetOutput()
+        grid = self.placed(grid)
         self.cells = grid.GetNumberOfCells()
         w = vtkXMLUnstructuredGridWriter()
         w.SetFileName(self.mesh)
         w.SetInputData(single_array(grid, self.array, self.association))
         w.SetDataModeToAppended()
         w.Write()
+
+    def placed(self, grid):
+        """`grid` in world coordinates: moved by the display's Position, Orientation, Scale and
+        Origin, as its volume's matrix places it (vtkProp3D's), when they move it."""
+        volume = vtkVolume()
+        volume.SetPosition(list(self.rep.Position))
+        volume.SetOrientation(list(self.rep.Orientation))
+        volume.SetScale(list(self.rep.Scale))
+        volume.SetOrigin(list(self.rep.Origin))
+        m = volume.GetMatrix()
+        if all(m.GetElement(i, j) == (i == j) for i in range(4) for j in range(4)):
+            return grid
+        move = vtkTransform()
+        move.SetMatrix(m)
+        placed = vtkTransformFilter()
+        placed.SetTransform(move)
+        placed.SetInputData(grid)
+        placed.Update()
+        return placed.GetOutput()
 
     def component(self):
         if self.lut.VectorMode == "Magnitude":
@@ -237,18 +258,23 @@ def run_reference_renderer(argv):
                                                    lines[-1] if lines else "no message"))
 
 
-def reference_image(cap, exe=None, runs=2):
+def reference_image(cap, exe=None, runs=2, others=()):
     """The reference image (float RGB 0..255, rows from the bottom) and its seconds, rendered by
     the reference renderer `exe` (default: find_reference_renderer()) `runs` times: the error
-    between the runs is the reference's own row (0 when deterministic)."""
+    between the runs is the reference's own row (0 when deterministic). `others`: the captures
+    of the view's other volumes, drawn with `cap`'s as media that may share space (each its own
+    mesh and transfer function; PsiReferenceMedia.h)."""
     exe = find_reference_renderer(exe)
-    scene = os.path.join(cap.work, "reference.txt")
-    cap.write_reference_scene(scene)
+    volumes = []
+    for c in [cap] + list(others):
+        scene = os.path.join(c.work, "reference.txt")
+        c.write_reference_scene(scene)
+        volumes += [c.mesh, scene]
     images, seconds = [], []
     for k in range(runs):
         out = os.path.join(cap.work, "reference_%d.raw" % k)
         t = time.perf_counter()
-        run_reference_renderer([exe, cap.mesh, scene, out])
+        run_reference_renderer([exe] + volumes + [out])
         seconds.append(time.perf_counter() - t)
         img = np.fromfile(out, dtype=np.float64).reshape(cap.size[1], cap.size[0], 3)
         images.append(np.clip(img, 0, 1) * 255.0)

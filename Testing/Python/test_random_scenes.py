@@ -11,18 +11,21 @@ NaN in part of the mesh, a separate opacity array), points that no cell uses (ne
 transfer function (ParaView's ramp, a narrow spike, a step, opacity 1, all zero), a camera
 (outside, inside the mesh, parallel projection, grazing) and settings (every integration method,
 sort, projector, decomposition, adaptive sampling, early discard, an isosurface, the interaction
-mode). It renders a still frame and an interactive one and checks:
-- the still frame against the exact reference (psivolume.accuracy's reference ray caster) within
-  the integration method's bound (BOUNDS: the linear-attenuation methods agree with the exact
+mode), and 0 to 2 further volumes in the same view (small tetrahedralized Wavelets beside, across
+or inside the first, each with its own array, color map, opacity and unit distance: drawn
+intermixed with it). It renders a still frame and an interactive one and checks:
+- the still frame against the exact reference (psivolume.accuracy's reference ray caster; with
+  further volumes, of them all as media that may share space) within the integration method's
+  bound (BOUNDS: the linear-attenuation methods agree with the exact
   integral up to the 8-bit image and the pre-integration table; the three linear-opacity methods
   integrate another model, which the reference does not), where the reference draws the scene
   (not with an isosurface, which it does not draw, nor NaN scalars, whose cells the two skip
   differently);
 - the mesh's footprint: the still frame covers the reference's pixels up to 2 pixels;
-- an all-zero opacity draws nothing at all;
+- an all-zero opacity draws nothing at all (without further volumes);
 - the interactive frame, when it is the level of detail, within LOD_BOUND of the still frame
   (without isosurfaces, which it does not draw, a narrow spike, which it samples in bands, and
-  the linear-opacity methods, whose model it does not draw);
+  the linear-opacity methods, whose model it does not draw; and with one volume);
 - a still frame after the interactive one is the still frame again (never the level of detail).
 A failure prints its seed and a one-line reproduction, and with --out writes its images (the still
 frame, the reference, the interactive frame, the still frame at its camera) side by side. The suite runs a fixed set of seeds; a
@@ -262,6 +265,47 @@ def add_unused_points(s, shown):
     return produce(more), shown
 
 
+def add_volumes(s, view, bounds):
+    """The seed's further volumes, 0 to 2 (drawn by a generator of their own, so that the seed's
+    other choices are those of the checker without them): tetrahedralized Wavelets a third to
+    two thirds of the first mesh's size, placed beside, across or inside it, each colored by an
+    array of its own with its own color map, opacity ramp and unit distance. Returns [(display,
+    source)]."""
+    rng = random.Random("volumes %d" % s.seed)
+    count = rng.choice([0, 0, 1, 2])
+    if count == 0:
+        return []
+    s.words.append("volumes=%d" % (count + 1))
+    side = [max(bounds[2 * k + 1] - bounds[2 * k], 1e-3) for k in range(3)]
+    centre = [(bounds[2 * k] + bounds[2 * k + 1]) / 2 for k in range(3)]
+    extra = []
+    for k in range(count):
+        place = rng.choice(["beside", "across", "inside"])
+        reach = {"beside": 0.9, "across": 0.5, "inside": 0.15}[place]
+        size = rng.uniform(1 / 3, 2 / 3)
+        src = simple.Transform(Input=wavelet(3))  # the Wavelet spans 6 units
+        src.Transform.Scale = [size * a / 6 for a in side]
+        src.Transform.Translate = [c + rng.uniform(-reach, reach) * a
+                                   for c, a in zip(centre, side)]
+        name = "volume %d" % (k + 2)
+        src = simple.Calculator(Input=src, ResultArrayName=name, Function="RTData")
+        rep = simple.Show(src, view)
+        simple.ColorBy(rep, ("POINTS", name))
+        rep.SetRepresentationType("Psi Volume")
+        rep.RescaleTransferFunctionToDataRange(True, False)
+        lut = simple.GetColorTransferFunction(name)
+        testing.apply_preset(lut, *rng.choice([("Viridis (matplotlib)", "Viridis"),
+                                               ("Inferno (matplotlib)", "Inferno"),
+                                               ("Cool to Warm", "Cool to Warm")]))
+        lo, hi = lut.RGBPoints[0], lut.RGBPoints[-4]
+        simple.GetOpacityTransferFunction(name).Points = [
+            lo, 0.0, 0.5, 0.0, hi, rng.choice([0.3, 1.0]), 0.5, 0.0]
+        rep.ScalarOpacityUnitDistance = max(1e-6, max(side) * rng.choice([0.1, 0.3]))
+        s.words.append("volume %d=%s" % (k + 2, place))
+        extra.append((rep, src))
+    return extra
+
+
 def footprint_misses(img, ref, px=FOOTPRINT_PX):
     a = np.abs(img).sum(axis=2) > 2
     b = np.abs(ref).sum(axis=2) > 2
@@ -275,7 +319,8 @@ def footprint_misses(img, ref, px=FOOTPRINT_PX):
 
 def show(s, view):
     """The seed's pipeline shown as 'Psi Volume' in `view` with its opacity, unit distance, camera
-    and settings: (display, source shown, opacity kind, method)."""
+    and settings, and its further volumes: (display, source shown, opacity kind, method,
+    [(display, source)] of the further volumes)."""
     src, array = make_mesh(s)
     shown, assoc, name, vector = make_array(s, src, array)
     shown, clean = add_unused_points(s, shown)
@@ -303,8 +348,9 @@ def show(s, view):
         rep.ScalarOpacityUnitDistance = max(1e-6, side * (0.1 if unit.startswith("a tenth") else 1))
     elif clean is not shown:
         rep.ScalarOpacityUnitDistance = clean_unit
+    extra = add_volumes(s, view, bounds)
     aim(s, view, bounds, clean is not shown)
-    return rep, shown, tf, apply_settings(s, rep, lo, hi)
+    return rep, shown, tf, apply_settings(s, rep, lo, hi), extra
 
 
 def override(s, rep, overrides):
@@ -321,18 +367,24 @@ def override(s, rep, overrides):
     return rep.GetProperty("IntegrationMethod").GetData()
 
 
-def check_still(t, s, label, view, rep, shown, still, tf, method):
+def check_still(t, s, label, view, rep, shown, still, tf, method, extra):
     """The still frame: nothing drawn at an all-zero opacity; against the exact reference (within
-    the method's bound) and its footprint. Returns the reference's image (None without one)."""
-    if tf == "zero" and not list(rep.IsosurfaceValues):
+    the method's bound) and its footprint, the further volumes `extra` ([(display, source)])
+    media of the reference too. Returns the reference's image (None without one)."""
+    if tf == "zero" and not list(rep.IsosurfaceValues) and not extra:
         t.check(testing.covered(still, [0, 0, 0]) == 0,
                 "%s: an all-zero opacity draws nothing (%d pixels)"
                 % (label, testing.covered(still, [0, 0, 0])))
     if not s.comparable or s.empty:
         return None
     with tempfile.TemporaryDirectory() as work:
+        others = []
+        for k, (other, src) in enumerate(extra):
+            os.makedirs(os.path.join(work, str(k)))
+            others.append(accuracy.Capture(view, other, src, os.path.join(work, str(k))))
         ref = accuracy.reference_image(accuracy.Capture(view, rep, shown, work),
-                                       os.environ.get("PSI_REFERENCE_RENDER"), runs=1)[0][0]
+                                       os.environ.get("PSI_REFERENCE_RENDER"), runs=1,
+                                       others=others)[0][0]
     mean, worst = accuracy.errors(still, ref)
     if BOUNDS[method] is not None:
         t.check(mean <= BOUNDS[method], "%s: the still frame %.3f/255 from the exact "
@@ -346,7 +398,7 @@ def check_still(t, s, label, view, rep, shown, still, tf, method):
     return ref
 
 
-def check_interactive(t, label, view, rep, tf, method):
+def check_interactive(t, label, view, rep, tf, method, extra):
     """An interactive frame after a small turn and, where it is the level of detail, the still
     frame of the same camera: (interactive image, still image at its camera)."""
     view.GetActiveCamera().Azimuth(3)
@@ -360,7 +412,7 @@ def check_interactive(t, label, view, rep, tf, method):
     # linear-opacity methods' still frames were 0.06 to 0.25 from it at opacity 1): it is held
     # to the still frame only without them.
     if drew == LOD and not list(rep.IsosurfaceValues) and tf != "spike" and \
-            BOUNDS[method] is not None:
+            BOUNDS[method] is not None and not extra:
         simple.Render(view)
         moved_still = testing.grab(view)
         err = testing.mean_error(moved, moved_still)
@@ -373,14 +425,14 @@ def check_interactive(t, label, view, rep, tf, method):
 def check_scene(t, seed, size, out, overrides=()):
     s = Scene(seed)
     view = testing.black_view(size)
-    rep, shown, tf, method = show(s, view)
+    rep, shown, tf, method, extra = show(s, view)
     method = override(s, rep, overrides) if overrides else method
     label = s.describe()
     failures = t.failures
     simple.Render(view)
     still = testing.grab(view)
-    ref = check_still(t, s, label, view, rep, shown, still, tf, method)
-    moved, moved_still = check_interactive(t, label, view, rep, tf, method)
+    ref = check_still(t, s, label, view, rep, shown, still, tf, method, extra)
+    moved, moved_still = check_interactive(t, label, view, rep, tf, method, extra)
     simple.Render(view)
     t.check(testing.mean_error(testing.grab(view), still) < 1e-6,
             "%s: a still frame after the interactive one is the still frame" % label)
@@ -391,6 +443,8 @@ def check_scene(t, seed, size, out, overrides=()):
             panels = [still] + ([ref] if ref is not None else []) + [moved, moved_still]
             testing.write_png(np.concatenate(panels, axis=1),
                               os.path.join(out, "seed_%d.png" % seed))
+    for other, _ in extra:
+        simple.Delete(other)
     simple.Delete(rep)
     simple.Delete(view)
     return label
