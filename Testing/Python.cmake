@@ -25,7 +25,7 @@ psi_add_python_test(accuracy_report TIMEOUT 600
 # The report on the user's scene, one case each: the scene left as found (also when the report
 # fails), arrays of any name, a cell array sharing its name with a point array, and a failure of
 # the reference renderer said in one line.
-foreach (case IN ITEMS settings names cells failure)
+foreach (case IN ITEMS settings names cells failure volumes)
   psi_add_python_test(report_scene.${case} SCRIPT report_scene ARGS ${case} TIMEOUT 300
     ENVIRONMENT "PSI_REFERENCE_RENDER=$<TARGET_FILE:psi_reference_render>")
 endforeach ()

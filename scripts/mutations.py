@@ -581,6 +581,12 @@ MUTATIONS = [
              "      acc = Over(acc, IntegrateReferenceMedia(overlap));",
              "      acc = Over(acc, IntegrateReferenceMedia({ overlap[0] }));",
              ["PsiCore.ReferenceMedia", "PsiRendering.InterpenetratingVolumes"]),
+    Mutation("report_measures_the_first_volume_only", "Python/psivolume/accuracy.py",
+             "            found.append((d, other))", "            pass",
+             ["PsiPython.report_scene.volumes"]),
+    Mutation("capture_ignores_the_display_position", "Python/psivolume/accuracy.py",
+             "        volume.SetPosition(list(self.rep.Position))", "",
+             ["PsiPython.report_scene.volumes"]),
     # --- The install tree (cmake/PsiVolumeInstall.cmake, docs/install.md).
     Mutation("installed_package_misses_its_plugin", "Python/psivolume/data.py",
              "        from . import installed_paths\n", "        from . import installed_path\n",

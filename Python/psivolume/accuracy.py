@@ -84,6 +84,7 @@ class Capture:
 
     def __init__(self, view, rep, src, work):
         self.view, self.rep, self.src, self.work = view, rep, src, work
+        self.others = []  # the captures of the view's other volumes (volume_captures)
         self.array = rep.ColorArrayName[1]
         self.association = rep.ColorArrayName[0] or data.association(src, self.array)
         # the display's own maps (a separate color map is not the one of the array's name)
@@ -186,16 +187,20 @@ class Capture:
             for row in rows:
                 f.write("%r %r %r %r %r\n" % row)
 
+    def child_volume(self):
+        """This volume as a child draws it: its mesh, array and maps, unit distance."""
+        return dict(mesh=self.mesh, array=MESH_ARRAY, association=self.association,
+                    unit=float(self.rep.ScalarOpacityUnitDistance),
+                    rgb_points=list(self.lut.RGBPoints),
+                    color_space=self.lut.GetProperty("ColorSpace").GetData(),
+                    vector_mode=self.lut.GetProperty("VectorMode").GetData(),
+                    vector_component=int(self.lut.VectorComponent),
+                    opacity_points=list(self.pwf.Points))
+
     def write_child_scene(self, path):
         v = self.view
-        scene = dict(mesh=self.mesh, array=MESH_ARRAY, association=self.association,
+        scene = dict(volumes=[c.child_volume() for c in [self] + self.others],
                      size=self.size, background=self.background(),
-                     unit=float(self.rep.ScalarOpacityUnitDistance),
-                     rgb_points=list(self.lut.RGBPoints),
-                     color_space=self.lut.GetProperty("ColorSpace").GetData(),
-                     vector_mode=self.lut.GetProperty("VectorMode").GetData(),
-                     vector_component=int(self.lut.VectorComponent),
-                     opacity_points=list(self.pwf.Points),
                      camera=dict(position=list(v.CameraPosition),
                                  focal=list(v.CameraFocalPoint), up=list(v.CameraViewUp),
                                  angle=float(v.CameraViewAngle),
@@ -203,6 +208,32 @@ class Capture:
                                  scale=float(v.CameraParallelScale)))
         with open(path, "w") as f:
             json.dump(scene, f)
+
+
+def volume_displays(view, rep, src):
+    """`rep` (of `src`) first, then every other visible display of `view` drawn as a volume ('Psi
+    Volume' or 'Volume'): [(display, its source)]. The report measures the whole image, all of
+    them."""
+    found = [(rep, src)]
+    for other in simple.GetSources().values():
+        d = servermanager.GetRepresentation(other, view)
+        if d is not None and d != rep and d.Visibility and \
+                d.GetProperty("Representation") is not None and \
+                d.Representation in ("Psi Volume", "Volume"):
+            found.append((d, other))
+    return found
+
+
+def volume_captures(view, displays, work):
+    """The captures of `displays` ([(display, source)], volume_displays), each in a folder of its
+    own under `work`: the first, with the others as its `others`."""
+    caps = []
+    for k, (d, src) in enumerate(displays):
+        folder = os.path.join(work, "volume_%d" % k) if k else work
+        os.makedirs(folder, exist_ok=True)
+        caps.append(Capture(view, d, src, folder))
+    caps[0].others = caps[1:]
+    return caps[0]
 
 
 def single_array(grid, array, association):
@@ -258,15 +289,15 @@ def run_reference_renderer(argv):
                                                    lines[-1] if lines else "no message"))
 
 
-def reference_image(cap, exe=None, runs=2, others=()):
+def reference_image(cap, exe=None, runs=2, others=None):
     """The reference image (float RGB 0..255, rows from the bottom) and its seconds, rendered by
     the reference renderer `exe` (default: find_reference_renderer()) `runs` times: the error
     between the runs is the reference's own row (0 when deterministic). `others`: the captures
     of the view's other volumes, drawn with `cap`'s as media that may share space (each its own
-    mesh and transfer function; PsiReferenceMedia.h)."""
+    mesh and transfer function; PsiReferenceMedia.h; default: cap.others)."""
     exe = find_reference_renderer(exe)
     volumes = []
-    for c in [cap] + list(others):
+    for c in [cap] + list(cap.others if others is None else others):
         scene = os.path.join(c.work, "reference.txt")
         c.write_reference_scene(scene)
         volumes += [c.mesh, scene]
@@ -293,9 +324,10 @@ def psi_contenders(cap, methods, back_to_front=False):
                                ", back to front" if own and not termination else "")
 
             def prepare(m=m, adaptive=adaptive, termination=termination):
-                data.set_mapper(cap.rep, "Psi Volume|" + m)
-                cap.rep.AdaptiveSampling = adaptive
-                cap.rep.EarlyRayTermination = termination
+                for c in [cap] + cap.others:  # the first one's settings draw them all
+                    data.set_mapper(c.rep, "Psi Volume|" + m)
+                    c.rep.AdaptiveSampling = adaptive
+                    c.rep.EarlyRayTermination = termination
 
             prepare()
             simple.Render(cap.view)
@@ -312,10 +344,11 @@ def interactive_contender(cap, method):
     own = int(cap.rep.EarlyRayTermination)
 
     def prepare():
-        data.set_mapper(cap.rep, "Psi Volume|" + method)
-        cap.rep.AdaptiveSampling = "Off"
-        cap.rep.EarlyRayTermination = own
-        cap.rep.InteractionMode = "Volume LOD"
+        for c in [cap] + cap.others:
+            data.set_mapper(c.rep, "Psi Volume|" + method)
+            c.rep.AdaptiveSampling = "Off"
+            c.rep.EarlyRayTermination = own
+            c.rep.InteractionMode = "Volume LOD"
 
     prepare()
     simple.Render(cap.view)
@@ -393,10 +426,12 @@ def report(view=None, rep=None, src=None, out_dir="psi_accuracy", frames=3,
     src = src or simple.GetActiveSource()
     rep = rep or simple.GetDisplayProperties(src, view)
     os.makedirs(out_dir, exist_ok=True)
-    with restore.scene(view, rep), tempfile.TemporaryDirectory(prefix="psi_accuracy_") as work:
+    displays = volume_displays(view, rep, src)
+    with restore.scene(view, *[d for d, _ in displays]), \
+            tempfile.TemporaryDirectory(prefix="psi_accuracy_") as work:
         simple.Render(view)
         step(0.0, "the mesh and the scene")
-        cap = Capture(view, rep, src, work)
+        cap = volume_captures(view, displays, work)
         plugin = data.find_plugin(plugin)
         cap.plugin, cap.pvpython = plugin, pvpython
         cap.reference_renderer = find_reference_renderer(reference_renderer, plugin)
@@ -422,8 +457,9 @@ def measure(cap, step, frames, paraview_mappers, paraview_timeout, budget, resam
     goes: (rows with their images, the reference image, the timing result, the method of the
     interactive row)."""
     rep, view = cap.rep, cap.view
-    if rep.Representation != "Psi Volume":
-        rep.SetRepresentationType("Psi Volume")
+    for c in [cap] + cap.others:
+        if c.rep.Representation != "Psi Volume":
+            c.rep.SetRepresentationType("Psi Volume")
     simple.Render(view)
     step(0.05, "the exact reference")
     refs, ref_seconds = reference_image(cap, cap.reference_renderer)
@@ -458,6 +494,29 @@ def measure(cap, step, frames, paraview_mappers, paraview_timeout, budget, resam
     return rows, refs[0], timed, method
 
 
+def child_volume(view, v, args):
+    """One volume of a child's scene (Capture.child_volume) shown in `view` with `args`' mapper,
+    with color and opacity maps of its own (every mesh's array has the same name)."""
+    reader = simple.XMLUnstructuredGridReader(FileName=[v["mesh"]])
+    d = simple.Show(reader, view)
+    simple.ColorBy(d, (v["association"], v["array"]))
+    d.UseSeparateColorMap = 1
+    lut = simple.GetColorTransferFunction(v["array"], d, separate=True)
+    pwf = simple.GetOpacityTransferFunction(v["array"], d, separate=True)
+    d.LookupTable, d.ScalarOpacityFunction = lut, pwf
+    lut.AutomaticRescaleRangeMode = "Never"
+    lut.RGBPoints = v["rgb_points"]
+    lut.ColorSpace = v["color_space"]
+    lut.VectorMode = v["vector_mode"]
+    lut.VectorComponent = v["vector_component"]
+    pwf.Points = v["opacity_points"]
+    data.set_mapper(d, args.child_mapper)
+    if args.child_dims:
+        d.SamplingDimensions = [args.child_dims] * 3
+    d.ScalarOpacityUnitDistance = v["unit"]
+    return d
+
+
 def child_main(args):
     """One mapper on the captured scene (one of ParaView's, or 'Psi Volume|<method>'): saves its
     image as .npy, then draws the timing rounds it is asked for (timing.serve_rounds)."""
@@ -465,26 +524,12 @@ def child_main(args):
         s = json.load(f)
     if args.child_mapper.startswith("Psi Volume"):
         data.load_plugin(globals(), args.plugin, args.build_dir)
-    reader = simple.XMLUnstructuredGridReader(FileName=[s["mesh"]])
     view = simple.CreateRenderView()
     view.ViewSize = s["size"]
     view.OrientationAxesVisibility = 0
     view.UseColorPaletteForBackground = 0
     view.Background = s["background"]
-    d = simple.Show(reader, view)
-    simple.ColorBy(d, (s["association"], s["array"]))
-    lut = simple.GetColorTransferFunction(s["array"])
-    pwf = simple.GetOpacityTransferFunction(s["array"])
-    lut.AutomaticRescaleRangeMode = "Never"
-    lut.RGBPoints = s["rgb_points"]
-    lut.ColorSpace = s["color_space"]
-    lut.VectorMode = s["vector_mode"]
-    lut.VectorComponent = s["vector_component"]
-    pwf.Points = s["opacity_points"]
-    data.set_mapper(d, args.child_mapper)
-    if args.child_dims:
-        d.SamplingDimensions = [args.child_dims] * 3
-    d.ScalarOpacityUnitDistance = s["unit"]
+    displays = [child_volume(view, v, args) for v in s["volumes"]]
     c = s["camera"]
     view.CameraPosition, view.CameraFocalPoint, view.CameraViewUp = (
         c["position"], c["focal"], c["up"])
@@ -494,7 +539,7 @@ def child_main(args):
     # the first frame, apart: 'Resample To Image' resamples the mesh in it
     print(FIRST_PREFIX + repr(timing.frame(view)[0]), flush=True)
     np.save(args.child_out, grab(view))
-    timing.serve_rounds(view, d)
+    timing.serve_rounds(view, displays[0])
     process.exit_now(0)
 
 

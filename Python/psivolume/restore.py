@@ -3,8 +3,8 @@ the accuracy report switches the display to 'Psi Volume', sets its integration m
 sampling and interaction mode for each image, turns the camera between timed frames and makes a
 merging filter the active source.
 
-    with restore.scene(view, rep):
-        ...   # anything of rep, its color and opacity maps, the view, its camera
+    with restore.scene(view, rep, ...):
+        ...   # anything of each rep, its color and opacity maps, the view, its camera
 
 Every setting of those proxies (each property but the information-only ones) is put back where
 it differs, the camera with the view's properties (ParaView keeps them in step with it)."""
@@ -39,18 +39,22 @@ def put_back(proxy, saved):
     proxy.UpdateVTKObjects()
 
 
-def proxies(view, rep):
-    """The display, its color and opacity maps and the view (what the display lacks left out)."""
-    maps = [rep.GetPropertyValue(n) for n in ("LookupTable", "ScalarOpacityFunction")
-            if rep.GetProperty(n) is not None]
-    return [p for p in [rep] + maps + [view] if p is not None]
+def proxies(view, reps):
+    """The displays, their color and opacity maps and the view (what a display lacks left out),
+    each once."""
+    found = []
+    for rep in reps:
+        maps = [rep.GetPropertyValue(n) for n in ("LookupTable", "ScalarOpacityFunction")
+                if rep.GetProperty(n) is not None]
+        found += [p for p in [rep] + maps if p is not None and p not in found]
+    return found + [view]
 
 
 @contextlib.contextmanager
-def scene(view, rep):
-    """The settings of `rep`, its maps and `view` (its camera too) and the active source put back
-    when the block ends, however it ends; the view rendered as it was."""
-    saved = [(p, settings(p)) for p in proxies(view, rep)]
+def scene(view, *reps):
+    """The settings of each of `reps`, their maps and `view` (its camera too) and the active
+    source put back when the block ends, however it ends; the view rendered as it was."""
+    saved = [(p, settings(p)) for p in proxies(view, reps)]
     active = simple.GetActiveSource()
     try:
         yield

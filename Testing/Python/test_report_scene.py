@@ -12,6 +12,11 @@
             close to it; the point array's reference is far from it)
   failure   a failure of the exact reference renderer raises one line that names it and gives
             its reason (the last line it wrote to stderr)
+  volumes   a view with two volumes (the second another array with its own color map, on
+            'Volume', placed by the display's Position where it shares no space with the first
+            but overlaps it on screen): the report measures the whole image ('Psi Volume' draws
+            both intermixed, close to the reference of both; ParaView's mapper draws both, the
+            reference's footprint); both displays left as they were
 
     pvpython --force-offscreen-rendering test_report_scene.py CASE"""
 import os
@@ -322,7 +327,47 @@ def case_failure(work):
                    "a renderer that is not there")
 
 
-CASES = dict(settings=case_settings, names=case_names, cells=case_cells, failure=case_failure)
+def case_volumes(work):
+    src, array = data.wavelet(3)
+    view, rep = user_scene(src, array, size=96)
+    other = simple.Calculator(Input=src, ResultArrayName="other", Function="400-%s" % array)
+    second = data.show_volume(other, "other", view, representation="Volume")
+    testing.apply_preset(simple.GetColorTransferFunction("other"), "Viridis (matplotlib)",
+                         "Viridis")
+    second.Position = [4.0, 2.5, 7.0]  # apart in depth, overlapping the first on screen
+    view.ResetCamera()
+    simple.SetActiveSource(src)
+    simple.Render(view)
+    alone = reference_of(view, rep, src, work)  # the first volume's alone
+    ignored = changed_by_rendering(view, second)
+    before = state(view, second)
+    rows = []
+    try:
+        rows = accuracy.report(view, rep, src, os.path.join(work, "volumes"),
+                               **dict(FAST, paraview_mappers=["Projected tetra"]))
+    except Exception as e:  # noqa: BLE001
+        checks.check(False, "two volumes: the report runs: %s: %s" % (type(e).__name__, e))
+    check_same(before, state(view, second), ignored, "two volumes: the second display")
+    checks.check(second.Representation == "Volume" and list(second.Position) == [4.0, 2.5, 7.0],
+                 "two volumes: the second display on 'Volume' at its place again")
+    mean, mx = row_errors(rows, "Partial Pre-Integration")
+    checks.check(mean < 1, "two volumes: 'Psi Volume' draws both, close to the reference of "
+                 "both (mean %.3f, max %.1f)" % (mean, mx))
+    displays = accuracy.volume_displays(view, rep, src)
+    cap = accuracy.volume_captures(view, displays, tempfile.mkdtemp(dir=work))
+    both = accuracy.reference_image(cap, REFERENCE, runs=1)[0][0]
+    bg = view.GetRenderer().GetBackground()
+    checks.check(len(displays) == 2 and testing.covered(both, bg) > 1.3 * testing.covered(alone, bg),
+                 "two volumes: the reference draws both (%d displays; %d pixels, the first alone "
+                 "%d)" % (len(displays), testing.covered(both, bg), testing.covered(alone, bg)))
+    pv = {r["name"]: r for r in rows}.get("ParaView Projected tetra", {})
+    checks.check(pv.get("mean", float("nan")) < 10, "two volumes: ParaView's mapper drew both "
+                 "(mean %.2f from the reference; %s)" % (pv.get("mean", float("nan")),
+                                                          pv.get("note") or "no note"))
+
+
+CASES = dict(settings=case_settings, names=case_names, cells=case_cells, failure=case_failure,
+             volumes=case_volumes)
 
 if __name__ == "__main__":
     data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
