@@ -17,6 +17,10 @@ struct FrameStats
   double LastRenderSeconds = 0;     ///< CPU seconds of the frame's Render calls (largest)
   double LastSortSeconds = 0;       ///< of the visibility sort (largest)
   double LastPreIntegrationSeconds = 0; ///< of the last full pre-integration rebuild (largest)
+  /// Several volumes intermixed: how many were drawn in one pass with this one (0: drawn alone;
+  /// largest), and that combined draw's tetrahedra (summed).
+  int64_t IntermixedVolumes = 0;
+  int64_t IntermixedTetrahedra = 0;
 
   /// Combines another process's frame: counts add up, the slowest process sets the times.
   void Add(const FrameStats& o)
@@ -28,6 +32,8 @@ struct FrameStats
     this->LastSortSeconds = std::max(this->LastSortSeconds, o.LastSortSeconds);
     this->LastPreIntegrationSeconds =
       std::max(this->LastPreIntegrationSeconds, o.LastPreIntegrationSeconds);
+    this->IntermixedVolumes = std::max(this->IntermixedVolumes, o.IntermixedVolumes);
+    this->IntermixedTetrahedra += o.IntermixedTetrahedra;
   }
 };
 

@@ -198,6 +198,12 @@ QString pqPsiFrameStatsWidget::formatReadout(const Readout& stats)
   {
     text += tr(", %1 sort cycles").arg(count(stats.Stats.LastSortCycles));
   }
+  if (stats.Stats.IntermixedVolumes > 1) // the times are the combined draw's
+  {
+    text += tr("; drawn intermixed with %1 other volumes (%2 tetrahedra in all)")
+              .arg(stats.Stats.IntermixedVolumes - 1)
+              .arg(count(stats.Stats.IntermixedTetrahedra));
+  }
   return text;
 }
 

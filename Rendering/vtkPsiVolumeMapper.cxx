@@ -161,6 +161,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   // (also after frames of several volumes intermixed, whose read-outs were the combined draw's)
   this->Stats.NumberOfTetrahedra = static_cast<vtkIdType>(I.Mesh.GetMesh().NumberOfTets());
+  this->Stats.IntermixedVolumes = this->Stats.IntermixedTetrahedra = 0;
   const PsiFrameCamera cam = PsiFrameCamera::FromRenderer(ren, vol, I.Mesh.GetMesh().Shift);
   const PsiTableSources sources = this->UpdateTransferFunction(renWin, vol);
   const PsiFramePlan plan = PlanFrame(this->Settings, this->SceneFacts(ren, vol, cam));

@@ -154,6 +154,10 @@ public:
   double GetLastRenderSeconds() const { return this->Stats.LastRenderSeconds; }
   /// The Render calls that made the last frame (1, or its depth-peeling stages).
   int GetLastFrameCalls() const { return this->Frame.Calls; }
+  /// Several volumes intermixed: the volumes drawn in one pass with this one (0: drawn alone),
+  /// and that draw's tetrahedra (the times above are that draw's too).
+  vtkIdType GetNumberOfIntermixedVolumes() const { return this->Stats.IntermixedVolumes; }
+  vtkIdType GetNumberOfIntermixedTetrahedra() const { return this->Stats.IntermixedTetrahedra; }
   /// Seconds of the last still (not interactive, psi::IsInteractiveRender) frame: what 'Auto'
   /// interaction weighs against the budget (psi::UsesVolumeLOD).
   vtkGetMacro(LastStillSeconds, double);

@@ -206,6 +206,8 @@ bool vtkPsiVolumeMapper::RenderIntermixed(vtkRenderer* ren, vtkVolume* vol)
   this->LastUsedOpaqueClipping = draw.LastUsedOpaqueClipping;
   this->LastFeatureDefines = draw.LastFeatureDefines;
   this->LastUsedIsosurfaceMethod = draw.LastUsedIsosurfaceMethod;
+  this->Stats.IntermixedVolumes = static_cast<int64_t>(drawn.size());
+  this->Stats.IntermixedTetrahedra = draw.Stats.NumberOfTetrahedra;
   this->CountOwnCells();
   return true;
 }

@@ -39,7 +39,9 @@ void vtkPsiFrameStatsInformation::CopyToStream(vtkClientServerStream* stream)
   *stream << vtkClientServerStream::Reply << static_cast<long long>(this->Stats.NumberOfTetrahedra)
           << static_cast<long long>(this->Stats.NumberOfSkippedCells)
           << static_cast<long long>(this->Stats.LastSortCycles) << this->Stats.LastRenderSeconds
-          << this->Stats.LastSortSeconds << this->Stats.LastPreIntegrationSeconds << vtkClientServerStream::End;
+          << this->Stats.LastSortSeconds << this->Stats.LastPreIntegrationSeconds
+          << static_cast<long long>(this->Stats.IntermixedVolumes)
+          << static_cast<long long>(this->Stats.IntermixedTetrahedra) << vtkClientServerStream::End;
 }
 
 void vtkPsiFrameStatsInformation::CopyFromStream(const vtkClientServerStream* stream)
@@ -55,6 +57,11 @@ void vtkPsiFrameStatsInformation::CopyFromStream(const vtkClientServerStream* st
   stream->GetArgument(0, 3, &this->Stats.LastRenderSeconds);
   stream->GetArgument(0, 4, &this->Stats.LastSortSeconds);
   stream->GetArgument(0, 5, &this->Stats.LastPreIntegrationSeconds);
+  long long intermixed[2] = { 0, 0 };
+  stream->GetArgument(0, 6, &intermixed[0]);
+  stream->GetArgument(0, 7, &intermixed[1]);
+  this->Stats.IntermixedVolumes = intermixed[0];
+  this->Stats.IntermixedTetrahedra = intermixed[1];
 }
 
 void vtkPsiFrameStatsInformation::PrintSelf(ostream& os, vtkIndent indent)
@@ -66,4 +73,6 @@ void vtkPsiFrameStatsInformation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastRenderSeconds: " << this->Stats.LastRenderSeconds << "\n";
   os << indent << "LastSortSeconds: " << this->Stats.LastSortSeconds << "\n";
   os << indent << "LastPreIntegrationSeconds: " << this->Stats.LastPreIntegrationSeconds << "\n";
+  os << indent << "IntermixedVolumes: " << this->Stats.IntermixedVolumes << "\n";
+  os << indent << "IntermixedTetrahedra: " << this->Stats.IntermixedTetrahedra << "\n";
 }

@@ -202,6 +202,16 @@ vtkIdType vtkPsiVolumeRepresentation::GetLastSortCycles()
   return this->PsiMapper->GetLastSortCycles();
 }
 
+vtkIdType vtkPsiVolumeRepresentation::GetNumberOfIntermixedVolumes()
+{
+  return this->PsiMapper->GetNumberOfIntermixedVolumes();
+}
+
+vtkIdType vtkPsiVolumeRepresentation::GetNumberOfIntermixedTetrahedra()
+{
+  return this->PsiMapper->GetNumberOfIntermixedTetrahedra();
+}
+
 vtkIdType vtkPsiVolumeRepresentation::GetNumberOfTetrahedra()
 {
   return this->PsiMapper->GetNumberOfTetrahedra();

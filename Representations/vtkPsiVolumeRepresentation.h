@@ -96,6 +96,8 @@ public:
   double GetLastSortSeconds();
   double GetLastPreIntegrationSeconds();
   vtkIdType GetLastSortCycles();
+  vtkIdType GetNumberOfIntermixedVolumes();
+  vtkIdType GetNumberOfIntermixedTetrahedra();
 #ifndef __VTK_WRAP__
   /// All of the above at once (vtkPsiFrameStatsInformation gathers it over the processes).
   psi::FrameStats GetFrameStats() const;

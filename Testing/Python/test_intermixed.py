@@ -76,11 +76,26 @@ t.check(largest(mixed[0], mixed[1]) <= 1.0 and largest(mixed[0], psi_first) > 40
         "by %.0f/255 at most, and its own map shows (%.0f/255 from one map)"
         % (largest(mixed[0], mixed[1]), largest(mixed[0], psi_first)))
 
-# --- hiding or deleting one gives the other alone
+def readouts(display):
+    display.UpdatePropertyInformation()
+    return [display.GetProperty(name).GetElement(0) for name in (
+        "NumberOfTetrahedra", "NumberOfIntermixedVolumes", "NumberOfIntermixedTetrahedra")]
+
+
+# --- the read-outs: each display its own tetrahedra, and the combined draw's
 view, a, b, displays = scene(0)
+own_a, own_b = readouts(displays[a]), readouts(displays[b])
+t.check(own_a[1:] == own_b[1:] == [2, own_a[0] + own_b[0]] and own_a[0] > 0 and own_b[0] > 0,
+        "the read-outs: each display its own tetrahedra (%d, %d), both drawn intermixed with the "
+        "other (%d, %d volumes; %d, %d tetrahedra in all)" % (
+            own_a[0], own_b[0], own_a[1], own_b[1], own_a[2], own_b[2]))
+
+# --- hiding or deleting one gives the other alone
 simple.Hide(b, view)
 simple.Render(view)
 hidden = testing.grab(view)
+t.check(readouts(displays[a])[1:] == [0, 0],
+        "one display hidden: the other drawn alone (read-outs %s)" % readouts(displays[a]))
 alone_view, alone_a, _, alone_displays = scene(0)
 simple.Delete(alone_displays[[s for s in alone_displays if s is not alone_a][0]])
 simple.Render(alone_view)

@@ -107,7 +107,8 @@ d.ScalarOpacityUnitDistance = 3.0
 # Read-outs.
 d.UpdatePropertyInformation()
 for name in ("NumberOfTetrahedra", "NumberOfSkippedCells", "LastRenderSeconds",
-             "LastSortSeconds", "LastPreIntegrationSeconds", "LastSortCycles"):
+             "LastSortSeconds", "LastPreIntegrationSeconds", "LastSortCycles",
+             "NumberOfIntermixedVolumes", "NumberOfIntermixedTetrahedra"):
     p = d.GetProperty(name)
     t.check(p is not None and p.GetNumberOfElements() == 1, "read-out %s is available" % name)
 t.check(d.GetProperty("NumberOfTetrahedra").GetElement(0) == 5 * 16 ** 3,

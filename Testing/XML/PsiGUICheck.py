@@ -155,9 +155,11 @@ def check_report(source):
 # --- the panel's read-out of the last frame against the representation's own properties ------
 #
 # The read-out (Qt/pqPsiFrameStatsWidget) shows "last frame: X ms (sort Y ms), N tetrahedra,
-# M cells skipped[, K sort cycles]": X and Y are LastRenderSeconds and LastSortSeconds in
-# milliseconds, 2 decimals below 10 ms and 1 from there; N, M and K are NumberOfTetrahedra,
-# NumberOfSkippedCells and LastSortCycles with thousands separators, K only when above 0.
+# M cells skipped[, K sort cycles][; drawn intermixed with V other volumes (T tetrahedra in
+# all)]": X and Y are LastRenderSeconds and LastSortSeconds in milliseconds, 2 decimals below
+# 10 ms and 1 from there; N, M, K and T are NumberOfTetrahedra, NumberOfSkippedCells,
+# LastSortCycles and NumberOfIntermixedTetrahedra with thousands separators, K and T only when
+# above 0.
 # QtTesting's pqcheck compares a widget's property with a string fixed in the script, and the
 # client's Python has no Qt bindings, so the label's text is read through the plugin's C function
 # pqPsiFrameStatsReadouts (ctypes) and compared here, in the same Python command as the
@@ -165,7 +167,8 @@ def check_report(source):
 
 _READOUT = re.compile(
     r"^last frame: ([0-9]+\.[0-9]+) ms \(sort ([0-9]+\.[0-9]+) ms\), ([0-9,]+) tetrahedra, "
-    r"([0-9,]+) cells skipped(?:, ([0-9,]+) sort cycles)?$")
+    r"([0-9,]+) cells skipped(?:, ([0-9,]+) sort cycles)?"
+    r"(?:; drawn intermixed with ([0-9,]+) other volumes \(([0-9,]+) tetrahedra in all\))?$")
 # (shown in the read-out's n-th group, information property, how the processes' values combine)
 _SHOWN = (
     (1, "LastRenderSeconds", "max"),
@@ -173,6 +176,7 @@ _SHOWN = (
     (3, "NumberOfTetrahedra", "sum"),
     (4, "NumberOfSkippedCells", "sum"),
     (5, "LastSortCycles", "sum"),
+    (7, "NumberOfIntermixedTetrahedra", "sum"),
 )
 
 
@@ -307,7 +311,7 @@ def check_readout(stage):
             shown = match.group(group)
             if how == "max":
                 problem = _compare_milliseconds(shown, values[name])
-            elif shown is None:  # sort cycles: shown only when some were broken
+            elif shown is None:  # sort cycles, intermixed: shown only when above 0
                 problem = "" if values[name] == 0 else "%s %d not shown" % (name, values[name])
             else:
                 count = int(shown.replace(",", ""))
