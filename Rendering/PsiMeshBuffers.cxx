@@ -51,7 +51,7 @@ std::array<const void*, 3> GeometryOf(vtkUnstructuredGridBase* input)
 PsiMeshBuffers::Change PsiMeshBuffers::NeedsUpdate(
   vtkUnstructuredGridBase* input, vtkDataArray* scalars, const std::string& arrayKey) const
 {
-  if (!this->OnGPU || GeometryOf(input) != this->Geometry || arrayKey != this->ArrayKey ||
+  if (!this->Gathered || GeometryOf(input) != this->Geometry || arrayKey != this->ArrayKey ||
     GeometryTimeOf(input) != this->GeometryTime)
   {
     return Change::Mesh;
@@ -59,17 +59,24 @@ PsiMeshBuffers::Change PsiMeshBuffers::NeedsUpdate(
   return scalars->GetMTime() != this->ScalarsTime ? Change::Scalars : Change::None;
 }
 
-bool PsiMeshBuffers::UpdateScalars(
-  vtkOpenGLRenderWindow* renWin, vtkDataArray* scalars, psi::ScalarComponent component)
+bool PsiMeshBuffers::UpdateScalars(vtkDataArray* scalars, psi::ScalarComponent component)
 {
   if (!psi::UpdateTetMeshScalars(this->Mesh, scalars, component))
   {
     return false;
   }
   this->ScalarsTime = scalars->GetMTime();
-  this->UploadPoints(renWin);
-  this->GradientsOnGPU = false;
+  this->Changed(false);
   return true;
+}
+
+// What a new mesh (`geometry`) or new scalars make stale.
+void PsiMeshBuffers::Changed(bool geometry)
+{
+  this->Version += geometry;
+  ++this->ScalarsVersion;
+  this->PointsOnGPU = false;
+  this->GradientsOnGPU = false;
 }
 
 void PsiMeshBuffers::UploadPoints(vtkOpenGLRenderWindow* renWin)
@@ -90,31 +97,34 @@ void PsiMeshBuffers::UploadPoints(vtkOpenGLRenderWindow* renWin)
   }
 }
 
-bool PsiMeshBuffers::Update(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBase* input,
-  vtkDataArray* scalars, bool cellScalars, psi::ScalarComponent component,
-  const std::string& arrayKey, long long maxTexels, std::string& error)
+void PsiMeshBuffers::Update(vtkUnstructuredGridBase* input, vtkDataArray* scalars,
+  bool cellScalars, psi::ScalarComponent component, const std::string& arrayKey)
 {
   this->Mesh = psi::GatherTetMesh(input, scalars, cellScalars, component);
   this->GeometryTime = GeometryTimeOf(input);
   this->ScalarsTime = scalars->GetMTime();
   this->Geometry = GeometryOf(input);
   this->ArrayKey = arrayKey;
-  return this->Upload(renWin, maxTexels, error);
+  this->Gathered = true;
+  this->Changed(true);
 }
 
-bool PsiMeshBuffers::UseMesh(vtkOpenGLRenderWindow* renWin, psi::TetMesh mesh,
-  const std::string& key, long long maxTexels, std::string& error)
+void PsiMeshBuffers::UseMesh(psi::TetMesh mesh, const std::string& key)
 {
   this->Mesh = std::move(mesh);
   this->GeometryTime = this->ScalarsTime = 0;
   this->Geometry = {};
   this->ArrayKey = key;
-  return this->Upload(renWin, maxTexels, error);
+  this->Gathered = false;
+  this->Changed(true);
 }
 
 bool PsiMeshBuffers::Upload(vtkOpenGLRenderWindow* renWin, long long maxTexels, std::string& error)
 {
-  ++this->Version;
+  if (this->PointsOnGPU)
+  {
+    return true;
+  }
   bool fits = true;
   // one texel per point in each texture buffer (points, opacity scalars, gradients)
   if (static_cast<long long>(this->Mesh.NumberOfPoints()) > maxTexels ||
@@ -129,13 +139,12 @@ bool PsiMeshBuffers::Upload(vtkOpenGLRenderWindow* renWin, long long maxTexels, 
     this->Mesh = psi::TetMesh();
     fits = false;
   }
-  if (!this->OnGPU)
+  if (!this->VAO)
   {
     glGenVertexArrays(1, &this->VAO);
   }
   this->UploadPoints(renWin); // the cells reach the GPU in visibility order (PsiVisibilityOrder)
-  this->OnGPU = true;
-  this->GradientsOnGPU = false;
+  this->PointsOnGPU = true;
   return fits;
 }
 
@@ -190,7 +199,7 @@ void PsiMeshBuffers::Deactivate()
 
 void PsiMeshBuffers::ReleaseGraphicsResources(vtkWindow* win)
 {
-  if (this->OnGPU)
+  if (this->VAO)
   {
     glDeleteVertexArrays(1, &this->VAO);
   }
@@ -202,6 +211,5 @@ void PsiMeshBuffers::ReleaseGraphicsResources(vtkWindow* win)
   this->GradientBuffer->ReleaseGraphicsResources();
   this->GradientTexture->ReleaseGraphicsResources(win);
   this->GradientsOnGPU = false;
-  this->OnGPU = false;
-  this->GeometryTime = this->ScalarsTime = 0;
+  this->PointsOnGPU = false; // uploaded again on the next draw; the gathered mesh stays
 }

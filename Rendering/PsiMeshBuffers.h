@@ -31,7 +31,7 @@ public:
   ~PsiMeshBuffers();
 
   /// What differs between `input` colored by `scalars` (`arrayKey` naming array, association and
-  /// mode) and what is uploaded: nothing, only the scalars (a new time step on the same points
+  /// mode) and what is gathered: nothing, only the scalars (a new time step on the same points
   /// and cells: Maximo et al. 2010 §4 render time-varying data "without extra burden"), or the
   /// mesh. Switching to another dataset counts as a new mesh, also when its MTime is older.
   enum class Change
@@ -42,20 +42,20 @@ public:
   };
   Change NeedsUpdate(vtkUnstructuredGridBase* input, vtkDataArray* scalars,
     const std::string& arrayKey) const;
-  /// Replaces the point scalars only and re-uploads the points (not the tetrahedra); false when
-  /// the mesh must be gathered again instead (see psi::UpdateTetMeshScalars).
-  bool UpdateScalars(
-    vtkOpenGLRenderWindow* renWin, vtkDataArray* scalars, psi::ScalarComponent component);
-  /// Gathers the mesh (psi::GatherTetMesh) and uploads it. Returns false, with `error` set, when
-  /// the mesh has more points than a texture buffer holds (`maxTexels`, PsiDriverLimits); the
-  /// mesh is then empty.
-  bool Update(vtkOpenGLRenderWindow* renWin, vtkUnstructuredGridBase* input,
-    vtkDataArray* scalars, bool cellScalars, psi::ScalarComponent component,
-    const std::string& arrayKey, long long maxTexels, std::string& error);
-  /// Uploads `mesh`, made elsewhere (several volumes intermixed: psi::IntermixMeshes), as Update
-  /// uploads a gathered one; `key` names it (GetKey).
-  bool UseMesh(vtkOpenGLRenderWindow* renWin, psi::TetMesh mesh, const std::string& key,
-    long long maxTexels, std::string& error);
+  /// Replaces the point scalars only (the points are uploaded again, not the tetrahedra); false
+  /// when the mesh must be gathered again instead (see psi::UpdateTetMeshScalars).
+  bool UpdateScalars(vtkDataArray* scalars, psi::ScalarComponent component);
+  /// Gathers the mesh (psi::GatherTetMesh). Gathered meshes reach the GPU in Upload: the
+  /// volumes of an intermixed frame are gathered, and only their combined mesh is uploaded.
+  void Update(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cellScalars,
+    psi::ScalarComponent component, const std::string& arrayKey);
+  /// Takes `mesh`, made elsewhere (several volumes intermixed: psi::IntermixMeshes), as Update
+  /// takes a gathered one; `key` names it (GetKey).
+  void UseMesh(psi::TetMesh mesh, const std::string& key);
+  /// Puts the mesh's points on the GPU when they changed since they were last put there (also
+  /// after ReleaseGraphicsResources). Returns false, with `error` set, when the mesh has more
+  /// points than a texture buffer holds (`maxTexels`, PsiDriverLimits); the mesh is then empty.
+  bool Upload(vtkOpenGLRenderWindow* renWin, long long maxTexels, std::string& error);
   /// The array key of the gathered mesh, or the key given with UseMesh.
   const std::string& GetKey() const { return this->ArrayKey; }
   /// Uploads the smoothed point gradients once per mesh.
@@ -69,15 +69,18 @@ public:
   const psi::TetMesh& GetMesh() const { return this->Mesh; }
   /// Bumped when points or cells change (not for new scalars): the visibility order compares it.
   int GetVersion() const { return this->Version; }
+  /// Bumped when the scalars change too (an intermixed frame's combined mesh compares it).
+  int GetScalarsVersion() const { return this->ScalarsVersion; }
 
 private:
   PsiMeshBuffers(const PsiMeshBuffers&) = delete;
   void operator=(const PsiMeshBuffers&) = delete;
   void UploadPoints(vtkOpenGLRenderWindow* renWin);
-  bool Upload(vtkOpenGLRenderWindow* renWin, long long maxTexels, std::string& error);
+  void Changed(bool geometry);
 
   psi::TetMesh Mesh;
   int Version = 0;
+  int ScalarsVersion = 0;
   vtkMTimeType GeometryTime = 0;
   vtkMTimeType ScalarsTime = 0;
   std::array<const void*, 3> Geometry{}; // the objects holding points and cells (GeometryOf)
@@ -91,7 +94,8 @@ private:
   bool GradientsOnGPU = false;
   bool GradientsActive = false;
   unsigned int VAO = 0;
-  bool OnGPU = false;
+  bool Gathered = false; ///< the mesh is Update's of the geometry and time stamps below
+  bool PointsOnGPU = false; ///< the mesh's points are uploaded
 };
 
 #endif

@@ -154,8 +154,11 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     I.Release(I.Context);
   }
   I.Context = renWin;
-  if (!(I.Given ? this->UpdateGivenMesh(renWin) : this->UpdateMesh(renWin, vol, input)) ||
-    I.Mesh.GetMesh().NumberOfTets() == 0)
+  if (I.Given)
+  {
+    this->UpdateGivenMesh();
+  }
+  if ((!I.Given && !this->UpdateMesh(vol, input)) || !this->UploadMesh(renWin))
   {
     return;
   }
@@ -323,8 +326,7 @@ void vtkPsiVolumeMapper::DrawImage(vtkOpenGLRenderWindow* renWin, vtkVolume* vol
 }
 
 // Gathers and uploads the mesh when the data or the array changed. False: nothing to draw.
-bool vtkPsiVolumeMapper::UpdateMesh(
-  vtkOpenGLRenderWindow* renWin, vtkVolume* vol, vtkUnstructuredGridBase* input)
+bool vtkPsiVolumeMapper::UpdateMesh(vtkVolume* vol, vtkUnstructuredGridBase* input)
 {
   Internals& I = *this->Impl;
   int cellFlag = 0;
@@ -348,18 +350,12 @@ bool vtkPsiVolumeMapper::UpdateMesh(
     std::to_string(component.Index) + "|" + std::to_string(component.Opacity);
   const PsiMeshBuffers::Change change = I.Mesh.NeedsUpdate(input, scalars, arrayKey);
   if (change == PsiMeshBuffers::Change::None ||
-    (change == PsiMeshBuffers::Change::Scalars &&
-      I.Mesh.UpdateScalars(renWin, scalars, component)))
+    (change == PsiMeshBuffers::Change::Scalars && I.Mesh.UpdateScalars(scalars, component)))
   {
     return true;
   }
   vtkVLogScopeF(this->LogVerbosity, "Psi Volume: mesh");
-  std::string error;
-  if (!I.Mesh.Update(renWin, input, scalars, cellFlag == 1, component, arrayKey,
-        I.Limits().MaxTextureBufferTexels, error))
-  {
-    vtkErrorMacro("Psi Volume: " << error);
-  }
+  I.Mesh.Update(input, scalars, cellFlag == 1, component, arrayKey);
   const psi::TetMesh& mesh = I.Mesh.GetMesh();
   this->Stats.NumberOfSkippedCells = mesh.NonTetCells + mesh.NonFiniteTets;
   this->Stats.NumberOfTetrahedra = static_cast<vtkIdType>(mesh.NumberOfTets());
@@ -369,6 +365,20 @@ bool vtkPsiVolumeMapper::UpdateMesh(
     vtkWarningMacro("Psi Volume " << skipped);
   }
   return true;
+}
+
+// The mesh on the GPU (when it changed since). False: nothing to draw (none, or more points than
+// the driver's texture buffers hold: said once, the mesh emptied).
+bool vtkPsiVolumeMapper::UploadMesh(vtkOpenGLRenderWindow* renWin)
+{
+  Internals& I = *this->Impl;
+  std::string error;
+  if (!I.Mesh.Upload(renWin, I.Limits().MaxTextureBufferTexels, error))
+  {
+    vtkErrorMacro("Psi Volume: " << error);
+    this->Stats.NumberOfTetrahedra = 0;
+  }
+  return I.Mesh.GetMesh().NumberOfTets() > 0;
 }
 
 // The projection program of this frame's projector for these features (each projector composes

@@ -231,10 +231,10 @@ private:
   void UpdateIsosurfaceList();
   // several volumes intermixed (vtkPsiVolumeMapperIntermixed.cxx)
   bool RenderIntermixed(vtkRenderer* ren, vtkVolume* vol);
-  bool UpdateGivenMesh(vtkOpenGLRenderWindow* renWin);
+  void UpdateGivenMesh();
   void CountOwnCells();
-  bool UpdateMesh(
-    vtkOpenGLRenderWindow* renWin, vtkVolume* vol, vtkUnstructuredGridBase* input);
+  bool UpdateMesh(vtkVolume* vol, vtkUnstructuredGridBase* input);
+  bool UploadMesh(vtkOpenGLRenderWindow* renWin);
   bool UpdateVisibilityOrder(
     vtkUnstructuredGridBase* input, const PsiFrameCamera& cam, bool frontToBack);
   // the frame plan (vtkPsiVolumeMapperFramePlan.cxx)

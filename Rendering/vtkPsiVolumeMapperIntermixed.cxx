@@ -130,7 +130,7 @@ bool vtkPsiVolumeMapper::RenderIntermixed(vtkRenderer* ren, vtkVolume* vol)
       M.Release(M.Context);
     }
     M.Context = renWin;
-    if (!m.Mapper->UpdateMesh(renWin, m.Volume, m.Mapper->GetInput()) ||
+    if (!m.Mapper->UpdateMesh(m.Volume, m.Mapper->GetInput()) ||
       M.Mesh.GetMesh().NumberOfTets() == 0)
     {
       continue;
@@ -141,7 +141,7 @@ bool vtkPsiVolumeMapper::RenderIntermixed(vtkRenderer* ren, vtkVolume* vol)
     v.ModelToWorld = RowMajor(m.Volume);
     volumes.push_back(v);
     drawn.push_back(m);
-    key << m.Mapper << ':' << M.Mesh.GetVersion();
+    key << m.Mapper << ':' << M.Mesh.GetScalarsVersion();
     for (double e : v.ModelToWorld)
     {
       key << ',' << e;
@@ -221,19 +221,12 @@ void vtkPsiVolumeMapper::CountOwnCells()
   this->Stats.NumberOfSkippedCells = mesh.NonTetCells + mesh.NonFiniteTets;
 }
 
-// The scene's mesh on the GPU, uploaded when it was made again. False: nothing to draw.
-bool vtkPsiVolumeMapper::UpdateGivenMesh(vtkOpenGLRenderWindow* renWin)
+// The scene's mesh, taken when it was made again (uploaded by UploadMesh).
+void vtkPsiVolumeMapper::UpdateGivenMesh()
 {
   Internals& I = *this->Impl;
   if (I.Mesh.GetKey() != I.Given->Key)
   {
-    std::string error;
-    if (!I.Mesh.UseMesh(renWin, I.Given->Mesh, I.Given->Key, I.Limits().MaxTextureBufferTexels,
-          error))
-    {
-      vtkErrorMacro("Psi Volume: " << error);
-    }
-    this->Stats.NumberOfTetrahedra = static_cast<vtkIdType>(I.Mesh.GetMesh().NumberOfTets());
+    I.Mesh.UseMesh(I.Given->Mesh, I.Given->Key);
   }
-  return I.Mesh.GetMesh().NumberOfTets() > 0;
 }

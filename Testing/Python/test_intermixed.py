@@ -25,7 +25,7 @@ def set_camera(view):
     view.CameraViewAngle = 30.0
 
 
-def scene(order, representation="Psi Volume", other_array=False):
+def scene(order, representation="Psi Volume", other_array=False, function="400-%s"):
     """A new session's view of the two Wavelets shown in `order` (0: the first first)."""
     simple.ResetSession()
     view = testing.black_view(SIZE)
@@ -34,7 +34,7 @@ def scene(order, representation="Psi Volume", other_array=False):
     b.Transform.Translate = [8.0, 4.0, 12.0]
     arrays = {a: array, b: array}
     if other_array:
-        b = simple.Calculator(Input=b, ResultArrayName="other", Function="400-%s" % array)
+        b = simple.Calculator(Input=b, ResultArrayName="other", Function=function % array)
         arrays[b] = "other"
     displays = {}
     for src in ([a, b] if order == 0 else [b, a]):
@@ -81,6 +81,19 @@ def readouts(display):
     return [display.GetProperty(name).GetElement(0) for name in (
         "NumberOfTetrahedra", "NumberOfIntermixedVolumes", "NumberOfIntermixedTetrahedra")]
 
+
+# --- new values on the same mesh (a time step, an edited filter): the image of those values
+view, a, b, displays = scene(0, other_array=True)
+b.Function = "300-RTData+coordsX"
+b.UpdatePipeline()
+displays[b].RescaleTransferFunctionToDataRange(False, True)  # to the new range, as a new session
+simple.Render(view)
+changed = testing.grab(view)
+fresh = testing.grab(scene(0, other_array=True, function="300-%s+coordsX")[0])
+t.check(largest(changed, fresh) <= 1.0 and largest(changed, mixed[0]) > 10,
+        "new values of one volume on the same mesh: their image (%.0f/255 from a new session "
+        "showing them; %.0f/255 from the old values)"
+        % (largest(changed, fresh), largest(changed, mixed[0])))
 
 # --- the read-outs: each display its own tetrahedra, and the combined draw's
 view, a, b, displays = scene(0)
