@@ -44,13 +44,14 @@ endforeach ()
 # More than one draw call (5.1M tetrahedra, ~15-20 s here): run alone, it is the heaviest.
 set_tests_properties(PsiPython.bad_input.large PROPERTIES RUN_SERIAL ON)
 
-# MPI ordered compositing: 2 pvbatch ranks against a serial render, the still frame (mpi) and
-# the interactive level of detail (mpi_lod). Under the MPI watchdog (PSI_MPI_WATCHDOG_COMMAND,
+# MPI ordered compositing: 2 pvbatch ranks against a serial render, the still frame (mpi), the
+# interactive level of detail (mpi_lod) and two displays intermixed, in either show order
+# (mpi_intermixed). Under the MPI watchdog (PSI_MPI_WATCHDOG_COMMAND,
 # Testing/CMakeLists.txt): a hang ends with each rank's stacks, well before CTest's timeout.
 if (PVBATCH_EXECUTABLE AND MPIEXEC_EXECUTABLE)
   set(environment "PSI_PVBATCH=${PVBATCH_EXECUTABLE}" "OMPI_MCA_rmaps_base_oversubscribe=1"
     "PSI_DATA_DIR=${PSI_DATA_DIR}")
-  foreach (name IN ITEMS mpi mpi_lod)
+  foreach (name IN ITEMS mpi mpi_lod mpi_intermixed)
     set(command ${PSI_MPI_WATCHDOG_COMMAND} "${MPIEXEC_EXECUTABLE}" --allow-run-as-root -n 2
       "${PVBATCH_EXECUTABLE}" --force-offscreen-rendering
       "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_${name}.py")
@@ -67,7 +68,7 @@ if (PVBATCH_EXECUTABLE AND MPIEXEC_EXECUTABLE)
     endif ()
   endforeach ()
 else ()
-  message(STATUS "pvbatch or mpiexec not found: PsiPython.mpi and PsiPython.mpi_lod are not registered")
+  message(STATUS "pvbatch or mpiexec not found: PsiPython.mpi, .mpi_lod and .mpi_intermixed are not registered")
 endif ()
 
 # Client-server: a pvpython client renders through `mpiexec -n 2 pvserver` (remote rendering,

@@ -571,6 +571,11 @@ MUTATIONS = [
     Mutation("intermixed_iso_colors_of_the_first_map", "Rendering/vtkPsiVolumeMapper.cxx",
              "    style.ValueColors = I.Given ? &I.Given->IsoColors : nullptr;",
              "    style.ValueColors = nullptr;", ["PsiRendering.IntermixedVolumes"]),
+    # two volumes drawn one after the other, in the show order, instead of intermixed: on 2 ranks
+    # the image of one show order is not the serial one
+    Mutation("intermixed_only_from_three_volumes", "Rendering/vtkPsiVolumeMapperIntermixed.cxx",
+             "  if (members.size() < 2)", "  if (members.size() < 3)",
+             ["PsiPython.mpi_intermixed"]),
     Mutation("intermixed_iso_from_other_slots", "Rendering/vtkPsiVolumeMapperIntermixed.cxx",
              "      if (u >= 0 && u <= 1)", "      if (true)", ["PsiRendering.IntermixedVolumes"]),
     Mutation("intermixed_mesh_keeps_old_values", "Rendering/vtkPsiVolumeMapperIntermixed.cxx",
