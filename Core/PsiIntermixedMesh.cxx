@@ -124,6 +124,23 @@ TransferFunctionTable IntermixTables(const std::vector<TransferFunctionTable>& t
   return all; // Range and OpacityRange [0, 1]: slot scalars
 }
 
+TransferFunctionNodes IntermixNodes(const std::vector<TransferFunctionNodes>& nodes,
+  const std::vector<std::array<double, 2>>& ranges, int samples)
+{
+  TransferFunctionNodes all;
+  const int n = static_cast<int>(nodes.size());
+  for (int k = 0; k < n; ++k)
+  {
+    for (double s : nodes[k].Scalars)
+    {
+      all.Scalars.push_back(SlotScalar(k, n, samples, UnitScalar(ranges[k].data(), s)));
+    }
+    all.Rgba.insert(all.Rgba.end(), nodes[k].Rgba.begin(), nodes[k].Rgba.end());
+    all.MaxDeviation = std::max(all.MaxDeviation, nodes[k].MaxDeviation);
+  }
+  return all;
+}
+
 std::vector<float> IntermixOpacityPrefixes(const std::vector<std::vector<float>>& prefixes)
 {
   std::vector<float> all;

@@ -17,6 +17,7 @@
 #define PsiIntermixedMesh_h
 
 #include "PsiTetMesh.h"
+#include "PsiTransferFunctionNodes.h"
 #include "PsiTransferFunctionTable.h"
 #include "PsiVolumeCoreModule.h"
 
@@ -54,6 +55,14 @@ PSIVOLUMECORE_EXPORT TetMesh IntermixMeshes(
 /// the table of the intermixed mesh (domain [0, 1] in slot scalars).
 PSIVOLUMECORE_EXPORT TransferFunctionTable IntermixTables(
   const std::vector<TransferFunctionTable>& tables);
+
+/// Each volume's adaptive-sampling nodes (psi::SampleTransferFunctionNodes over `ranges[k]`,
+/// its own scalar range) as nodes of the slot scalars (SlotScalar with `samples`), one volume
+/// after the other: a segment never leaves its volume's slot, so it splits at that volume's
+/// nodes only, at the same fractions of its range as alone. MaxDeviation: the largest of theirs.
+PSIVOLUMECORE_EXPORT TransferFunctionNodes IntermixNodes(
+  const std::vector<TransferFunctionNodes>& nodes, const std::vector<std::array<double, 2>>& ranges,
+  int samples);
 
 /// Prefix counts of non-zero opacity (psi::OpacityPrefixCounts) of each volume's table, one
 /// after the other, each continuing the count of those before it.

@@ -12,6 +12,10 @@
 
 bool PsiAdaptiveNodes::NeedsUpdate(const PsiTableSources& in) const
 {
+  if (this->Given)
+  {
+    return false; // UseNodes' (several volumes intermixed), not the property's
+  }
   return in.Property->GetMTime() != this->Time || this->Range[0] != in.ScalarRange[0] ||
     this->Range[1] != in.ScalarRange[1] || in.Transfer->GetVersion() != this->TableVersion;
 }
@@ -36,6 +40,17 @@ void PsiAdaptiveNodes::Update(vtkOpenGLRenderWindow*, const PsiTableSources& in)
   this->Time = property->GetMTime();
   this->Range[0] = range[0];
   this->Range[1] = range[1];
+}
+
+void PsiAdaptiveNodes::UseNodes(
+  const psi::TransferFunctionNodes& nodes, double deviation, double tolerance)
+{
+  this->Nodes = nodes;
+  this->TableDeviation = deviation;
+  this->Faithful = nodes.MaxDeviation <= tolerance;
+  this->Range[0] = 0; // slot scalars: their own fractions
+  this->Range[1] = 1;
+  this->Given = true;
 }
 
 void PsiAdaptiveNodes::Activate(vtkShaderProgram* program)

@@ -20,6 +20,9 @@ public:
   /// Samples the nodes of the property over the scalar range (at most in.MaxNodes, refined to
   /// in.NodeTolerance) and measures the sampled table (in.Transfer) against them.
   void Update(vtkOpenGLRenderWindow* renWin, const PsiTableSources& in) override;
+  /// Takes `nodes` made elsewhere, over the scalars [0, 1] (several volumes intermixed:
+  /// psi::IntermixNodes), with their table's deviation; faithful within `tolerance`.
+  void UseNodes(const psi::TransferFunctionNodes& nodes, double deviation, double tolerance);
   /// Sets tfNodes, tfNodeValues and tfNodeCount.
   void Activate(vtkShaderProgram* program) override;
   void ReleaseGraphicsResources(vtkWindow*) override {}
@@ -38,6 +41,7 @@ private:
   vtkMTimeType Time = 0;
   double Range[2] = { 0, 0 };
   int TableVersion = -1;
+  bool Given = false; ///< the nodes are UseNodes', never sampled from a property
 };
 
 #endif

@@ -5,6 +5,7 @@
 #define PsiIntermixedScene_h
 
 #include "PsiTetMesh.h"
+#include "PsiTransferFunctionNodes.h"
 #include "PsiTransferFunctionTable.h"
 
 #include <array>
@@ -26,6 +27,10 @@ struct PsiIntermixedScene
   psi::TransferFunctionTable Table;
   std::vector<float> OpacityPrefix;
   bool ZeroOpacity = false;
+  /// Their adaptive-sampling nodes as one list (psi::IntermixNodes), each volume's within its
+  /// share of the node budget, and how far their tables miss them (the largest): 'Auto' weighs it.
+  psi::TransferFunctionNodes Nodes;
+  double TableDeviation = 0;
   /// Each isovalue (a slot scalar) with its color, its volume's color map at its own value: the
   /// draw's property knows one volume's map only.
   std::vector<std::pair<double, std::array<double, 3>>> IsoColors;

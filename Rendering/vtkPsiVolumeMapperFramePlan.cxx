@@ -49,11 +49,12 @@ PsiTableSources vtkPsiVolumeMapper::UpdateTransferFunction(
   in.LengthAxis = psi::MakePreIntegrationLengthAxis(mesh.MinEdgeLength, mesh.MaxEdgeLength);
   in.MaxNodes = psi::MaxAdaptiveNodes;
   in.NodeTolerance = psi::AdaptiveNodeTolerance;
-  if (I.Given) // several volumes intermixed: their tables as one (no adaptive nodes yet)
+  if (I.Given) // several volumes intermixed: their tables and nodes as one
   {
     in.Table = &I.Given->Table;
     in.OpacityPrefix = &I.Given->OpacityPrefix;
     in.ZeroOpacity = I.Given->ZeroOpacity;
+    I.AdaptiveNodes.UseNodes(I.Given->Nodes, I.Given->TableDeviation, in.NodeTolerance);
   }
   std::vector<PsiGpuTable*> first{ &I.Tables.Transfer };
   if (NeedsAdaptiveNodes(this->Settings) && !I.Given)
@@ -78,7 +79,7 @@ PsiSceneFacts vtkPsiVolumeMapper::SceneFacts(
   facts.DepthPeeled = I.Peeling.GetStage() > PsiDepthPeelingCalls::Plain;
   facts.SeparateOpacity = !I.Mesh.GetMesh().Opacity.empty();
   facts.ZeroOpacity = I.Tables.Transfer.HasZeroOpacity();
-  facts.NodesFaithful = !I.Given && I.AdaptiveNodes.IsFaithful();
+  facts.NodesFaithful = I.AdaptiveNodes.IsFaithful();
   facts.TableDeviation = I.AdaptiveNodes.GetTableDeviation();
   const double* b = vol->GetBounds(); // a ray's longest path through the volume, in world units
   facts.MaxRayOpacity = psi::MaxRayOpacity(I.Tables.Transfer.GetTable(),

@@ -10,7 +10,9 @@
 
 #include "PsiIntermixedFrames.h"
 #include "PsiIntermixedMesh.h"
+#include "PsiSettings.h"
 #include "PsiTransferFunctionAnalysis.h"
+#include "PsiTransferFunctionNodes.h"
 
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -19,6 +21,8 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
+#include <array>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -58,13 +62,18 @@ void IntermixIsosurfaces(const std::vector<PsiIntermixedMember>& drawn,
 }
 
 // Each volume's transfer function sampled at `samples` scalars over its own range (its separate
-// opacity array's, when it has one) with its opacity prefix counts, one slot after the other.
+// opacity array's, when it has one) with its opacity prefix counts, one slot after the other; and
+// its adaptive-sampling nodes, each volume within its share of the node budget.
 void IntermixTransferFunctions(const std::vector<PsiIntermixedMember>& drawn,
   const std::vector<psi::IntermixedVolume>& volumes, int samples, PsiIntermixedScene& scene)
 {
   std::vector<psi::TransferFunctionTable> tables;
   std::vector<std::vector<float>> prefixes;
+  std::vector<psi::TransferFunctionNodes> nodes;
+  std::vector<std::array<double, 2>> ranges;
   scene.ZeroOpacity = false;
+  scene.TableDeviation = 0;
+  const int budget = std::max(2, psi::MaxAdaptiveNodes / static_cast<int>(drawn.size()));
   for (size_t k = 0; k < drawn.size(); ++k)
   {
     const psi::TetMesh& mesh = *volumes[k].Mesh;
@@ -74,9 +83,15 @@ void IntermixTransferFunctions(const std::vector<PsiIntermixedMember>& drawn,
     bool zero = false;
     prefixes.push_back(psi::OpacityPrefixCounts(tables.back(), property, zero));
     scene.ZeroOpacity = scene.ZeroOpacity || zero;
+    nodes.push_back(psi::SampleTransferFunctionNodes(
+      property, mesh.ScalarRange, budget, psi::AdaptiveNodeTolerance));
+    ranges.push_back({ { mesh.ScalarRange[0], mesh.ScalarRange[1] } });
+    scene.TableDeviation = std::max(scene.TableDeviation,
+      psi::TableDeviation(tables.back(), nodes.back(), psi::OpacityUnitDistance(property)));
   }
   scene.Table = psi::IntermixTables(tables);
   scene.OpacityPrefix = psi::IntermixOpacityPrefixes(prefixes);
+  scene.Nodes = psi::IntermixNodes(nodes, ranges, samples);
 }
 
 // The volume's matrix, row-major.
@@ -206,6 +221,7 @@ bool vtkPsiVolumeMapper::RenderIntermixed(vtkRenderer* ren, vtkVolume* vol)
   this->LastUsedOpaqueClipping = draw.LastUsedOpaqueClipping;
   this->LastFeatureDefines = draw.LastFeatureDefines;
   this->LastUsedIsosurfaceMethod = draw.LastUsedIsosurfaceMethod;
+  this->LastNumberOfAdaptiveNodes = draw.LastNumberOfAdaptiveNodes;
   this->Stats.IntermixedVolumes = static_cast<int64_t>(drawn.size());
   this->Stats.IntermixedTetrahedra = draw.Stats.NumberOfTetrahedra;
   this->CountOwnCells();

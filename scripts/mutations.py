@@ -581,6 +581,8 @@ MUTATIONS = [
     Mutation("intermixed_mesh_keeps_old_values", "Rendering/vtkPsiVolumeMapperIntermixed.cxx",
              "    key << m.Mapper << ':' << M.Mesh.GetScalarsVersion();",
              "    key << m.Mapper << ':' << M.Mesh.GetVersion();", ["PsiPython.intermixed"]),
+    Mutation("intermixed_nodes_sampled_from_the_first_property", "Rendering/PsiAdaptiveNodes.cxx",
+             "  if (this->Given)\n", "  if (false)\n", ["PsiRendering.IntermixedVolumes"]),
     # --- The exact reference of several media (Reference/PsiReferenceMedia, PsiReferenceIntegrals).
     Mutation("media_emission_of_the_last_only", "Reference/PsiReferenceIntegrals.cxx",
              "        emission += tau * (m.Lf[c] + (R(m.Lb[c]) - m.Lf[c]) * u);",

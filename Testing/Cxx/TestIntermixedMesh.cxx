@@ -7,7 +7,9 @@
 //  - cells keep their points, moved by the volumes before them; with points welded by position
 //    a face two volumes share makes their tetrahedra neighbours, as within one mesh;
 //  - the opacity prefix counts continue across slots, and a separate opacity array of one volume
-//    gives the others their color scalar's fraction.
+//    gives the others their color scalar's fraction;
+//  - each volume's adaptive-sampling nodes land in its slot at the slot scalars of their own
+//    scalars, with their values, in ascending order.
 #include "PsiIntermixedMesh.h"
 #include "PsiTestCheck.h"
 #include "PsiTransferFunctionAnalysis.h"
@@ -93,6 +95,33 @@ double Largest(const double a[4], const double b[4])
   }
   return d;
 }
+
+// psi::IntermixNodes: two volumes' nodes over their own ranges as slot scalars.
+void TestNodes(int samples)
+{
+  psi::TransferFunctionNodes a, b;
+  a.Scalars = { 10, 12, 15 };
+  a.Rgba = { 1, 0, 0, 1, 0, 1, 0, 2, 0, 0, 1, 3 };
+  a.MaxDeviation = 0.001;
+  b.Scalars = { -3, -3, 1 }; // a step at -3
+  b.Rgba = { 0, 0, 0, 4, 1, 1, 1, 5, 0.5f, 0.5f, 0.5f, 6 };
+  b.MaxDeviation = 0.01;
+  const psi::TransferFunctionNodes all = psi::IntermixNodes(
+    { a, b }, { { { 10.0, 15.0 } }, { { -3.0, 1.0 } } }, samples);
+  const double expect[6] = { psi::SlotScalar(0, 2, samples, 0.0),
+    psi::SlotScalar(0, 2, samples, 0.4), psi::SlotScalar(0, 2, samples, 1.0),
+    psi::SlotScalar(1, 2, samples, 0.0), psi::SlotScalar(1, 2, samples, 0.0),
+    psi::SlotScalar(1, 2, samples, 1.0) };
+  double worst = all.Size() == 6 ? 0 : 1;
+  for (int i = 0; i < all.Size() && i < 6; ++i)
+  {
+    worst = std::max(worst, std::abs(all.Scalars[i] - expect[i]));
+    worst = std::max(worst, i > 0 && all.Scalars[i] < all.Scalars[i - 1] ? 1.0 : 0.0);
+  }
+  PSI_CHECK(worst < 1e-12 && all.Rgba.size() == 24 && all.Rgba[3] == 1 && all.Rgba[23] == 6 &&
+      all.MaxDeviation == 0.01,
+    "each volume's nodes in its slot, ascending, with their values (%g off)", worst);
+}
 } // namespace
 
 int main()
@@ -107,6 +136,7 @@ int main()
   // the second volume scaled by 2 and moved by (10, 0, -4)
   volumes[1].ModelToWorld = { { 2, 0, 0, 10, 0, 2, 0, 0, 0, 0, 2, -4, 0, 0, 0, 1 } };
   const psi::TetMesh all = psi::IntermixMeshes(volumes, samples);
+  TestNodes(samples);
 
   // --- geometry
   PSI_CHECK(all.NumberOfPoints() == 10 && all.NumberOfTets() == 4,

@@ -396,6 +396,45 @@ void TestTranslucent(Fixture& f)
   f.AB->Renderer->SetUseDepthPeeling(0);
 }
 
+// Adaptive sampling: each volume's nodes in its slot. A narrow opacity spike that a 64-sample
+// table misses: the union's image with adaptive sampling, and not the table's.
+void TestAdaptive(Fixture& f)
+{
+  psitest::TransferFunction spike(2.0);
+  psitest::BlueWhiteRed(spike.Color, 40, 280);
+  for (const double* p : { (const double[]){ 40, 0 }, (const double[]){ 147, 0 },
+         (const double[]){ 150, 0.9 }, (const double[]){ 153, 0 }, (const double[]){ 280, 0 } })
+  {
+    spike.Opacity->AddPoint(p[0], p[1]);
+  }
+  Scene two(f.Grid, spike.Property, spike.Property, false);
+  vtkNew<vtkPsiVolumeMapper> unionMapper;
+  unionMapper->SetInputData(f.United);
+  psitest::VolumeView one(W, H, unionMapper, spike.Property);
+  for (vtkPsiVolumeMapper* m : { unionMapper.GetPointer(), two.MapperA.GetPointer(),
+         two.MapperB.GetPointer() })
+  {
+    psitest::ApplyRequested(m);
+    m->SetTransferFunctionSamples(64);
+    m->SetAdaptiveSampling(psi::AdaptiveModes::On);
+  }
+  const std::vector<double> ref = Draw(one.Window, one.Renderer, 0);
+  const std::vector<double> adaptive = Draw(two.Window, two.Renderer, 0);
+  const int nodes = two.MapperA->GetLastNumberOfAdaptiveNodes();
+  two.MapperA->SetAdaptiveSampling(psi::AdaptiveModes::Off);
+  const std::vector<double> table = Draw(two.Window, two.Renderer, 0);
+  std::printf("adaptive sampling of a narrow spike: two volumes against their union %.1f/255 (%d "
+              "nodes), the 64-sample table %.1f/255\n",
+    255 * psitest::LargestDifference(adaptive, ref), nodes,
+    255 * psitest::LargestDifference(table, ref));
+  PSI_CHECK(psitest::LargestDifference(adaptive, ref) <= 1.0 / 255 + 1e-9 && nodes > 0 &&
+      psitest::LargestDifference(table, ref) > 4.0 / 255,
+    "adaptive sampling in the combined draw: each volume's nodes, the union's image (largest "
+    "%.1f/255, %d nodes; the table alone %.1f/255)",
+    255 * psitest::LargestDifference(adaptive, ref), nodes,
+    255 * psitest::LargestDifference(table, ref));
+}
+
 // One hidden: the other alone.
 void TestHidden(Fixture& f)
 {
@@ -422,6 +461,7 @@ int main(int argc, char* argv[])
   TestInterface(f);
   TestInsideAndOpaque(f);
   TestTranslucent(f);
+  TestAdaptive(f);
   TestHidden(f);
   return psitest::Report("TestPsiIntermixedVolumes");
 }
