@@ -88,8 +88,12 @@ endif ()
 #     ('Volume LOD') and by the full frame ('Full frame'), as the read-out says; no final image.
 #   PsiVolumeGUIAccuracyReport: Tools > Accuracy report (the plugin's action) on a small mesh;
 #     the table it shows names every row of the report; no final image.
+#   PsiVolumeGUIIntermixedState: two 'Psi Volume' displays in one view (drawn intermixed) give the
+#     image of their union drawn as one volume, and the same in the other show order and after
+#     state save/load; each step is compared with the script's own first image (no baseline
+#     file, no final image).
 set(psi_gui_tests PsiVolumeGUI PsiVolumeGUIOpacityState PsiVolumeGUIOpenFile
-  PsiVolumeGUIInteraction PsiVolumeGUIAccuracyReport)
+  PsiVolumeGUIInteraction PsiVolumeGUIAccuracyReport PsiVolumeGUIIntermixedState)
 set(PsiVolumeGUIOpenFile_baseline PsiVolumeGUIOpenFile.png)
 set(PsiVolumeGUI_baseline PsiVolumeGUI.png)
 set(PsiVolumeGUIOpacityState_baseline PsiVolumeGUI_Average.png)

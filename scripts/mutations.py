@@ -598,6 +598,17 @@ MUTATIONS = [
     Mutation("capture_ignores_the_display_position", "Python/psivolume/accuracy.py",
              "        volume.SetPosition(list(self.rep.Position))", "",
              ["PsiPython.report_scene.volumes"]),
+    # each volume drawn on its own, the later pasted over the earlier (as ParaView's 'Volume'): the GUI's
+    # other show order pastes the far volume over the near one
+    Mutation("intermixed_pasted_in_show_order", "Rendering/vtkPsiVolumeMapperIntermixed.cxx",
+             "  if (members.size() < 2)", "  if (true)",
+             ["PsiGUI.PsiVolumeGUIIntermixedState", "PsiPython.intermixed"]),
+    # the 'Psi Volume Opacity' group edits the sub-proxy's copy of the unit distance: drawn, but
+    # the state file's ScalarOpacityUnitDistance (never updated) wins on load
+    Mutation("opacity_group_edits_the_copy", "Qt/pqPsiVolumeOpacityWidget.cxx",
+             "    vtkSMProperty* target = smproxy->GetProperty(copy->GetXMLName());",
+             "    vtkSMProperty* target = nullptr;",
+             ["PsiGUI.PsiVolumeGUIOpacityState", "PsiGUI.PsiVolumeGUIIntermixedState"]),
     # --- The install tree (cmake/PsiVolumeInstall.cmake, docs/install.md).
     Mutation("installed_package_misses_its_plugin", "Python/psivolume/data.py",
              "        from . import installed_paths\n", "        from . import installed_path\n",

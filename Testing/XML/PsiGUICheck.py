@@ -8,6 +8,8 @@
 # check captures the view the way <pqcompareview> does (ViewSize 300x300, PPI 72,
 # CaptureWindow(1)), compares it with the same baseline PNG, and fails when more than MAX_PIXELS
 # pixels differ by more than LEVEL in some channel. Same-method replays differ by 0 on llvmpipe.
+# A script that compares the view with itself (XML/PsiVolumeGUIIntermixedState.xml) needs no
+# baseline: capture writes the reference into the test directory, check reads it from there.
 #
 # Loaded with runpy.run_path (no __pycache__ in the source tree). The test image is written by the
 # project's PNG writer, psivolume.images.write_png (the test's ENVIRONMENT puts the checkout's
@@ -86,6 +88,32 @@ def check(baseline_dir, test_dir, name, test_name=None, level=LEVEL, max_pixels=
             _say(sys.__stderr__, "PsiGUICheck FAILED: " + summary + "; test image " + test_png)
             return False
         _say(sys.__stdout__, "PsiGUICheck passed: " + summary)
+        return True
+    except Exception as error:  # the shell would swallow the traceback
+        _say(sys.__stderr__, "PsiGUICheck FAILED: %s: %s: %s" % (name, type(error).__name__, error))
+        return False
+
+
+def capture(test_dir, name, min_covered=0.1, size=(300, 300)):
+    """Writes the active view to test_dir/name.png as the reference that later checks of the same
+    session compare with (check(test_dir, test_dir, name, ...)): a script that compares the view
+    with itself needs no baseline made by hand. A view that draws next to nothing is no
+    reference: fails when fewer than `min_covered` of the pixels differ from the corner pixel
+    (the background) by more than LEVEL. Prints "PsiGUICheck captured:" or "PsiGUICheck FAILED"
+    (the driver counts only check's lines: a reference that is missing fails the check)."""
+    try:
+        from psivolume.images import write_png
+
+        width, height, rgb = _pixels(_capture(size))
+        covered = float((abs(rgb - rgb[0]).max(axis=1) > LEVEL).mean())
+        summary = "%s: %.1f%% of the pixels differ from the background (at least %.1f%%)" \
+            % (name, 100 * covered, 100 * min_covered)
+        if covered < min_covered:
+            _say(sys.__stderr__, "PsiGUICheck FAILED: " + summary)
+            return False
+        os.makedirs(test_dir, exist_ok=True)
+        write_png(rgb.reshape(height, width, 3), os.path.join(test_dir, name + ".png"))
+        _say(sys.__stdout__, "PsiGUICheck captured: " + summary)
         return True
     except Exception as error:  # the shell would swallow the traceback
         _say(sys.__stderr__, "PsiGUICheck FAILED: %s: %s: %s" % (name, type(error).__name__, error))
