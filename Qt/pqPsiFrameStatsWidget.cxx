@@ -200,8 +200,12 @@ QString pqPsiFrameStatsWidget::formatReadout(const Readout& stats)
   }
   if (stats.Stats.IntermixedVolumes > 1) // the times are the combined draw's
   {
-    text += tr("; drawn intermixed with %1 other volumes (%2 tetrahedra in all)")
-              .arg(stats.Stats.IntermixedVolumes - 1)
+    // one draw, one set of settings: the first volume's (in the view's order) apply to all
+    const qlonglong others = stats.Stats.IntermixedVolumes - 1;
+    text += tr("; drawn intermixed with %1 other %2 (%3 tetrahedra in all, the settings of the "
+               "view's first)")
+              .arg(others)
+              .arg(others == 1 ? tr("volume") : tr("volumes"))
               .arg(count(stats.Stats.IntermixedTetrahedra));
   }
   return text;

@@ -184,7 +184,7 @@ def check_report(source):
 #
 # The read-out (Qt/pqPsiFrameStatsWidget) shows "last frame: X ms (sort Y ms), N tetrahedra,
 # M cells skipped[, K sort cycles][; drawn intermixed with V other volumes (T tetrahedra in
-# all)]": X and Y are LastRenderSeconds and LastSortSeconds in milliseconds, 2 decimals below
+# all, the settings of the view's first)]": X and Y are LastRenderSeconds and LastSortSeconds in milliseconds, 2 decimals below
 # 10 ms and 1 from there; N, M, K and T are NumberOfTetrahedra, NumberOfSkippedCells,
 # LastSortCycles and NumberOfIntermixedTetrahedra with thousands separators, K and T only when
 # above 0.
@@ -196,7 +196,8 @@ def check_report(source):
 _READOUT = re.compile(
     r"^last frame: ([0-9]+\.[0-9]+) ms \(sort ([0-9]+\.[0-9]+) ms\), ([0-9,]+) tetrahedra, "
     r"([0-9,]+) cells skipped(?:, ([0-9,]+) sort cycles)?"
-    r"(?:; drawn intermixed with ([0-9,]+) other volumes \(([0-9,]+) tetrahedra in all\))?$")
+    r"(?:; drawn intermixed with ([0-9,]+) other volumes? \(([0-9,]+) tetrahedra in all, the "
+    r"settings of the view's first\))?$")
 # (shown in the read-out's n-th group, information property, how the processes' values combine)
 _SHOWN = (
     (1, "LastRenderSeconds", "max"),
@@ -317,11 +318,12 @@ def _compare_milliseconds(shown, seconds):
     return ""
 
 
-def check_readout(stage):
+def check_readout(stage, volumes=None):
     """Whether the read-out shown on the panel has the numbers of the active representation's
     information properties (the same frame: read in this one call), each within the read-out's
-    rounding. Prints "PsiGUICheck passed:" or "PsiGUICheck FAILED" (`stage` names the check)
-    and returns the verdict."""
+    rounding; with `volumes`, that it says the frame drew that many volumes intermixed. Prints
+    "PsiGUICheck passed:" or "PsiGUICheck FAILED" (`stage` names the check) and returns the
+    verdict."""
     try:
         from paraview import simple
 
@@ -335,6 +337,10 @@ def check_readout(stage):
         if not (values["LastRenderSeconds"] > 0 and values["NumberOfTetrahedra"] > 0):
             raise RuntimeError("no frame in the properties: %r" % values)
         wrong = []
+        others = int(match.group(6).replace(",", "")) if match.group(6) else 0
+        if volumes is not None and others != volumes - 1:
+            wrong.append("drawn intermixed with %d other volumes, %d expected"
+                         % (others, volumes - 1))
         for group, name, how in _SHOWN:
             shown = match.group(group)
             if how == "max":
