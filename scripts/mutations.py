@@ -596,7 +596,7 @@ MUTATIONS = [
              "            found.append((d, other))", "            pass",
              ["PsiPython.report_scene.volumes"]),
     Mutation("capture_ignores_the_display_position", "Python/psivolume/accuracy.py",
-             "        volume.SetPosition(list(self.rep.Position))", "",
+             "        volume.SetPosition(list(data.display_translation(self.rep)))", "",
              ["PsiPython.report_scene.volumes"]),
     # each volume drawn on its own, the later pasted over the earlier (as ParaView's 'Volume'): the GUI's
     # other show order pastes the far volume over the near one

@@ -117,10 +117,11 @@ class Capture:
         w.Write()
 
     def placed(self, grid):
-        """`grid` in world coordinates: moved by the display's Position, Orientation, Scale and
-        Origin, as its volume's matrix places it (vtkProp3D's), when they move it."""
+        """`grid` in world coordinates: moved by the display's Position (ParaView 5.13 and later:
+        Translation), Orientation, Scale and Origin, as its volume's matrix places it
+        (vtkProp3D's), when they move it."""
         volume = vtkVolume()
-        volume.SetPosition(list(self.rep.Position))
+        volume.SetPosition(list(data.display_translation(self.rep)))
         volume.SetOrientation(list(self.rep.Orientation))
         volume.SetScale(list(self.rep.Scale))
         volume.SetOrigin(list(self.rep.Origin))

@@ -158,6 +158,12 @@ def association(src, array):
     return "CELLS"
 
 
+def display_translation(rep):
+    """The property that moves display `rep` (its actor's position): 'Position' up to ParaView
+    5.12, 'Translation' from 5.13 on (where 'Position' is refused as obsolete)."""
+    return rep.GetProperty("Translation") or rep.GetProperty("Position")
+
+
 def set_mapper(rep, name):
     """Puts `rep` on 'Psi Volume|<IntegrationMethod>' or on 'Volume' with one of ParaView's
     SelectMapper values ('Projected tetra', 'Z sweep', 'Bunyk ray cast', 'Resample To Image')."""

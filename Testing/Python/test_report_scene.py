@@ -334,7 +334,8 @@ def case_volumes(work):
     second = data.show_volume(other, "other", view, representation="Volume")
     testing.apply_preset(simple.GetColorTransferFunction("other"), "Viridis (matplotlib)",
                          "Viridis")
-    second.Position = [4.0, 2.5, 7.0]  # apart in depth, overlapping the first on screen
+    # apart in depth, overlapping the first on screen
+    data.display_translation(second).SetData([4.0, 2.5, 7.0])
     view.ResetCamera()
     simple.SetActiveSource(src)
     simple.Render(view)
@@ -348,7 +349,8 @@ def case_volumes(work):
     except Exception as e:  # noqa: BLE001
         checks.check(False, "two volumes: the report runs: %s: %s" % (type(e).__name__, e))
     check_same(before, state(view, second), ignored, "two volumes: the second display")
-    checks.check(second.Representation == "Volume" and list(second.Position) == [4.0, 2.5, 7.0],
+    checks.check(second.Representation == "Volume" and
+                 list(data.display_translation(second)) == [4.0, 2.5, 7.0],
                  "two volumes: the second display on 'Volume' at its place again")
     mean, mx = row_errors(rows, "Partial Pre-Integration")
     checks.check(mean < 1, "two volumes: 'Psi Volume' draws both, close to the reference of "
