@@ -40,6 +40,8 @@ Environment: PSI_PLUGIN (the plugin), PSI_PVSERVER, PSI_MPIEXEC (default: from P
    LastInteractiveImage 1 (the level of detail; read as in 5), the client's image is not the
    still one (3.5/255 apart) and matches the serial level of detail with the still frame's
    tolerance (test_mpi_lod.py holds the tight bound), and the server logged no error.
+8. Two volumes intermixed (test_mpi_intermixed.py's scene, both 'Psi Volume'): the serial image
+   within test_mpi's tolerance, server rank 0 reading NumberOfIntermixedVolumes 2.
 """
 import faulthandler
 import os
@@ -55,6 +57,7 @@ import numpy as np
 from paraview import servermanager, simple
 
 import test_mpi  # the scene, camera, capture and tolerance of the MPI test (this folder)
+import test_mpi_intermixed  # two volumes intermixed: their scene
 import test_mpi_lod  # the level of detail's frame and tolerance
 from psivolume import data, process, session, testing
 
@@ -155,8 +158,23 @@ def wait_for_server(proc, logpath):
     return False, "no 'Accepting connection(s)' from the server within %d s" % START_TIMEOUT
 
 
+def two_volumes():
+    """test_mpi_intermixed's two volumes (A shown first) as 'Psi Volume' in a view of their own:
+    (view, displays, image)."""
+    a, b = test_mpi_intermixed.build()
+    view = test_mpi_intermixed.new_view()
+    test_mpi_intermixed.set_maps()
+    displays = [test_mpi_intermixed.show(view, a, "RTData", 2.0),
+                test_mpi_intermixed.show(view, b, "other", 3.0)]
+    for d in displays:
+        d.SetRepresentationType("Psi Volume")
+    simple.Render(view)
+    return view, displays, test_mpi.capture(view)
+
+
 def serial_reference(plugin):
-    """The scene rendered serially on the built-in connection of this process."""
+    """The scenes rendered serially on the built-in connection of this process: the still frame,
+    its tetrahedra, the level of detail, two volumes intermixed."""
     simple.LoadPlugin(plugin, remote=False, ns=globals())
     src, _ = test_mpi.build(False)
     view, d = test_mpi.render(src)
@@ -166,8 +184,28 @@ def serial_reference(plugin):
     simple.Delete(d)
     simple.Delete(view)
     _, ref_lod, _ = test_mpi_lod.lod_frame(src)
+    ref_two = two_volumes()[2]
     simple.Disconnect()
-    return ref, n, ref_lod
+    return ref, n, ref_lod, ref_two
+
+
+def two_volume_checks(t, ref_two):
+    """Two volumes intermixed on the server's ranks: the serial image within test_mpi's
+    tolerance; server rank 0 drew both in one pass."""
+    view, displays, img = two_volumes()
+    _, intermixed = drawn(displays[0], "NumberOfIntermixedVolumes")
+    d_abs = np.abs(img - ref_two)
+    mean, frac = float(d_abs.mean()), float((d_abs.max(axis=2) > test_mpi.OUTLIER).mean())
+    log("two volumes intermixed: pvserver 2 ranks vs serial: mean |diff| %.3f/255, max %.0f/255, "
+        "%.3f%% of pixels > %.0f/255" % (mean, float(d_abs.max()), 100 * frac, test_mpi.OUTLIER))
+    t.check(intermixed == 2 and mean <= test_mpi.MEAN_TOL and
+            frac <= test_mpi.OUTLIER_FRACTION and testing.covered(img, BG) > 0.1 * SIZE * SIZE,
+            "two volumes intermixed on the server (rank 0 drew %d in one pass): the serial image "
+            "(mean |diff| %.3f/255, %.3f%% of pixels over %.0f/255)"
+            % (intermixed, mean, 100 * frac, test_mpi.OUTLIER))
+    for d in displays:
+        simple.Delete(d)
+    simple.Delete(view)
 
 
 def cells_per_rank(proxy, nranks):
@@ -224,7 +262,7 @@ def lod_checks(t, label, view, d, still, ref_lod, logpath):
             % (label, errors))
 
 
-def remote_checks(t, port, plugin, ref, n_serial, ref_lod, logpath):
+def remote_checks(t, port, plugin, ref, n_serial, ref_lod, ref_two, logpath):
     t1 = time.time()
     conn = simple.Connect("localhost", port)
     t.check(conn is not None and servermanager.ActiveConnection.IsRemote(),
@@ -298,6 +336,7 @@ def remote_checks(t, port, plugin, ref, n_serial, ref_lod, logpath):
         lod_checks(t, label, view, d, img, ref_lod, logpath)
         simple.Delete(d)
         simple.Delete(view)
+    two_volume_checks(t, ref_two)
 
 
 def disconnect():
@@ -323,7 +362,7 @@ def main():
     # the server's session ends when this client does, however it ends
     reaper = session.reaper(server.pid, WATCHDOG + 30, env=process.environment_without_mpi())
     try:
-        ref, n_serial, ref_lod = serial_reference(plugin)
+        ref, n_serial, ref_lod, ref_two = serial_reference(plugin)
         log("serial reference (built-in connection): %d tetrahedra, %.1f s"
             % (n_serial, time.time() - t0))
         ok, how = wait_for_server(server, logpath)
@@ -333,7 +372,7 @@ def main():
         else:
             t.check(False, "pvserver did not start: %s (log below)" % how)
         if ok:
-            remote_checks(t, port, plugin, ref, n_serial, ref_lod, logpath)
+            remote_checks(t, port, plugin, ref, n_serial, ref_lod, ref_two, logpath)
             disconnect()
     except Exception:  # noqa: BLE001 -- any error is a failure with its traceback, never a hang
         traceback.print_exc()
