@@ -29,7 +29,9 @@ def _say(stream, text):
     stream.flush()
 
 
-def _capture(size):
+def _capture(size, volumes_only=False):
+    """The active view at `size`; with `volumes_only`, without its orientation axes and color
+    legends (ParaView 5.13 and later show a legend by default, drawn in each view its own way)."""
     from paraview import simple
 
     view = simple.GetActiveView()
@@ -37,10 +39,25 @@ def _capture(size):
         raise RuntimeError("no active view")
     old_size, old_ppi = list(view.ViewSize), view.PPI
     view.ViewSize, view.PPI = list(size), 72
+    hidden = []
+    if volumes_only:
+        hidden = [r for r in view.Representations if r.GetXMLName().startswith("ScalarBar")
+                  and r.Visibility]
+        hidden.append(view) if view.OrientationAxesVisibility else None
+        for r in hidden:
+            if r is view:
+                view.OrientationAxesVisibility = 0
+            else:
+                r.Visibility = 0
     try:
         image = view.SMProxy.CaptureWindow(1)
     finally:
         view.ViewSize, view.PPI = old_size, old_ppi
+        for r in hidden:
+            if r is view:
+                view.OrientationAxesVisibility = 1
+            else:
+                r.Visibility = 1
     if image is None:
         raise RuntimeError("CaptureWindow returned nothing")
     return image
@@ -55,15 +72,16 @@ def _pixels(image):
 
 
 def check(baseline_dir, test_dir, name, test_name=None, level=LEVEL, max_pixels=MAX_PIXELS,
-          size=(300, 300)):
-    """Compares the active view with baseline_dir/name.png; writes it to test_dir/test_name.png."""
+          size=(300, 300), volumes_only=False):
+    """Compares the active view with baseline_dir/name.png; writes it to test_dir/test_name.png.
+    `volumes_only`: without the view's orientation axes and color legends (_capture)."""
     test_name = test_name or name
     try:
         from vtkmodules.vtkIOImage import vtkPNGReader
 
         from psivolume.images import write_png
 
-        tw, th, test = _pixels(_capture(size))
+        tw, th, test = _pixels(_capture(size, volumes_only))
         os.makedirs(test_dir, exist_ok=True)
         test_png = os.path.join(test_dir, test_name + ".png")
         write_png(test.reshape(th, tw, 3), test_png)
@@ -94,7 +112,7 @@ def check(baseline_dir, test_dir, name, test_name=None, level=LEVEL, max_pixels=
         return False
 
 
-def capture(test_dir, name, min_covered=0.1, size=(300, 300)):
+def capture(test_dir, name, min_covered=0.1, size=(300, 300), volumes_only=False):
     """Writes the active view to test_dir/name.png as the reference that later checks of the same
     session compare with (check(test_dir, test_dir, name, ...)): a script that compares the view
     with itself needs no baseline made by hand. A view that draws next to nothing is no
@@ -104,7 +122,7 @@ def capture(test_dir, name, min_covered=0.1, size=(300, 300)):
     try:
         from psivolume.images import write_png
 
-        width, height, rgb = _pixels(_capture(size))
+        width, height, rgb = _pixels(_capture(size, volumes_only))
         covered = float((abs(rgb - rgb[0]).max(axis=1) > LEVEL).mean())
         summary = "%s: %.1f%% of the pixels differ from the background (at least %.1f%%)" \
             % (name, 100 * covered, 100 * min_covered)
