@@ -14,12 +14,12 @@
 
 namespace
 {
-// Per renderer: its frames so far, and which mapper claimed which frame.
+// Per renderer: its frames so far, and which mapper claimed which frame, for each kind of draw.
 struct Frames
 {
   unsigned long Frame = 0;
-  unsigned long ClaimedFrame = 0;
-  const vtkPsiVolumeMapper* Claimant = nullptr;
+  unsigned long ClaimedFrame[2] = { 0, 0 };
+  const void* Claimant[2] = { nullptr, nullptr };
 };
 
 std::map<const vtkRenderer*, Frames>& AllFrames()
@@ -72,7 +72,7 @@ std::vector<PsiIntermixedMember> PsiIntermixedFrames::Members(vtkRenderer* ren)
   while (vtkVolume* vol = volumes->GetNextVolume(it))
   {
     auto* mapper = vtkPsiVolumeMapper::SafeDownCast(vol->GetMapper());
-    if (vol->GetVisibility() && mapper && mapper->GetInput() &&
+    if (vol->GetVisibility() && mapper && !mapper->GetDrawnByStandIn() && mapper->GetInput() &&
       mapper->GetInput()->GetNumberOfCells() > 0)
     {
       members.push_back({ vol, mapper });
@@ -83,16 +83,17 @@ std::vector<PsiIntermixedMember> PsiIntermixedFrames::Members(vtkRenderer* ren)
 
 const vtkPsiVolumeMapper* PsiIntermixedFrames::Claimant(vtkRenderer* ren)
 {
-  return FramesOf(ren).Claimant;
+  return static_cast<const vtkPsiVolumeMapper*>(FramesOf(ren).Claimant[0]);
 }
 
-bool PsiIntermixedFrames::Claim(vtkRenderer* ren, const vtkPsiVolumeMapper* mapper)
+bool PsiIntermixedFrames::Claim(vtkRenderer* ren, const void* mapper, Draws what)
 {
   Frames& frames = FramesOf(ren);
-  if (frames.ClaimedFrame != frames.Frame)
+  const int k = what == Draws::FullFrames ? 0 : 1;
+  if (frames.ClaimedFrame[k] != frames.Frame)
   {
-    frames.ClaimedFrame = frames.Frame;
-    frames.Claimant = mapper;
+    frames.ClaimedFrame[k] = frames.Frame;
+    frames.Claimant[k] = mapper;
   }
-  return frames.Claimant == mapper;
+  return frames.Claimant[k] == mapper;
 }

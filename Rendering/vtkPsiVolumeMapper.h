@@ -200,6 +200,13 @@ public:
   vtkSetMacro(LogVerbosity, vtkLogger::Verbosity);
   vtkGetMacro(LogVerbosity, vtkLogger::Verbosity);
 
+  /// Whether the volume's holder draws something else in its place in the coming frames
+  /// (ParaView's representation: a level of detail while the camera moves). The renderer's
+  /// intermixed volumes then leave this one out (PsiIntermixedFrames::Members): it is not drawn
+  /// twice. Off by default.
+  vtkSetMacro(DrawnByStandIn, bool);
+  vtkGetMacro(DrawnByStandIn, bool);
+
 protected:
   vtkPsiVolumeMapper();
   ~vtkPsiVolumeMapper() override;
@@ -218,6 +225,7 @@ protected:
   int LastNumberOfAdaptiveNodes = 0;
   std::string LastFeatureDefines;
   double LastStillSeconds = 0;
+  bool DrawnByStandIn = false;
   psi::FrameClock Frame; ///< the current frame's calls (one per depth-peeling stage)
 
 private:

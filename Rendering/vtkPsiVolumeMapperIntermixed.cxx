@@ -120,8 +120,11 @@ bool vtkPsiVolumeMapper::RenderIntermixed(vtkRenderer* ren, vtkVolume* vol)
   if (!PsiIntermixedFrames::Claim(ren, this))
   {
     // drawn by the frame's first call, with the others: its read-outs, with this volume's own
-    // tetrahedra
-    this->Stats = PsiIntermixedFrames::Claimant(ren)->Stats;
+    // tetrahedra, and its still frame's time (what each volume's 'Auto' interaction weighs: the
+    // volumes drawn together cost together, and each chooses the level of detail as the others do)
+    const vtkPsiVolumeMapper* claimant = PsiIntermixedFrames::Claimant(ren);
+    this->Stats = claimant->Stats;
+    this->LastStillSeconds = claimant->LastStillSeconds;
     this->CountOwnCells();
     return true;
   }

@@ -11,8 +11,21 @@ vtkStandardNewMacro(PsiLODVolume);
 
 bool PsiLODVolume::LowLODIsVolume()
 {
-  return this->LowLODId >= 0 &&
-    vtkAbstractVolumeMapper::SafeDownCast(this->LODProp->GetLODMapper(this->LowLODId));
+  return this->GetLowLODVolumeMapper() != nullptr;
+}
+
+vtkAbstractVolumeMapper* PsiLODVolume::GetLowLODVolumeMapper()
+{
+  return this->LowLODId >= 0
+    ? vtkAbstractVolumeMapper::SafeDownCast(this->LODProp->GetLODMapper(this->LowLODId))
+    : nullptr;
+}
+
+bool PsiLODVolume::DrawsVolumeLOD()
+{
+  vtkAbstractVolumeMapper* mapper = this->GetLowLODVolumeMapper();
+  return mapper && this->LODProp->GetSelectedLODID() == this->LowLODId &&
+    mapper->GetDataObjectInput() != nullptr;
 }
 
 int PsiLODVolume::HasTranslucentPolygonalGeometry()

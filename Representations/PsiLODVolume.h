@@ -23,6 +23,11 @@ public:
   /// transfer-function edit): a copy whose opacity function draws as 'Psi Volume' reads it
   /// (psi::LODVolumeProperty).
   void UpdateLowLODVolumeProperty();
+  /// Whether this frame draws the volume level of detail: the low LOD is selected (in
+  /// SetAllocatedRenderTime, before the renderer draws), a volume, with an input to draw.
+  bool DrawsVolumeLOD();
+  /// The volume level of detail's mapper (nullptr when the low LOD is not a volume).
+  vtkAbstractVolumeMapper* GetLowLODVolumeMapper();
 
 protected:
   PsiLODVolume() = default;

@@ -1,5 +1,6 @@
 #include "PsiLevelOfDetail.h"
 
+#include "PsiLODFrames.h"
 #include "PsiStopwatch.h"
 
 #include "vtkDataSet.h"
@@ -31,8 +32,14 @@ public:
     // about a pixel, docs/decisions.md "Interaction").
     this->GPUMapper->SetImageSampleDistance(1.5f);
   }
+  // With several displays drawing their level of detail, the frame's first call draws them all
+  // in one visibility order (PsiLODFrames); each display reads out its own draw's time.
   void Render(vtkRenderer* ren, vtkVolume* vol) override
   {
+    if (!PsiLODFrames::DrawsAlone(ren, this))
+    {
+      return;
+    }
     const psi::Stopwatch clock;
     this->Superclass::Render(ren, vol);
     this->LastSeconds = clock.Seconds();

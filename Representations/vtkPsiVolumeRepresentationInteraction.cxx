@@ -129,6 +129,9 @@ void vtkPsiVolumeRepresentation::ChooseInteractiveImage(vtkInformation* inInfo)
       this->UpdateVolumeLOD(inInfo, view);
     this->Actor->SetEnableLOD(lod ? 1 : 0);
   }
+  // the level of detail drawn in the full frame's place: not intermixed with other volumes' full
+  // frames too
+  this->PsiMapper->SetDrawnByStandIn(lod);
   if (interactive)
   {
     this->LastInteractiveImage = static_cast<int>(!lod ? psi::InteractiveImages::FullFrame

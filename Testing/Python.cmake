@@ -104,6 +104,10 @@ psi_add_python_test(random_scenes ARGS --first 0 --seeds 40 TIMEOUT 900
 # thin slab, a representation deleted and replaced.
 psi_add_python_test(lod_inputs TIMEOUT 300)
 
+# The level of detail of several displays in one view: drawn back to front together, the same in
+# either show order and close to the intermixed still frame, chosen by 'Auto' for every display.
+psi_add_python_test(lod_several TIMEOUT 300)
+
 # The accuracy report as the GUI runs it (psivolume.gui), after `import psivolume` by the
 # package's name once the plugin is loaded: no PYTHONPATH and no path given (the report finds
 # the plugin ParaView loaded, and its reference renderer beside the build's).

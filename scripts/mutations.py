@@ -255,6 +255,15 @@ MUTATIONS = [
     Mutation("lod_opacity_as_ray_caster_reads_it", "Representations/PsiLODImage.cxx",
              "      out->AddPoint(x, 1 - std::exp(-std::max(a, 0.0))); // a' = 1 - exp(-a)",
              "      out->AddPoint(x, a);", ["PsiRepresentations.LODImage", "PsiPython.interaction.modes"]),
+    # several displays' levels of detail (Representations/PsiLODFrames.cxx)
+    Mutation("lod_several_each_alone", "Representations/PsiLODFrames.cxx",
+             "  if (members.size() < 2 || !member)", "  if (members.size() < 200 || !member)",
+             ["PsiPython.lod_several"]),
+    Mutation("lod_several_front_to_back", "Representations/PsiLODFrames.cxx",
+             "    return aLow == eyeHigh;", "    return aLow != eyeHigh;", ["PsiPython.lod_several"]),
+    Mutation("intermixed_still_seconds_not_shared", "Rendering/vtkPsiVolumeMapperIntermixed.cxx",
+             "    this->LastStillSeconds = claimant->LastStillSeconds;", "",
+             ["PsiPython.lod_several"]),
     # the panel's read-out shows the representation's own numbers
     Mutation("readout_frame_time_tenfold_small", "Qt/pqPsiFrameStatsWidget.cxx",
              "                   .arg(milliseconds(stats.Stats.LastRenderSeconds),",

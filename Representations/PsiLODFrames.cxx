@@ -1,0 +1,153 @@
+#include "PsiLODFrames.h"
+
+#include "PsiIntermixedFrames.h"
+#include "PsiLODVolume.h"
+
+#include "vtkAbstractVolumeMapper.h"
+#include "vtkCamera.h"
+#include "vtkRenderer.h"
+#include "vtkVolumeCollection.h"
+
+#include <algorithm>
+#include <array>
+
+namespace
+{
+// Set while one call draws every display's level of detail: their mappers then draw as alone.
+bool DrawingTogether = false;
+
+// The visible displays of `ren` that draw their volume level of detail in this frame, in the
+// renderer's order.
+std::vector<PsiLODVolume*> Members(vtkRenderer* ren)
+{
+  std::vector<PsiLODVolume*> members;
+  vtkVolumeCollection* volumes = ren ? ren->GetVolumes() : nullptr;
+  if (!volumes)
+  {
+    return members;
+  }
+  vtkCollectionSimpleIterator it;
+  volumes->InitTraversal(it);
+  while (vtkVolume* vol = volumes->GetNextVolume(it))
+  {
+    auto* actor = PsiLODVolume::SafeDownCast(vol);
+    if (actor && actor->GetVisibility() && actor->DrawsVolumeLOD())
+    {
+      members.push_back(actor);
+    }
+  }
+  return members;
+}
+
+// The eye's depth of a point: its distance from the eye along the view direction.
+double Depth(vtkCamera* camera, const double p[3])
+{
+  double dop[3];
+  camera->GetDirectionOfProjection(dop);
+  const double* eye = camera->GetPosition();
+  return (p[0] - eye[0]) * dop[0] + (p[1] - eye[1]) * dop[1] + (p[2] - eye[2]) * dop[2];
+}
+
+double CenterDepth(vtkCamera* camera, const double* b)
+{
+  const double c[3] = { (b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2 };
+  return Depth(camera, c);
+}
+
+// Whether box `a` must be drawn before box `b` (is behind it): a plane between the two boxes
+// across an axis, with the eye on b's side (perspective) or the view looking from b's side
+// (parallel projection). A line crosses a plane once, so no ray from the eye meets b before a;
+// where several axes separate them and disagree, no ray meets both. False without such a plane.
+bool Behind(const double* a, const double* b, vtkCamera* camera)
+{
+  double dop[3];
+  camera->GetDirectionOfProjection(dop);
+  const double* eye = camera->GetPosition();
+  const bool parallel = camera->GetParallelProjection() != 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const bool aLow = a[2 * k + 1] <= b[2 * k];  // a below b along k
+    const bool aHigh = b[2 * k + 1] <= a[2 * k]; // a above b along k
+    if (!aLow && !aHigh)
+    {
+      continue;
+    }
+    const double plane = aLow ? (a[2 * k + 1] + b[2 * k]) / 2 : (b[2 * k + 1] + a[2 * k]) / 2;
+    // the eye's side of the plane: above it, or (parallel) looking down along k
+    const bool eyeHigh = parallel ? dop[k] < 0 : eye[k] > plane;
+    return aLow == eyeHigh;
+  }
+  return false;
+}
+} // namespace
+
+std::vector<int> PsiLODFrames::BackToFront(
+  const std::vector<const double*>& boxes, vtkCamera* camera)
+{
+  std::vector<int> left, order;
+  for (int i = 0; i < static_cast<int>(boxes.size()); ++i)
+  {
+    left.push_back(i);
+  }
+  while (!left.empty())
+  {
+    // the farthest box that no other box left must be drawn before (the farthest of all if
+    // every box has one: boxes that overlap, in a cycle)
+    int pick = -1, farthest = -1;
+    for (int i : left)
+    {
+      bool free = true;
+      for (int j : left)
+      {
+        free = free && (j == i || !Behind(boxes[j], boxes[i], camera));
+      }
+      const auto deeper = [&](int other)
+      { return other < 0 || CenterDepth(camera, boxes[i]) > CenterDepth(camera, boxes[other]); };
+      pick = free && deeper(pick) ? i : pick;
+      farthest = deeper(farthest) ? i : farthest;
+    }
+    pick = pick >= 0 ? pick : farthest;
+    order.push_back(pick);
+    left.erase(std::find(left.begin(), left.end(), pick));
+  }
+  return order;
+}
+
+bool PsiLODFrames::DrawsAlone(vtkRenderer* ren, vtkAbstractVolumeMapper* mapper)
+{
+  if (DrawingTogether)
+  {
+    return true;
+  }
+  const std::vector<PsiLODVolume*> members = Members(ren);
+  bool member = false;
+  for (PsiLODVolume* m : members)
+  {
+    member = member || m->GetLowLODVolumeMapper() == mapper;
+  }
+  if (members.size() < 2 || !member)
+  {
+    return true;
+  }
+  if (!PsiIntermixedFrames::Claim(ren, mapper, PsiIntermixedFrames::Draws::LevelsOfDetail))
+  {
+    return false; // drawn by the frame's first call, with the others
+  }
+  std::vector<std::array<double, 6>> bounds(members.size(), { { 0, 0, 0, 0, 0, 0 } });
+  std::vector<const double*> boxes;
+  for (size_t i = 0; i < members.size(); ++i)
+  {
+    if (const double* b = members[i]->GetBounds())
+    {
+      std::copy(b, b + 6, bounds[i].begin());
+    }
+    boxes.push_back(bounds[i].data());
+  }
+  DrawingTogether = true;
+  for (int i : BackToFront(boxes, ren->GetActiveCamera()))
+  {
+    members[i]->RenderVolumetricGeometry(ren);
+  }
+  DrawingTogether = false;
+  return false;
+}
