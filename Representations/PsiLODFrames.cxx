@@ -4,9 +4,12 @@
 #include "PsiLODVolume.h"
 
 #include "vtkAbstractVolumeMapper.h"
+#include "vtkBoundingBox.h"
 #include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
 #include "vtkRenderer.h"
 #include "vtkVolumeCollection.h"
+#include "vtkVolumeMapper.h"
 
 #include <algorithm>
 #include <array>
@@ -37,6 +40,33 @@ std::vector<PsiLODVolume*> Members(vtkRenderer* ren)
     }
   }
   return members;
+}
+
+// The world box that `actor`'s level of detail draws: its image's box, or the box its mapper is
+// cropped to (in parallel, this process's piece of a lattice spanned over every volume shown),
+// through the actor's matrix. False when there is none.
+bool DrawnBox(PsiLODVolume* actor, double box[6])
+{
+  auto* mapper = vtkVolumeMapper::SafeDownCast(actor->GetLowLODVolumeMapper());
+  const double* own = !mapper ? nullptr
+    : mapper->GetCropping()   ? mapper->GetCroppingRegionPlanes()
+                              : mapper->GetBounds();
+  if (!own || own[0] > own[1])
+  {
+    return false;
+  }
+  vtkBoundingBox world;
+  vtkMatrix4x4* matrix = actor->GetMatrix();
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double p[4] = { own[corner & 1], own[2 + ((corner >> 1) & 1)],
+      own[4 + ((corner >> 2) & 1)], 1 };
+    double q[4];
+    matrix->MultiplyPoint(p, q);
+    world.AddPoint(q[0] / q[3], q[1] / q[3], q[2] / q[3]);
+  }
+  world.GetBounds(box);
+  return true;
 }
 
 // The eye's depth of a point: its distance from the eye along the view direction.
@@ -137,10 +167,7 @@ bool PsiLODFrames::DrawsAlone(vtkRenderer* ren, vtkAbstractVolumeMapper* mapper)
   std::vector<const double*> boxes;
   for (size_t i = 0; i < members.size(); ++i)
   {
-    if (const double* b = members[i]->GetBounds())
-    {
-      std::copy(b, b + 6, bounds[i].begin());
-    }
+    DrawnBox(members[i], bounds[i].data());
     boxes.push_back(bounds[i].data());
   }
   DrawingTogether = true;

@@ -7,3 +7,8 @@ add_executable(TestLODImage Cxx/TestLODImage.cxx)
 target_link_libraries(TestLODImage PRIVATE PsiVolume::Representations VTK::FiltersCore
   VTK::CommonDataModel)
 add_test(NAME PsiRepresentations.LODImage COMMAND TestLODImage)
+
+# The order in which several displays' levels of detail are drawn: back to front by their boxes.
+add_executable(TestLODFrames Cxx/TestLODFrames.cxx)
+target_link_libraries(TestLODFrames PRIVATE PsiVolume::Representations VTK::RenderingCore)
+add_test(NAME PsiRepresentations.LODFrames COMMAND TestLODFrames)
