@@ -6,7 +6,9 @@ the same draws in the same order), and as close to the intermixed still frame as
 level of detail is to its own (twice its mean and largest error: two images meet along the rays
 that cross both); 'Auto' chooses the level of detail for both displays. Drawing each display's
 level of detail on its own (VTK's order of props, the later pasted over the earlier) gives 62/255
-between the orders and 61/255 from the still frame; 'Auto' then drew only the first display's."""
+between the orders and 61/255 from the still frame; 'Auto' then drew only the first display's.
+Where the two displays' modes differ, the one drawing its level of detail is not drawn again in
+the other's intermixed full frame."""
 import os
 
 import numpy as np
@@ -18,7 +20,7 @@ t = testing.Checks("test_lod_several")
 data.load_plugin(globals(), os.environ.get("PSI_PLUGIN"))
 simple._DisableFirstRenderCameraReset()  # every scene from the same camera
 SIZE = 160
-LOD = 1  # LastInteractiveImage: the volume level of detail
+FULL, LOD = 0, 1  # LastInteractiveImage: the full frame, the volume level of detail
 
 
 def set_camera(view):
@@ -28,10 +30,10 @@ def set_camera(view):
     view.CameraViewAngle = 30.0
 
 
-def scene(order, mode, two=True):
+def scene(order, mode, two=True, near_mode=None):
     """A new session's view of the Wavelets (`two`: both, in `order`; else the first alone) in
-    interaction `mode` with a budget of 0: the still frame, the interactive frame, and what drew
-    each display in it."""
+    interaction `mode` (the near one, the moved Wavelet, in `near_mode` if given) with a budget of
+    0: the still frame, the interactive frame, and what drew each display in it."""
     simple.ResetSession()
     view = testing.black_view(SIZE)
     a, array = data.wavelet(6)
@@ -39,8 +41,8 @@ def scene(order, mode, two=True):
     b.Transform.Translate = [8.0, 4.0, 12.0]
     sources = ([a, b] if order == 0 else [b, a]) if two else [a]
     displays = [data.show_volume(s, array, view, unit_distance=2.0) for s in sources]
-    for d in displays:
-        d.InteractionMode = mode
+    for src, d in zip(sources, displays):
+        d.InteractionMode = near_mode if near_mode and src is b else mode
         d.InteractiveBudget = 0.0
     set_camera(view)
     simple.Render(view)
@@ -78,4 +80,13 @@ for mode in ("Volume LOD", "Auto"):
                 "'%s', order %d: the level of detail close to the intermixed still frame (mean "
                 "%.4f, max %.0f/255; bounds %.4f, %.0f)"
                 % (mode, order, mean, largest, 2 * alone_mean, 2 * alone_max))
+# --- Modes that differ: the far display's level of detail, the near one's full frame (shown
+# later, so drawn later: the right order here). The far display is drawn once, as its level of
+# detail: the frame is no further from the still frame than one display's level of detail is from
+# its own (drawn twice, also in the near display's intermixed full frame: 0.0034).
+still, mixed, used = scene(0, "Volume LOD", near_mode="Full frame")
+mean, largest = errors(mixed, still)
+t.check(used == [LOD, FULL] and mean <= alone_mean,
+        "one display's level of detail beside the other's full frame: drawn once (mean %.4f, "
+        "bound %.4f; drew %s)" % (mean, alone_mean, used))
 t.finish()
