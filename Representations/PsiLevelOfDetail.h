@@ -4,6 +4,8 @@
 // opacity function and unit distance. Each process samples its own piece alone (ParaView's
 // vtkPResampleToImage would be collective, and a level of detail chosen by each process's own
 // frame time must not wait for the others); in parallel each process draws only its piece's box.
+// With several displays in one view, the frame's first call draws every display's image, back to
+// front (PsiLODFrames).
 //
 // Built once per piece, scalar, region and resolution, not per camera move nor per
 // transfer-function edit, on the main thread in the first interactive render that needs it: the
