@@ -37,13 +37,11 @@ psi::Lattice GlobalLattice(const double bounds[6], int resolution)
     // the longest side only (the others in proportion), the Blunt Fin's level of detail was 1.84
     // from the exact image against 0.83 for 64^3 (/255, docs/decisions.md "Interaction")
     l.Dims[k] = std::max(2, resolution);
-    // The lattice lies a millionth of each side inside the bounds, so that rounding never puts
-    // the points of the bounds' faces outside the mesh (with vtkProbeFilter, which finds them by
-    // floor((max - origin) / spacing), the whole last layer was lost: 1.5/255 against 0.7 on the
-    // Blunt Fin).
-    const double inset = 1e-6 * sides[k];
-    l.Spacing[k] = sides[k] > 0 ? (sides[k] - 2 * inset) / (l.Dims[k] - 1) : 1;
-    l.Origin[k] = bounds[2 * k] + inset;
+    // From face to face of the bounds: psi::SampleOnLattice keeps a point on a boundary face
+    // within its tolerance (vtkProbeFilter, used before it, lost the last layer there unless the
+    // lattice lay inside the bounds: 1.5/255 against 0.7 on the Blunt Fin).
+    l.Spacing[k] = sides[k] > 0 ? sides[k] / (l.Dims[k] - 1) : 1;
+    l.Origin[k] = bounds[2 * k];
   }
   return l;
 }

@@ -220,9 +220,6 @@ MUTATIONS = [
     Mutation("lod_outside_not_hidden", "Representations/PsiLODImage.cxx",
              "    if (mask->GetTuple1(i) == 0)", "    if (false)",
              ["PsiRepresentations.LODImage", "PsiPython.interaction.modes"]),
-    Mutation("lod_lattice_on_the_bounds", "Representations/PsiLODImage.cxx",
-             "const double inset = 1e-6 * sides[k];", "const double inset = 0 * sides[k];",
-             ["PsiRepresentations.LODImage"]),
     # Points that no cell uses (a shared point list) do not widen what a mesh's extent decides.
     Mutation("cell_bounds_of_every_point", "Core/PsiCellPointBounds.cxx",
              "if (std::find(used.begin(), used.end(), 0) == used.end())", "if (true)",
