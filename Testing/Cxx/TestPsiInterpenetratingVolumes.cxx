@@ -58,21 +58,27 @@ double Field(const double p[3])
   return 160 + 100 * std::sin(0.35 * p[0] + 0.2) * std::cos(0.3 * p[1]) + 40 * std::cos(0.25 * p[2]);
 }
 
+// The field at the points of `data`, as its point scalars.
+void SetField(vtkDataSet* data)
+{
+  vtkNew<vtkDoubleArray> scalars;
+  scalars->SetName("field");
+  scalars->SetNumberOfValues(data->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    data->GetPoint(i, p);
+    scalars->SetValue(i, Field(p));
+  }
+  data->GetPointData()->SetScalars(scalars);
+}
+
 // The cube [-6, 6]^3 in Kuhn tetrahedra of side `cell`, the field at its points.
 void MakeFieldMesh(vtkUnstructuredGrid* grid, double cell)
 {
   const int half = static_cast<int>(std::lround(6 / cell));
   psitest::MakeKuhnWavelet(grid, half, cell);
-  vtkNew<vtkDoubleArray> scalars;
-  scalars->SetName("field");
-  scalars->SetNumberOfValues(grid->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    grid->GetPoint(i, p);
-    scalars->SetValue(i, Field(p));
-  }
-  grid->GetPointData()->SetScalars(scalars);
+  SetField(grid);
 }
 
 // The reference scene of `grid` moved by `offset` (as the volume's position moves it).
@@ -141,6 +147,17 @@ struct Level
   Error Mixed, Alone, Order;
 };
 
+// The two volumes' transfer functions: blue-white-red with opacity from `low` to `high`, and
+// blue-to-yellow from `high` to `low`.
+void TwoTransferFunctions(
+  psitest::TransferFunction& a, psitest::TransferFunction& b, double low, double high)
+{
+  psitest::BlueWhiteRed(a.Color, 40, 280);
+  psitest::LinearOpacity(a.Opacity, 40, 280, low, high);
+  psitest::BlueToYellow(b.Color, 40, 280);
+  psitest::LinearOpacity(b.Opacity, 40, 280, high, low);
+}
+
 // One cell size: the two volumes intermixed against the two media, and each alone against its
 // own reference (the larger error of the two).
 Level MeasureLevel(double cell, const std::string& out)
@@ -149,10 +166,7 @@ Level MeasureLevel(double cell, const std::string& out)
   vtkNew<vtkUnstructuredGrid> grid;
   MakeFieldMesh(grid, cell);
   psitest::TransferFunction a(1.0), b(1.0);
-  psitest::BlueWhiteRed(a.Color, 40, 280);
-  psitest::LinearOpacity(a.Opacity, 40, 280, 0.1, 0.8);
-  psitest::BlueToYellow(b.Color, 40, 280);
-  psitest::LinearOpacity(b.Opacity, 40, 280, 0.8, 0.1);
+  TwoTransferFunctions(a, b, 0.1, 0.8);
   vtkNew<vtkPsiVolumeMapper> mapperA, mapperB;
   mapperA->SetInputData(grid);
   mapperB->SetInputData(grid);
@@ -213,15 +227,7 @@ vtkSmartPointer<vtkUnstructuredGrid> Slabs(const std::vector<double>& z0s)
     image->SetDimensions(13, 13, 2);
     image->SetOrigin(-6, -6, z0);
     image->SetSpacing(1, 1, 0.5);
-    vtkNew<vtkDoubleArray> scalars;
-    scalars->SetNumberOfValues(image->GetNumberOfPoints());
-    for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
-    {
-      double p[3];
-      image->GetPoint(i, p);
-      scalars->SetValue(i, Field(p));
-    }
-    image->GetPointData()->SetScalars(scalars);
+    SetField(image);
     vtkNew<vtkUnstructuredGrid> grid;
     psitest::TetrahedralizeImage(image, false, grid);
     all->AddInputData(grid);
@@ -239,10 +245,7 @@ void TestInterleaved(const std::string& out)
 {
   auto a = Slabs({ -3, -1, 1, 3 }), b = Slabs({ -2, 0, 2 });
   psitest::TransferFunction ta(1.0), tb(1.0);
-  psitest::BlueWhiteRed(ta.Color, 40, 280);
-  psitest::LinearOpacity(ta.Opacity, 40, 280, 0.3, 0.8);
-  psitest::BlueToYellow(tb.Color, 40, 280);
-  psitest::LinearOpacity(tb.Opacity, 40, 280, 0.8, 0.3);
+  TwoTransferFunctions(ta, tb, 0.3, 0.8);
   vtkNew<vtkPsiVolumeMapper> mapperA, mapperB;
   mapperA->SetInputData(a);
   mapperB->SetInputData(b);
