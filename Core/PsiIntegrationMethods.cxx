@@ -243,7 +243,7 @@ constexpr OpticalModel Opacity = OpticalModel::LinearOpacity;
 
 // THE table of integration methods, in psi::Method order. Name is the panel text (the XML
 // enumeration, checked by TestIntegrationMethods); GlslName is Shaders/<GlslName>.glsl (embedded
-// by Representations/CMakeLists.txt, which globs Shaders/PsiIntegrate*.glsl).
+// by Rendering/CMakeLists.txt, which globs Shaders/PsiIntegrate*.glsl).
 constexpr IntegrationMethodInfo Rows[] = {
   // Id, Name, GlslName, NeedsPsiTable, NeedsPreIntegrationTable, Model, Integrate,
   // SweepErrorBound, Reference

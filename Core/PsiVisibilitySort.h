@@ -1,4 +1,5 @@
-// PsiVisibilitySort: back-to-front ordering of tetrahedra for projected-tetrahedra compositing.
+// PsiVisibilitySort: the centroid order of tetrahedra for projected-tetrahedra compositing, back
+// to front or front to back (PsiSortDirection.h).
 //
 // Centroid sort (Maximo, Marroquim & Farias 2010, HAPT §3.1): each tetrahedron is keyed by the
 // distance from the eye to its centroid (perspective) or by the centroid's depth along the view

@@ -1,5 +1,5 @@
 // PsiIntegratorSources: the GLSL integrators Shaders/PsiIntegrate*.glsl, embedded at build time
-// (Representations/CMakeLists.txt globs them and generates PsiIntegratorSources.cxx), looked up
+// (Rendering/CMakeLists.txt globs them and generates PsiIntegratorSources.cxx), looked up
 // by the GLSL base name of a row of psi::IntegrationMethodTable() (PsiIntegrationMethods.h).
 // Each file defines `vec4 integrateSegment(float sf, float sb, float D)` and replaces
 // //PSI::Integrator::Impl in PsiVolumeFS.glsl.

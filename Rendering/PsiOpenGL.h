@@ -1,6 +1,6 @@
 /**
  * The OpenGL function loader of the VTK the plugin is built against: GLEW (`vtk_glew.h`) up to
- * VTK 9.3, glad (`vtk_glad.h`) from VTK 9.4 on. Representations/CMakeLists.txt links the one
+ * VTK 9.3, glad (`vtk_glad.h`) from VTK 9.4 on. Rendering/CMakeLists.txt links the one
  * the found VTK provides and defines PSI_GL_LOADER_GLAD when it is glad.
  */
 #ifndef PsiOpenGL_h

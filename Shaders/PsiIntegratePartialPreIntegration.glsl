@@ -1,5 +1,5 @@
 // Partial pre-integration (Moreland & Angel 2004 §4, Eqs. 7, 8, 11, 12):
-//   zeta = exp(-(tau_b + tau_f) D / 2),  Psi = table(gamma_b, gamma_f) (warped, PsiTable.h),
+//   zeta = exp(-(tau_b + tau_f) D / 2),  Psi = table(gamma_b, gamma_f) (warped, PsiPartialPreIntegrationTable.h),
 //   color = Lb (Psi - zeta) + Lf (1 - Psi),  alpha = 1 - zeta.
 vec4 integrateSegment(float sf, float sb, float D)
 {

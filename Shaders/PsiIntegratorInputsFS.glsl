@@ -5,7 +5,7 @@ uniform vec2 psiScaleShift;         // texcoord = u * scale + shift (texel cente
 
 // Psi table coordinate of (tau_b D, tau_f D): gamma = tau D / (tau D + 1) (Moreland & Angel 2004
 // Eq. 11), warped to u = 1 - sqrt(1 - gamma) = 1 - 1/sqrt(tau D + 1) so that the sqrt(1 - gamma)
-// edge behavior of Psi is linear in the table (PsiTable.h). tau D = inf gives u = 1, not NaN.
+// edge behavior of Psi is linear in the table (PsiPartialPreIntegrationTable.h). tau D = inf gives u = 1, not NaN.
 vec2 psiCoord(vec2 tauD)
 {
   return (1.0 - inversesqrt(tauD + 1.0)) * psiScaleShift.x + psiScaleShift.y;

@@ -13,7 +13,11 @@
   - the shipped Python package (Python/psivolume) reads no environment variable, but for
     psivolume.process, which passes the environment on to child processes;
   - every XML file of the source (server-manager XML, GUI test scripts, templates) is well-formed:
-    ParaView's readers of test scripts stop, or crash, where Python's parser reports the error.
+    ParaView's readers of test scripts stop, or crash, where Python's parser reports the error;
+  - no stale reference (stale_references): every path of the tree that the README, docs/*.md or
+    a comment names exists, every Psi*.h named exists, every header of a module is in its
+    module's CMakeLists.txt, and (with --build-dir, as CTest runs it) every CTest test named is
+    registered, or names a group of registered tests.
 Function bodies are found by brace matching on the source with comments and strings removed:
 a body is the braces that follow a line ending a signature `)` (or `) const`, `override`).
 Prints every violation and exits 1 when there is one."""
@@ -91,8 +95,99 @@ def malformed_xml():
     return errors
 
 
+# Paths of the tree as text names them: a top folder (not within a longer path), then a name.
+PATH = re.compile(r"(?<![\w/.$-])((?:Core|Rendering|Representations|Filters|Readers|Reference|"
+                  r"Shaders|Testing|Python|scripts|docs|cmake|XML|Qt|Benchmarks|Plugin)/"
+                  r"[A-Za-z0-9_./-]*[A-Za-z0-9_])")
+HEADER = re.compile(r"(?<![\w/])((?:vtk)?Psi[A-Za-z0-9]+\.h)\b")
+TEST = re.compile(r"\b(Psi(?:Core|Rendering|Representations|Python|Installed|GUI|Headless|Project|"
+                  r"Filters|Readers)\.[A-Za-z0-9_]+(?:\.[A-Za-z0-9_]+)*)")
+MODULES = ["Core", "Rendering", "Representations", "Filters", "Readers"]
+# Where a build writes (named in comments, not in the source tree).
+GENERATED = ("Testing/Images", "Testing/Temporary")
+
+
+def texts():
+    """(path, text) of what names the tree: the README, docs/*.md and the sources' files."""
+    paths = [ROOT / "README.md"] + sorted((ROOT / "docs").glob("*.md"))
+    for folder in MODULES + ["Reference", "Shaders", "Testing", "Python", "scripts", "cmake", "XML",
+                             "Qt", "Benchmarks", "Plugin"]:
+        paths += sorted(p for p in (ROOT / folder).rglob("*") if p.is_file() and p.suffix in
+                        (".h", ".cxx", ".glsl", ".py", ".cmake", ".txt", ".xml", ".sh", ".md"))
+    paths.append(ROOT / "CMakeLists.txt")
+    # not the mutation list: its replacements are wrong on purpose
+    return [(p, p.read_text(errors="replace")) for p in paths
+            if "__pycache__" not in p.parts and p.name != "mutations.py"]
+
+
+def tree_paths():
+    """Every file and folder of the source tree, relative to it."""
+    found = set()
+    for p in ROOT.rglob("*"):
+        rel = p.relative_to(ROOT)
+        if not rel.parts[0].startswith(("build", ".", "dist")) and "__pycache__" not in rel.parts:
+            found.add(rel.as_posix())
+    return found
+
+
+def names_path(name, where, paths):
+    """Whether `name`, as the file at `where` writes it, is a path of the tree: from the top or
+    from a folder above that file, with or without its extension, or as the start of a name
+    (a family: Shaders/PsiIntegrate for Shaders/PsiIntegrate*.glsl); placeholders (NAME) and
+    what a build writes pass."""
+    if "*" in name or any(part.isupper() and part != "XML" for part in re.split(r"[/._-]", name)) \
+            or name.startswith(GENERATED):
+        return True
+    bases = [""] + ["/".join(where.parts[:k]) + "/" for k in range(1, len(where.parts))]
+    return any(any(p.startswith(base + name) for p in paths) for base in bases)
+
+
+def known_tests(build):
+    """The CTest names the build registers, and those the Testing/*.cmake files register only
+    under conditions (another ParaView, a fuzzer): add_test(NAME ...) and psi_add_python_test."""
+    names = set()
+    for f in pathlib.Path(build).rglob("CTestTestfile.cmake"):
+        names |= {a or b for a, b in re.findall(
+            r"^add_test\((?:\[=\[(.+?)\]=\]|(\S+))", f.read_text(), re.M)}
+    for f in (ROOT / "Testing").glob("*.cmake"):
+        text = f.read_text()
+        names |= set(re.findall(r"add_test\(NAME (Psi[\w.]+)", text))
+        names |= {"PsiPython." + n for n in re.findall(r"psi_add_python_test\((\w+)", text)}
+    return names
+
+
+def stale_references(build=None):
+    """Names of the tree that do not exist (see the module's docstring)."""
+    errors = []
+    paths = tree_paths()
+    # and those the build generates: the modules' export headers, the embedded shaders
+    headers = {pathlib.PurePath(p).name for p in paths if p.endswith(".h")} | \
+        {pathlib.PurePath(p).stem + ".h" for p in paths if p.endswith(".glsl")}
+    tests = known_tests(build) if build else None
+    for path, text in texts():
+        rel = path.relative_to(ROOT)
+        for number, line in enumerate(text.splitlines(), 1):
+            for name in PATH.findall(line):
+                if not names_path(name, rel, paths):
+                    errors.append("%s:%d: names %s, which does not exist" % (rel, number, name))
+            for name in HEADER.findall(line):
+                if name not in headers and not name.endswith("Module.h"):
+                    errors.append("%s:%d: names %s, which does not exist" % (rel, number, name))
+            for name in TEST.findall(line) if tests is not None else []:
+                if not name.split(".")[-1].isupper() and not any(t.startswith(name) for t in tests):
+                    errors.append("%s:%d: names the test %s, which is not registered"
+                                  % (rel, number, name))
+    for module in MODULES:
+        listed = (ROOT / module / "CMakeLists.txt").read_text()
+        for header in sorted((ROOT / module).glob("*.h")):
+            if header.stem not in listed:
+                errors.append("%s/%s: not in %s/CMakeLists.txt" % (module, header.name, module))
+    return errors
+
+
 def main():
-    errors = malformed_xml()
+    build = sys.argv[sys.argv.index("--build-dir") + 1] if "--build-dir" in sys.argv else None
+    errors = malformed_xml() + stale_references(build)
     for folder in FOLDERS:
         for path in sorted((ROOT / folder).glob("*.[ch]xx")) + sorted((ROOT / folder).glob("*.h")):
             rel = path.relative_to(ROOT)

@@ -596,6 +596,11 @@ MUTATIONS = [
              "    key << m.Mapper << ':' << M.Mesh.GetVersion();", ["PsiPython.intermixed"]),
     Mutation("intermixed_nodes_sampled_from_the_first_property", "Rendering/PsiAdaptiveNodes.cxx",
              "  if (this->Given)\n", "  if (false)\n", ["PsiRendering.IntermixedVolumes"]),
+    # --- Stale references (scripts/check-structure.py): a test name, a module's header list.
+    Mutation("docs_name_a_removed_test", "docs/architecture.md",
+             "(`PsiRendering.PlainVTKPython`)", "(`PsiPython.plain_vtk`)", ["PsiProject.Structure"]),
+    Mutation("header_left_out_of_its_module", "Core/CMakeLists.txt",
+             "    PsiSortDirection.h\n", "", ["PsiProject.Structure"]),
     # --- The exact reference of several media (Reference/PsiReferenceMedia, PsiReferenceIntegrals).
     Mutation("media_emission_of_the_last_only", "Reference/PsiReferenceIntegrals.cxx",
              "        emission += tau * (m.Lf[c] + (R(m.Lb[c]) - m.Lf[c]) * u);",
