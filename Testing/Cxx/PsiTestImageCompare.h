@@ -52,6 +52,26 @@ struct Result
   double P999 = 0;     ///< 99.9th percentile of the channels' errors (a few stray pixels aside)
 };
 
+/// The mean and the largest difference of `image`'s channels from `ref`'s, the reference clamped
+/// to [0, 1] as an 8-bit image shows it.
+struct Difference
+{
+  double Mean = 0, Max = 0;
+};
+
+inline Difference DifferenceFrom(const std::vector<double>& image, const std::vector<double>& ref)
+{
+  Difference d;
+  for (size_t i = 0; i < image.size() && i < ref.size(); ++i)
+  {
+    const double e = std::abs(image[i] - std::min(1.0, std::max(0.0, ref[i])));
+    d.Mean += e;
+    d.Max = std::max(d.Max, e);
+  }
+  d.Mean /= std::max<size_t>(1, image.size());
+  return d;
+}
+
 /// The largest difference of two images' channels.
 inline double LargestDifference(const std::vector<double>& a, const std::vector<double>& b)
 {

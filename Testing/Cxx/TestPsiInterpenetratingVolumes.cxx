@@ -125,26 +125,9 @@ psi::ReferenceScene PieceOrderScene(const psi::ReferenceScene& a, const psi::Ref
   return both;
 }
 
-struct Error
-{
-  double Largest = 0, Mean = 0;
-};
-
-Error Measure(const std::vector<double>& gpu, const std::vector<double>& ref)
-{
-  Error e;
-  for (size_t i = 0; i < ref.size(); ++i)
-  {
-    const double d = std::abs(gpu[i] - std::min(1.0, std::max(0.0, ref[i])));
-    e.Largest = std::max(e.Largest, d);
-    e.Mean += d / ref.size();
-  }
-  return e;
-}
-
 struct Level
 {
-  Error Mixed, Alone, Order;
+  psitest::Difference Mixed, Alone, Order;
 };
 
 // The two volumes' transfer functions: blue-white-red with opacity from `low` to `high`, and
@@ -190,8 +173,8 @@ Level MeasureLevel(double cell, const std::string& out)
   Level level;
   const std::vector<double> gpu = psitest::GrabRGB(view.Window);
   const std::vector<double> ref = psi::RenderReferenceMedia({ &sa, &sb }, rc);
-  level.Mixed = Measure(gpu, ref);
-  level.Order = Measure(psi::RenderReference(PieceOrderScene(sa, sb), rc), ref);
+  level.Mixed = psitest::DifferenceFrom(gpu, ref);
+  level.Order = psitest::DifferenceFrom(psi::RenderReference(PieceOrderScene(sa, sb), rc), ref);
   if (!out.empty())
   {
     const std::string name = out + "/interpenetrating_" + std::to_string(grid->GetNumberOfCells());
@@ -203,15 +186,16 @@ Level MeasureLevel(double cell, const std::string& out)
     view.Volume->SetVisibility(alone == view.Volume.GetPointer());
     second->SetVisibility(alone == second.GetPointer());
     const psi::ReferenceScene& s = alone == second.GetPointer() ? sb : sa;
-    const Error e = Measure(psitest::GrabRGB(view.Window), psi::RenderReference(s, rc));
-    level.Alone.Largest = std::max(level.Alone.Largest, e.Largest);
+    const psitest::Difference e =
+      psitest::DifferenceFrom(psitest::GrabRGB(view.Window), psi::RenderReference(s, rc));
+    level.Alone.Max = std::max(level.Alone.Max, e.Max);
     level.Alone.Mean = std::max(level.Alone.Mean, e.Mean);
   }
   std::printf("cells of %.2f (%lld tetrahedra each): intermixed against two media: largest "
               "%.1f/255, mean %.3f/255; each alone against its reference: largest %.1f/255, mean "
               "%.3f/255; cells composited whole in exact arithmetic: largest %.1f/255, mean %.3f/255\n",
-    cell, static_cast<long long>(grid->GetNumberOfCells()), 255 * level.Mixed.Largest,
-    255 * level.Mixed.Mean, 255 * level.Alone.Largest, 255 * level.Alone.Mean, 255 * level.Order.Largest,
+    cell, static_cast<long long>(grid->GetNumberOfCells()), 255 * level.Mixed.Max,
+    255 * level.Mixed.Mean, 255 * level.Alone.Max, 255 * level.Alone.Mean, 255 * level.Order.Max,
     255 * level.Order.Mean);
   std::printf("  %.1f s\n",
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -275,13 +259,13 @@ void TestInterleaved(const std::string& out)
       const std::vector<double> gpu = psitest::GrabRGB(view.Window);
       const std::vector<double> ref = psi::RenderReferenceMedia(
         { &sa, &sb }, psitest::ReferenceCameraOf(view.Renderer, W, H));
-      const Error e = Measure(gpu, ref);
+      const psitest::Difference e = psitest::DifferenceFrom(gpu, ref);
       std::printf("interleaved in depth, view %d, %s: largest %.1f/255, mean %.3f/255\n", v,
-        sort == psi::Sorts::MPVONC ? "MPVONC" : "centroid", 255 * e.Largest, 255 * e.Mean);
-      PSI_CHECK(e.Largest <= 6.0 / 255 && e.Mean <= 0.5 / 255,
+        sort == psi::Sorts::MPVONC ? "MPVONC" : "centroid", 255 * e.Max, 255 * e.Mean);
+      PSI_CHECK(e.Max <= 6.0 / 255 && e.Mean <= 0.5 / 255,
         "interleaved in depth, view %d, sort %d: the exact image within the renderer's own error "
         "(largest %.1f/255 <= 6, mean %.3f/255 <= 0.5)", v, static_cast<int>(sort),
-        255 * e.Largest, 255 * e.Mean);
+        255 * e.Max, 255 * e.Mean);
       if (!out.empty() && sort == psi::Sorts::MPVONC)
       {
         psitest::WritePng(out + "/interleaved_" + std::to_string(v) + ".png", gpu, W, H);
@@ -300,26 +284,26 @@ int main(int argc, char* argv[])
   for (int k = 0; k < 3; ++k)
   {
     const Level l = levels[k] = MeasureLevel(cells[k], out);
-    PSI_CHECK(l.Order.Largest <= BoundLargest(cells[k]) && l.Order.Mean <= BoundMean(cells[k]),
+    PSI_CHECK(l.Order.Max <= BoundLargest(cells[k]) && l.Order.Mean <= BoundMean(cells[k]),
       "cells of %.2f: cells composited whole where two volumes overlap, within the documented "
       "bound of the two media (largest %.1f/255 <= %.1f/255, mean %.3f/255 <= %.3f/255)",
-      cells[k], 255 * l.Order.Largest, 255 * BoundLargest(cells[k]), 255 * l.Order.Mean,
+      cells[k], 255 * l.Order.Max, 255 * BoundLargest(cells[k]), 255 * l.Order.Mean,
       255 * BoundMean(cells[k]));
-    PSI_CHECK(l.Mixed.Largest <= l.Alone.Largest + l.Order.Largest + 1.0 / 255 &&
+    PSI_CHECK(l.Mixed.Max <= l.Alone.Max + l.Order.Max + 1.0 / 255 &&
         l.Mixed.Mean <= l.Alone.Mean + l.Order.Mean + 0.1 / 255,
       "cells of %.2f: two interpenetrating volumes drawn intermixed within the renderer's own "
       "error plus that of cells composited whole (largest %.1f/255 <= %.1f + %.1f + 1, mean "
       "%.3f/255 <= %.3f + %.3f + 0.1)",
-      cells[k], 255 * l.Mixed.Largest, 255 * l.Alone.Largest, 255 * l.Order.Largest,
+      cells[k], 255 * l.Mixed.Max, 255 * l.Alone.Max, 255 * l.Order.Max,
       255 * l.Mixed.Mean, 255 * l.Alone.Mean, 255 * l.Order.Mean);
   }
   for (int k = 1; k < 3; ++k)
   {
-    PSI_CHECK(levels[k].Order.Largest <= 0.7 * levels[k - 1].Order.Largest &&
+    PSI_CHECK(levels[k].Order.Max <= 0.7 * levels[k - 1].Order.Max &&
         levels[k].Order.Mean <= 0.7 * levels[k - 1].Order.Mean,
       "halving the cells (%.2f to %.2f) brings cells composited whole closer to the two media "
       "(largest %.1f/255 to %.1f/255, mean %.3f/255 to %.3f/255: each at most 0.7x)",
-      cells[k - 1], cells[k], 255 * levels[k - 1].Order.Largest, 255 * levels[k].Order.Largest,
+      cells[k - 1], cells[k], 255 * levels[k - 1].Order.Max, 255 * levels[k].Order.Max,
       255 * levels[k - 1].Order.Mean, 255 * levels[k].Order.Mean);
   }
   return psitest::Report("TestPsiInterpenetratingVolumes");

@@ -49,24 +49,6 @@ std::vector<double> Reference(vtkRenderer* ren, const psi::ReferenceScene& scene
   return psi::RenderReference(scene, psitest::ReferenceCameraOf(ren, W, H));
 }
 
-struct Diff
-{
-  double Mean = 0, Max = 0;
-};
-
-Diff Compare(const std::vector<double>& a, const std::vector<double>& b)
-{
-  Diff d;
-  for (size_t i = 0; i < a.size(); ++i)
-  {
-    const double e = std::abs(a[i] - std::min(1.0, std::max(0.0, b[i])));
-    d.Mean += e;
-    d.Max = std::max(d.Max, e);
-  }
-  d.Mean /= a.size();
-  return d;
-}
-
 bool Finite(const std::vector<double>& img)
 {
   return std::all_of(img.begin(), img.end(), [](double v) { return std::isfinite(v); });
@@ -162,7 +144,7 @@ void CheckVariantsDrawThePlainVolume(Scene& s)
           mapper->SetAdaptiveSampling(adaptive ? psi::AdaptiveModes::On : psi::AdaptiveModes::Off);
           const std::vector<double> img = Grab(win);
           const std::string defs = mapper->GetLastFeatureDefines();
-          const Diff d = Compare(img, plain);
+          const psitest::Difference d = psitest::DifferenceFrom(img, plain);
           ++variants;
           const bool hasIso = defs.find(iso == 1 ? "PSI_ISO_COUNT 1\n" : "PSI_ISO_COUNT 3\n") !=
             std::string::npos;
@@ -222,7 +204,9 @@ void CheckAdaptiveSamplingCatchesASpike(Scene& s)
   mapper->SetAdaptiveSampling(psi::AdaptiveModes::Auto);
   const std::vector<double> autoImg = Grab(win);
   PSI_CHECK(mapper->GetLastUsedAdaptiveSampling(), "Auto: the table misses the spike's peak");
-  const Diff dOff = Compare(off, ref), dOn = Compare(on, ref), dAuto = Compare(autoImg, on);
+  const psitest::Difference dOff = psitest::DifferenceFrom(off, ref),
+                            dOn = psitest::DifferenceFrom(on, ref),
+                            dAuto = psitest::DifferenceFrom(autoImg, on);
   // how much of the reference's spike (its difference from the background) each one shows
   const double* bg = ren->GetBackground();
   double sRef = 0, sOff = 0, sOn = 0;
@@ -388,7 +372,7 @@ void CheckIsosurfaceMethodsAgreeInView(Scene& s, const IsoCase& k, int index, in
   if (frontToBack && usedMT)
   {
     mapper->EarlyRayTerminationOff();
-    fromBack = Compare(mt, Grab(win)).Max;
+    fromBack = psitest::DifferenceFrom(mt, Grab(win)).Max;
     mapper->EarlyRayTerminationOn();
   }
   PSI_CHECK(fromBack <= 1.0 / 255 + 1e-9,
@@ -401,7 +385,7 @@ void CheckIsosurfaceMethodsAgreeInView(Scene& s, const IsoCase& k, int index, in
                                          : psi::IsosurfaceMethods::PerFragment),
     "%s view %d: Auto uses marching tetrahedra exactly when early discard applies", k.Name, view);
   s.View.Renderer->RemoveActor(s.Plane);
-  const Diff d = Compare(mt, perFragment);
+  const psitest::Difference d = psitest::DifferenceFrom(mt, perFragment);
   int differ = 0;
   for (size_t i = 0; i < mt.size(); i += 3)
   {
@@ -523,7 +507,7 @@ void CheckTimeStepGradients(Scene& s)
     copy->DeepCopy(step);
     mapper->SetInputData(copy);
     const std::vector<double> fresh = Grab(win);
-    const Diff d = Compare(next, fresh);
+    const psitest::Difference d = psitest::DifferenceFrom(next, fresh);
     std::printf("time step, smooth isosurfaces (%s): vs the step drawn first: mean %.5f max "
                 "%.3f\n", method == psi::IsosurfaceMethods::PerFragment ? "per fragment"
                                                                 : "marching tetrahedra",
