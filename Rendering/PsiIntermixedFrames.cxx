@@ -59,20 +59,33 @@ Frames& FramesOf(vtkRenderer* ren)
 }
 } // namespace
 
-std::vector<PsiIntermixedMember> PsiIntermixedFrames::Members(vtkRenderer* ren)
+std::vector<vtkVolume*> PsiIntermixedFrames::VisibleVolumes(vtkRenderer* ren)
 {
-  std::vector<PsiIntermixedMember> members;
+  std::vector<vtkVolume*> visible;
   vtkVolumeCollection* volumes = ren ? ren->GetVolumes() : nullptr;
   if (!volumes)
   {
-    return members;
+    return visible;
   }
   vtkCollectionSimpleIterator it;
   volumes->InitTraversal(it);
   while (vtkVolume* vol = volumes->GetNextVolume(it))
   {
+    if (vol->GetVisibility())
+    {
+      visible.push_back(vol);
+    }
+  }
+  return visible;
+}
+
+std::vector<PsiIntermixedMember> PsiIntermixedFrames::Members(vtkRenderer* ren)
+{
+  std::vector<PsiIntermixedMember> members;
+  for (vtkVolume* vol : VisibleVolumes(ren))
+  {
     auto* mapper = vtkPsiVolumeMapper::SafeDownCast(vol->GetMapper());
-    if (vol->GetVisibility() && mapper && !mapper->GetDrawnByStandIn() && mapper->GetInput() &&
+    if (mapper && !mapper->GetDrawnByStandIn() && mapper->GetInput() &&
       mapper->GetInput()->GetNumberOfCells() > 0)
     {
       members.push_back({ vol, mapper });

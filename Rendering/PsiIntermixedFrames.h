@@ -31,6 +31,8 @@ enum class Draws
   LevelsOfDetail
 };
 
+/// The visible volumes of `ren`, in the renderer's order (empty without a renderer).
+std::vector<vtkVolume*> VisibleVolumes(vtkRenderer* ren);
 /// The members of `ren`, in the renderer's order of its volumes.
 std::vector<PsiIntermixedMember> Members(vtkRenderer* ren);
 /// Whether this call of `mapper` draws the frame's intermixed volumes: true for the first

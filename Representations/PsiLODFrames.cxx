@@ -8,7 +8,6 @@
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
 #include "vtkRenderer.h"
-#include "vtkVolumeCollection.h"
 #include "vtkVolumeMapper.h"
 
 #include <algorithm>
@@ -24,17 +23,10 @@ bool DrawingTogether = false;
 std::vector<PsiLODVolume*> Members(vtkRenderer* ren)
 {
   std::vector<PsiLODVolume*> members;
-  vtkVolumeCollection* volumes = ren ? ren->GetVolumes() : nullptr;
-  if (!volumes)
-  {
-    return members;
-  }
-  vtkCollectionSimpleIterator it;
-  volumes->InitTraversal(it);
-  while (vtkVolume* vol = volumes->GetNextVolume(it))
+  for (vtkVolume* vol : PsiIntermixedFrames::VisibleVolumes(ren))
   {
     auto* actor = PsiLODVolume::SafeDownCast(vol);
-    if (actor && actor->GetVisibility() && actor->DrawsVolumeLOD())
+    if (actor && actor->DrawsVolumeLOD())
     {
       members.push_back(actor);
     }
