@@ -39,25 +39,21 @@ def _capture(size, volumes_only=False):
         raise RuntimeError("no active view")
     old_size, old_ppi = list(view.ViewSize), view.PPI
     view.ViewSize, view.PPI = list(size), 72
-    hidden = []
-    if volumes_only:
-        hidden = [r for r in view.Representations if r.GetXMLName().startswith("ScalarBar")
-                  and r.Visibility]
-        hidden.append(view) if view.OrientationAxesVisibility else None
-        for r in hidden:
-            if r is view:
-                view.OrientationAxesVisibility = 0
-            else:
-                r.Visibility = 0
+    legends = [r for r in view.Representations if volumes_only and r.Visibility and
+               r.GetXMLName().startswith("ScalarBar")]
+    axes = volumes_only and view.OrientationAxesVisibility
+    for r in legends:
+        r.Visibility = 0
+    if axes:
+        view.OrientationAxesVisibility = 0
     try:
         image = view.SMProxy.CaptureWindow(1)
     finally:
         view.ViewSize, view.PPI = old_size, old_ppi
-        for r in hidden:
-            if r is view:
-                view.OrientationAxesVisibility = 1
-            else:
-                r.Visibility = 1
+        for r in legends:
+            r.Visibility = 1
+        if axes:
+            view.OrientationAxesVisibility = 1
     if image is None:
         raise RuntimeError("CaptureWindow returned nothing")
     return image
