@@ -29,19 +29,52 @@ bool IsoTriangles(const psi::Settings& s, const PsiSceneFacts& facts, psi::Shade
   return !facts.GeometryOutputFits || facts.GeometryOutputFits(f);
 }
 
-// Front to back with early ray termination when it is on and a pixel can turn opaque: the
-// volume's opacity can reach psi::SaturatedOpacity along a ray through the bounds, or an
-// isosurface may hide what is behind it, and no earlier frame of the same data and transfer
-// function found every pixel short of opaque (its masks cost and saved nothing); the driver can
-// mask opaque pixels. Not within depth peeling, whose passes composite
-// the volume with the translucent geometry between the peels back to front.
-bool FrontToBack(const psi::Settings& s, const PsiSceneFacts& facts, const psi::ShaderFeatures& f)
+// Whether front to back with early ray termination can draw the frame: the driver can mask
+// opaque pixels, and not within depth peeling, whose passes composite the volume with the
+// translucent geometry between the peels back to front.
+bool FrontToBackPossible(const PsiSceneFacts& facts, const psi::ShaderFeatures& f)
+{
+  return facts.MasksOpaquePixels && !f.DepthPeel;
+}
+
+// Whether a pixel can turn opaque: the volume's opacity can reach psi::SaturatedOpacity along a
+// ray through the bounds, or an isosurface may hide what is behind it. Where none can, front to
+// back has nothing to stop and its masks only cost.
+bool CanSaturate(const psi::Settings& s, const PsiSceneFacts& facts)
 {
   const std::vector<float> isoOpacities = s.Isosurfaces().Opacities;
-  const bool canSaturate = facts.MaxRayOpacity >= psi::SaturatedOpacity ||
+  return facts.MaxRayOpacity >= psi::SaturatedOpacity ||
     std::any_of(isoOpacities.begin(), isoOpacities.end(), [](float a) { return a > 0; });
-  return s.EarlyRayTermination && facts.MasksOpaquePixels && !f.DepthPeel && canSaturate &&
-    !facts.MasksFoundNoOpaque;
+}
+
+// The plan's way with each 'Auto' at its default, and the alternatives that draw the same
+// image, open to measurement where the setting is 'Auto' (psi::MeasuredChoice). Front to back
+// when 'On' (with the default masks), or under 'Auto' where a pixel can turn opaque, with back
+// to front and fewer masks timed against it.
+// The compute projector where the driver runs it. The fan where its fragments find exact
+// segments from the face planes (perspective with exact segments: in parallel it interpolates
+// HAPT's screen-linear thickness, 6/255 from the silhouettes' image on TestPsiMeasuredChoice's
+// scene) and nothing needs silhouettes. Within depth peeling
+// (one call per peeling stage) nothing is measured.
+void PlanWay(PsiFramePlan& plan, const psi::Settings& s, const PsiSceneFacts& facts)
+{
+  const psi::ShaderFeatures& f = plan.Features;
+  using ERT = psi::EarlyRayTerminations;
+  const bool possible = FrontToBackPossible(facts, f);
+  const bool autoFront = s.EarlyRayTermination == ERT::Auto && possible && CanSaturate(s, facts);
+  plan.Way.FrontToBack = (s.EarlyRayTermination == ERT::On && possible) || autoFront;
+  plan.Way.ComputeProjector = psi::UsesComputeProjector(s);
+  plan.Way.Silhouette = f.Silhouette;
+  plan.Open.Direction = autoFront;
+  plan.Open.MasksPerFrame = autoFront;
+  plan.Open.Projector = s.Projector == psi::Projectors::Auto && facts.ComputeAvailable;
+  plan.Open.Decomposition =
+    s.Decomposition == psi::Decompositions::Auto && f.Silhouette && !f.SeparateOpacity &&
+    f.ExactSegments;
+  if (facts.DepthPeeled)
+  {
+    plan.Open = psi::DrawWayOptions();
+  }
 }
 } // namespace
 
@@ -97,6 +130,14 @@ PsiFramePlan PlanFrame(const psi::Settings& s, const PsiSceneFacts& facts)
   plan.Tables.AdaptiveNodes = f.Adaptive;
   plan.Tables.Gradients = f.IsoSmooth;
   plan.SceneDepth = facts.SceneOpaque || f.NearClip || f.OpaqueClip;
-  plan.FrontToBack = FrontToBack(s, facts, f);
+  PlanWay(plan, s, facts);
+  return plan;
+}
+
+PsiFramePlan UseWay(PsiFramePlan plan, const psi::DrawWay& way)
+{
+  plan.Trial = way != plan.Way;
+  plan.Way = way;
+  plan.Features.Silhouette = way.Silhouette;
   return plan;
 }

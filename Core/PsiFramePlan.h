@@ -8,6 +8,7 @@
 #ifndef PsiFramePlan_h
 #define PsiFramePlan_h
 
+#include "PsiMeasuredChoice.h"
 #include "PsiSettings.h"
 #include "PsiShaderFeatures.h"
 #include "PsiVolumeCoreModule.h"
@@ -31,9 +32,8 @@ struct PsiSceneFacts
   double MaxRayOpacity = 1;
   /// The driver can mask the opaque pixels between draws (PsiRenderTarget::CanMaskOpaquePixels).
   bool MasksOpaquePixels = true;
-  /// An earlier frame of the same data, transfer function and unit distance went front to back
-  /// and its masks found no opaque pixel.
-  bool MasksFoundNoOpaque = false;
+  /// The driver runs the compute projector (OpenGL 4.3, PsiComputeProjector::Chosen).
+  bool ComputeAvailable = false;
   /// Whether the geometry shader composed for these features fits the driver's output limits
   /// (the mapper asks psi::FitsGeometryOutputLimits with GL_MAX_GEOMETRY_OUTPUT_VERTICES and
   /// GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS); empty: not asked, it fits.
@@ -62,10 +62,16 @@ struct PsiFramePlan
   } Tables;
   /// Copy the scene's depth for the depth test (opaque geometry, or the shaders sample it).
   bool SceneDepth = false;
-  /// Composite front to back ("under", the nearest tetrahedra first) and stop shading the
-  /// pixels whose opacity has reached psi::SaturatedOpacity (early ray termination); else back
-  /// to front ("over").
-  bool FrontToBack = false;
+  /// How the frame is drawn: front to back ("under", the nearest tetrahedra first, shading
+  /// stopped where a pixel's opacity has reached psi::SaturatedOpacity: early ray termination)
+  /// or back to front ("over"); the projector; silhouettes or the fan (Features.Silhouette
+  /// follows it). Each 'Auto' resolved to its default; psi::MeasuredChoice may pick another of
+  /// the Open ways, which draw the same image (UseWay).
+  psi::DrawWay Way;
+  psi::DrawWayOptions Open;
+  /// The way is an alternative to Way being timed (UseWay, psi::MeasuredChoice): a draw error
+  /// of its own is not the user's (the way just loses).
+  bool Trial = false;
   /// Full pre-integration asked for with a separate opacity array draws as partial
   /// pre-integration: Röttger's table tabulates one scalar for color and opacity.
   bool MethodReplaced = false;
@@ -74,6 +80,8 @@ struct PsiFramePlan
 /// The frame's plan (the rules are commented where they are applied, PsiFramePlan.cxx).
 PSIVOLUMECORE_EXPORT PsiFramePlan PlanFrame(
   const psi::Settings& settings, const PsiSceneFacts& facts);
+/// The plan drawn the way `way` (plan.Way, or one of plan.Open's alternatives to it: a Trial).
+PSIVOLUMECORE_EXPORT PsiFramePlan UseWay(PsiFramePlan plan, const psi::DrawWay& way);
 /// Whether the scene calls for the adaptive nodes to be computed before the plan: adaptive
 /// sampling is on or 'Auto' (the nodes' deviation decides 'Auto').
 PSIVOLUMECORE_EXPORT bool NeedsAdaptiveNodes(const psi::Settings& settings);

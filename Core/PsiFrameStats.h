@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <string>
 
 namespace psi
 {
@@ -21,6 +22,9 @@ struct FrameStats
   /// largest), and that combined draw's tetrahedra (summed).
   int64_t IntermixedVolumes = 0;
   int64_t IntermixedTetrahedra = 0;
+  /// How the frame was drawn and how that way was chosen (psi::DrawWay::Describe and
+  /// psi::MeasuredChoice::Describe; the first process's).
+  std::string DrawWay;
 
   /// Combines another process's frame: counts add up, the slowest process sets the times.
   void Add(const FrameStats& o)
@@ -34,6 +38,7 @@ struct FrameStats
       std::max(this->LastPreIntegrationSeconds, o.LastPreIntegrationSeconds);
     this->IntermixedVolumes = std::max(this->IntermixedVolumes, o.IntermixedVolumes);
     this->IntermixedTetrahedra += o.IntermixedTetrahedra;
+    this->DrawWay = this->DrawWay.empty() ? o.DrawWay : this->DrawWay;
   }
 };
 

@@ -29,7 +29,8 @@
 //  EarlyDiscard: drop tetrahedra whose scalar range sees zero opacity only, in the geometry
 //    shader (Maximo et al. 2010 §3.5; used only where the opacity function has zero regions).
 //  EarlyRayTermination: composite front to back and stop shading a pixel once it is opaque
-//    (PsiFramePlan.h; used only where a pixel can turn opaque, and not within depth peeling).
+//    (psi::EarlyRayTerminations; never within depth peeling). Its 0 and 1 are the former
+//    switch's off and on, so that a state file saved with the switch keeps its meaning.
 //  TransferFunctionSamples: samples of the transfer-function table.
 //  AdaptiveSampling: split segments at transfer-function nodes (Moreland's dissertation §4.3).
 //  IsosurfaceOpacity: opacity of every isovalue without its own (0..1; 1 hides what is behind).
@@ -46,7 +47,7 @@
   ENUM(Decomposition, Decompositions, Auto, Auto)                                                 \
   BOOL(ExactPerspectiveSegments, true, MAPPER)                                                    \
   BOOL(EarlyDiscard, true, PROPERTY)                                                              \
-  BOOL(EarlyRayTermination, true, PROPERTY)                                                       \
+  ENUM(EarlyRayTermination, EarlyRayTerminations, Auto, On)                                       \
   NUMBER(TransferFunctionSamples, int, 1024, 2, 65536, MAPPER)                                    \
   ENUM(AdaptiveSampling, AdaptiveModes, Auto, Auto)                                               \
   NUMBER(IsosurfaceOpacity, double, 1, 0, 1, PROPERTY)                                            \

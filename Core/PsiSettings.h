@@ -38,6 +38,18 @@ enum class Projectors : int
   Auto = 2
 };
 
+/// Front-to-back compositing with early ray termination (EarlyRayTermination). 'Auto' draws
+/// front to back where a pixel can turn opaque and times back to front against it on the
+/// user's scene (psi::MeasuredChoice); 'On' draws front to back wherever the driver can mask
+/// opaque pixels. The numbers keep a state file of the former on/off switch meaning the same:
+/// its 'on' was 'Auto'.
+enum class EarlyRayTerminations : int
+{
+  Off = 0,
+  Auto = 1,
+  On = 2
+};
+
 /// How each projection is drawn (Decomposition); see UsesSilhouettes for 'Auto'.
 enum class Decompositions : int
 {
@@ -187,11 +199,12 @@ PSIVOLUMECORE_EXPORT SettingChange Change(InteractionSettings& s, Setting id, do
 
 ///@{
 /// Where each 'Auto' is resolved.
-/// The compute projector only when asked for: 'Auto' is the geometry shader, measured the faster
-/// of the two with Mesa's llvmpipe (docs/decisions.md, "Projectors").
+/// The compute projector when asked for. 'Auto' starts with the geometry shader, usually the
+/// faster with Mesa's llvmpipe (docs/decisions.md, "Projectors"); the plan opens the compute
+/// projector to timing (PlanFrame, psi::MeasuredChoice).
 PSIVOLUMECORE_EXPORT bool UsesComputeProjector(const Settings& s);
-/// Silhouettes unless the fan is asked for: 'Auto' is the silhouette, which draws half the
-/// triangles and is the faster with llvmpipe (docs/decisions.md, "Silhouettes").
+/// Silhouettes unless the fan is asked for. 'Auto' starts with the silhouette, which draws half
+/// the triangles (docs/decisions.md, "Silhouettes"); the plan opens the fan to timing.
 PSIVOLUMECORE_EXPORT bool UsesSilhouettes(const Settings& s);
 /// Marching tetrahedra when asked for, or under 'Auto' when early discard applies (on, and the
 /// opacity function has zero regions: plain contours, where only the surfaces and the visible

@@ -208,6 +208,10 @@ QString pqPsiFrameStatsWidget::formatReadout(const Readout& stats)
               .arg(others == 1 ? tr("volume") : tr("volumes"))
               .arg(count(stats.Stats.IntermixedTetrahedra));
   }
+  if (!stats.Stats.DrawWay.empty()) // "back to front, ... (chosen by measurement of 4 ways)"
+  {
+    text += tr("; drawn %1").arg(QString::fromStdString(stats.Stats.DrawWay));
+  }
   return text;
 }
 

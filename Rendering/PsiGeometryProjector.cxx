@@ -27,7 +27,7 @@ vtkShaderProgram* PsiGeometryProjector::ReadyProgram(vtkOpenGLRenderWindow* renW
 }
 
 void PsiGeometryProjector::Draw(PsiVisibilityOrder& order, vtkShaderProgram* program,
-  size_t targetPixels, const std::function<bool()>& betweenStrides) const
+  size_t targetPixels, const std::function<bool()>& betweenStrides, int masksPerFrame) const
 {
   // each tetrahedron is one point whose attribute is its four point ids (PsiVolumeVS.glsl)
   const GLint loc = glGetAttribLocation(static_cast<GLuint>(program->GetHandle()), "tetPointIds");
@@ -43,7 +43,7 @@ void PsiGeometryProjector::Draw(PsiVisibilityOrder& order, vtkShaderProgram* pro
     [](size_t first, size_t count) {
       glDrawArrays(GL_POINTS, static_cast<GLint>(first), static_cast<GLsizei>(count));
     },
-    targetPixels, betweenStrides);
+    targetPixels, betweenStrides, masksPerFrame);
 }
 
 void PsiGeometryProjector::ReleaseGraphicsResources()

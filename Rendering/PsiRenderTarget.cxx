@@ -122,8 +122,6 @@ void PsiRenderTarget::DrawAndComposite(vtkOpenGLRenderWindow* renWin,
     ostate->vtkglDisable(GL_SCISSOR_TEST);
     ostate->vtkglClearColor(0, 0, 0, 0);
     // the depth test against the scene's opaque geometry, and front to back against the mask
-    this->MasksFoundOpaque = false;
-    this->Masks = 0;
     if (frontToBack && !this->DepthTest)
     {
       this->ClearDepth(ostate); // no scene depth was copied: the far plane everywhere
@@ -163,7 +161,7 @@ void PsiRenderTarget::DrawAndComposite(vtkOpenGLRenderWindow* renWin,
       ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
       drawImage(i);
     }
-    this->PreviousMaskFoundOpaque(); // the last mask's count, for GetMasksFoundOpaque
+    this->PreviousMaskFoundOpaque(); // the last mask's count: its query free for the next frame
     ostate->vtkglBlendEquationSeparate(equation[0], equation[1]);
     ostate->PopFramebufferBindings();
 
@@ -208,9 +206,7 @@ bool PsiRenderTarget::PreviousMaskFoundOpaque()
   {
     return true;
   }
-  const bool found = this->MaskSamples.Take() > 0;
-  this->MasksFoundOpaque = this->MasksFoundOpaque || found;
-  return found;
+  return this->MaskSamples.Take() > 0;
 }
 
 bool PsiRenderTarget::MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderProgram* drawProgram)
@@ -248,7 +244,6 @@ bool PsiRenderTarget::MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderP
     this->MaskSamples.Begin(); // the pixels it finds opaque
     this->MaskQuad->Render();
     this->MaskSamples.End();
-    ++this->Masks;
     image->Deactivate();
   }
   if (drawProgram)

@@ -58,9 +58,6 @@ public:
   /// bound again. False when the previous mask of this image found no opaque pixel (its count of
   /// samples passed); true when it found some, or for the first mask of the image.
   bool MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderProgram* drawProgram);
-  /// After a front-to-back DrawAndComposite: whether its masks found an opaque pixel (true when
-  /// it masked nothing, or within depth peeling's two images).
-  bool GetMasksFoundOpaque() const { return this->Masks == 0 || this->MasksFoundOpaque; }
   /// Whether this OpenGL has what MaskOpaquePixels needs (glTextureBarrier: OpenGL 4.5 or
   /// ARB_texture_barrier).
   static bool CanMaskOpaquePixels();
@@ -82,8 +79,6 @@ private:
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
   PsiSamplesPassed MaskSamples;  ///< the pixels the last mask found opaque
-  bool MasksFoundOpaque = false; ///< a mask of this image found an opaque pixel
-  int Masks = 0;                 ///< masks of this image
   int Size[2] = { 0, 0 };
   int Origin[2] = { 0, 0 };
   bool SampleDepth = false;

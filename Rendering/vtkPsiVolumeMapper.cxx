@@ -167,20 +167,18 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   this->Stats.IntermixedVolumes = this->Stats.IntermixedTetrahedra = 0;
   const PsiFrameCamera cam = PsiFrameCamera::FromRenderer(ren, vol, I.Mesh.GetMesh().Shift);
   const PsiTableSources sources = this->UpdateTransferFunction(renWin, vol);
-  const PsiFramePlan plan = PlanFrame(this->Settings, this->SceneFacts(ren, vol, cam));
+  const PsiFramePlan plan =
+    this->ChooseWay(PlanFrame(this->Settings, this->SceneFacts(ren, vol, cam)), ren, cam);
   this->NotePlan(plan);
-  const bool sorted = this->UpdateVisibilityOrder(input, cam, plan.FrontToBack);
+  const bool sorted = this->UpdateVisibilityOrder(input, cam, plan.Way.FrontToBack);
   const std::vector<PsiGpuTable*> tables = this->TablesOf(plan);
   this->UpdateTables(renWin, plan, tables, sources);
   if (I.Target.CaptureDepthTexture(
         ren, renWin, plan.Features.NearClip || plan.Features.OpaqueClip, plan.SceneDepth))
   {
+    const psi::Stopwatch draw;
     this->DrawVolume(renWin, ren, vol, cam, plan, tables);
-    if (plan.FrontToBack) // whether pixels turn opaque at all, for the next frames' plans
-    {
-      I.Saturation = { I.Mesh.GetVersion(), I.Tables.Transfer.GetVersion(), this->GetMTime(),
-        !I.Target.GetMasksFoundOpaque() };
-    }
+    this->TimeWay(draw);
   }
   I.Order.Finish();
   if (sorted)
@@ -238,7 +236,9 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   Internals& I = *this->Impl;
   const psi::ShaderFeatures& features = plan.Features;
   const bool gradients = plan.Tables.Gradients;
-  const bool compute = PsiComputeProjector::Chosen(psi::UsesComputeProjector(this->Settings), renWin);
+  const psi::Stopwatch ready; // building programs is not the way's cost (TimeWay)
+  I.ProgramSeconds = -1;      // nothing drawn
+  const bool compute = PsiComputeProjector::Chosen(plan.Way.ComputeProjector, renWin);
   this->LastUsedProjector = static_cast<int>(
     compute ? psi::Projectors::ComputeShader : psi::Projectors::GeometryShader);
   vtkShaderProgram* program = this->ReadyProjection(renWin, features, compute);
@@ -249,6 +249,7 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   this->SetShaderParameters(program, ren, vol, cam, plan, tables);
   I.Mesh.Activate(program, gradients);
   vtkShaderProgram* draw = compute ? I.Compute.ReadyDrawProgram(renWin) : program;
+  I.ProgramSeconds = draw ? ready.Seconds() : -1;
   if (draw && compute)
   {
     this->SetShaderParameters(draw, ren, vol, cam, plan, tables);
@@ -265,13 +266,13 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
       [&](vtkShaderProgram* composite) {
         I.Peeling.SetShaderParameters(composite, this, vol, renWin);
       },
-      plan.FrontToBack);
+      plan.Way.FrontToBack);
     I.Peeling.Deactivate();
-    if (!drawError.empty() && drawError != I.LastDrawError)
+    if (!drawError.empty() && drawError != I.LastDrawError && !plan.Trial)
     {
-      vtkErrorMacro("Psi Volume: " << drawError);
+      vtkErrorMacro("Psi Volume: " << drawError); // an alternative being timed just loses
     }
-    I.LastDrawError = drawError;
+    I.LastDrawError = plan.Trial ? I.LastDrawError : drawError;
   }
   I.Mesh.Deactivate();
   psi::DeactivateTables(tables);
@@ -303,7 +304,7 @@ void vtkPsiVolumeMapper::DrawImage(vtkOpenGLRenderWindow* renWin, vtkVolume* vol
     I.SamplesPassed += I.Samples.Take();
   };
   std::function<bool()> mask;
-  if (plan.FrontToBack)
+  if (plan.Way.FrontToBack)
   {
     mask = [&]() {
       stopCount();
@@ -316,11 +317,12 @@ void vtkPsiVolumeMapper::DrawImage(vtkOpenGLRenderWindow* renWin, vtkVolume* vol
   startCount();
   if (compute)
   {
-    I.Compute.Draw(renWin, I.Order, pixels, I.Limits().MaxStorageBlockBytes, error, mask);
+    I.Compute.Draw(renWin, I.Order, pixels, I.Limits().MaxStorageBlockBytes, error, mask,
+      plan.Way.MasksPerFrame);
   }
   else
   {
-    I.Geometry.Draw(I.Order, draw, pixels, mask);
+    I.Geometry.Draw(I.Order, draw, pixels, mask, plan.Way.MasksPerFrame);
   }
   stopCount();
 }
@@ -435,7 +437,7 @@ void vtkPsiVolumeMapper::SetShaderParameters(vtkShaderProgram* program, vtkRende
     if (f.IsoTriangles)
     {
       // a cell's pieces and surfaces in the order the frame composites (PsiIsoTrianglesGS.glsl)
-      program->SetUniformi("nearestFirst", plan.FrontToBack ? 1 : 0);
+      program->SetUniformi("nearestFirst", plan.Way.FrontToBack ? 1 : 0);
     }
   }
 }

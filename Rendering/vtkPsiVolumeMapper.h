@@ -54,6 +54,7 @@ struct PsiTableSources;
 namespace psi
 {
 struct ShaderFeatures;
+class Stopwatch;
 }
 
 class PSIVOLUMERENDERING_EXPORT vtkPsiVolumeMapper : public vtkUnstructuredGridVolumeMapper
@@ -105,6 +106,14 @@ public:
   vtkGetMacro(LastUsedEarlyDiscard, bool);
   /// Whether the last frame composited front to back with early ray termination.
   vtkGetMacro(LastUsedEarlyRayTermination, bool);
+  /// How the last frame drew each projection (psi::Decompositions::Silhouette or Fan).
+  vtkGetMacro(LastUsedDecomposition, int);
+  /// The opacity masks the last frame drew at first, front to back (0: back to front).
+  vtkGetMacro(LastUsedMasksPerFrame, int);
+  /// The last frame's way in words, and how it was chosen: "back to front, geometry shader,
+  /// silhouettes (chosen by measurement of 4 ways)"; "(measuring (way 2))" while the first
+  /// frames time the ways open under 'Auto'; "(as set)" when none is (psi::MeasuredChoice).
+  const std::string& GetLastDrawWay() const { return this->Stats.DrawWay; }
   ///@}
 
   ///@{
@@ -216,6 +225,8 @@ protected:
   int LastUsedProjector = 0; ///< psi::Projectors::GeometryShader
   bool LastUsedEarlyDiscard = false;
   bool LastUsedEarlyRayTermination = false;
+  int LastUsedDecomposition = 0; ///< psi::Decompositions::Silhouette
+  int LastUsedMasksPerFrame = 0;
   bool LastUsedNearPlaneClipping = false;
   bool LastUsedOpaqueClipping = false;
   psi::IsosurfaceList Isosurfaces; ///< Settings' isovalues normalized, when they are set
@@ -248,6 +259,8 @@ private:
   // the frame plan (vtkPsiVolumeMapperFramePlan.cxx)
   PsiTableSources UpdateTransferFunction(vtkOpenGLRenderWindow* renWin, vtkVolume* vol);
   PsiSceneFacts SceneFacts(vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam);
+  PsiFramePlan ChooseWay(const PsiFramePlan& plan, vtkRenderer* ren, const PsiFrameCamera& cam);
+  void TimeWay(const psi::Stopwatch& draw);
   void NotePlan(const PsiFramePlan& plan);
   std::vector<PsiGpuTable*> TablesOf(const PsiFramePlan& plan);
   void UpdateTables(vtkOpenGLRenderWindow* renWin, const PsiFramePlan& plan,

@@ -10,13 +10,17 @@
 #include "PsiSceneQueries.h"
 #include "PsiShaderComposer.h"
 #include "PsiShaderParameters.h"
+#include "PsiStopwatch.h"
 #include "PsiTransferFunctionAnalysis.h"
 
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 #include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -86,9 +90,8 @@ PsiSceneFacts vtkPsiVolumeMapper::SceneFacts(
     std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
       (b[5] - b[4]) * (b[5] - b[4])));
   facts.MasksOpaquePixels = PsiRenderTarget::CanMaskOpaquePixels();
-  facts.MasksFoundNoOpaque = I.Saturation.NoOpaque && I.Saturation.Mesh == I.Mesh.GetVersion() &&
-    I.Saturation.Transfer == I.Tables.Transfer.GetVersion() &&
-    I.Saturation.Settings == this->GetMTime();
+  facts.ComputeAvailable =
+    PsiComputeProjector::IsSupported(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()));
   if (MayUseIsoTriangles(this->Settings, facts))
   {
     int vertices = 0, components = 0;
@@ -113,7 +116,11 @@ void vtkPsiVolumeMapper::NotePlan(const PsiFramePlan& plan)
                     : static_cast<int>(f.IsoTriangles ? psi::IsosurfaceMethods::MarchingTetrahedra
                                                       : psi::IsosurfaceMethods::PerFragment);
   this->LastUsedEarlyDiscard = f.EarlyDiscard;
-  this->LastUsedEarlyRayTermination = plan.FrontToBack;
+  this->LastUsedEarlyRayTermination = plan.Way.FrontToBack;
+  this->LastUsedDecomposition = static_cast<int>(
+    plan.Way.Silhouette ? psi::Decompositions::Silhouette : psi::Decompositions::Fan);
+  this->LastUsedMasksPerFrame = plan.Way.FrontToBack ? plan.Way.MasksPerFrame : 0;
+  this->Stats.DrawWay = plan.Way.Describe() + " (" + I.Choice.Describe() + ")";
   this->LastUsedAdaptiveSampling = f.Adaptive;
   this->LastNumberOfAdaptiveNodes = f.Adaptive ? I.AdaptiveNodes.Size() : 0;
   const std::string note = plan.MethodReplaced
@@ -125,6 +132,40 @@ void vtkPsiVolumeMapper::NotePlan(const PsiFramePlan& plan)
     vtkWarningMacro(<< note);
   }
   I.LastFeatureNote = note;
+}
+
+// The way this frame draws (PsiMeasuredChoice.h): the plan's, or where a setting is 'Auto' the
+// way being timed or the fastest timed. What decides which way is fastest: the mesh and its
+// values, the sampled transfer function, the settings (the mapper's modification time), the
+// view's size, the features the scene calls for, and the volume's projected size.
+PsiFramePlan vtkPsiVolumeMapper::ChooseWay(
+  const PsiFramePlan& plan, vtkRenderer* ren, const PsiFrameCamera& cam)
+{
+  Internals& I = *this->Impl;
+  const int* size = ren->GetSize();
+  const std::string decides = std::to_string(I.Mesh.GetVersion()) + " " +
+    std::to_string(I.Mesh.GetScalarsVersion()) + " " +
+    std::to_string(I.Tables.Transfer.GetVersion()) + " " + std::to_string(this->GetMTime()) +
+    " " + std::to_string(size[0]) + "x" + std::to_string(size[1]) + " " + plan.Features.Key();
+  const double pixels = double(size[0]) * double(size[1]) *
+    psi::ProjectedFraction(I.Mesh.GetMesh().Bounds, cam.MCVC, cam.VCDC);
+  PsiFramePlan chosen = UseWay(plan, I.Choice.Next(decides, pixels, plan.Way, plan.Open));
+  chosen.Trial = chosen.Trial && I.Choice.IsMeasuring(); // a chosen way's errors are said
+  return chosen;
+}
+
+// The frame's time for the way it drew, while ways are timed: from `draw`'s start to the end of
+// the GL work (waited for), less the time spent building programs; a way that drew nothing
+// never wins.
+void vtkPsiVolumeMapper::TimeWay(const psi::Stopwatch& draw)
+{
+  Internals& I = *this->Impl;
+  if (I.Choice.IsMeasuring())
+  {
+    glFinish();
+    I.Choice.Record(I.ProgramSeconds < 0 ? std::numeric_limits<double>::infinity()
+                                         : draw.Seconds() - I.ProgramSeconds);
+  }
 }
 
 // The tables the plan's features read, in the order they are bound.

@@ -220,6 +220,8 @@ bool vtkPsiVolumeMapper::RenderIntermixed(vtkRenderer* ren, vtkVolume* vol)
   this->LastUsedProjector = draw.LastUsedProjector;
   this->LastUsedEarlyDiscard = draw.LastUsedEarlyDiscard;
   this->LastUsedEarlyRayTermination = draw.LastUsedEarlyRayTermination;
+  this->LastUsedDecomposition = draw.LastUsedDecomposition;
+  this->LastUsedMasksPerFrame = draw.LastUsedMasksPerFrame;
   this->LastUsedNearPlaneClipping = draw.LastUsedNearPlaneClipping;
   this->LastUsedOpaqueClipping = draw.LastUsedOpaqueClipping;
   this->LastFeatureDefines = draw.LastFeatureDefines;

@@ -15,6 +15,7 @@
 #include "PsiRenderTarget.h"
 #include "PsiSamplesPassed.h"
 #include "PsiLookupTextures.h"
+#include "PsiMeasuredChoice.h"
 #include "PsiVisibilityOrder.h"
 
 #include "vtkSmartPointer.h"
@@ -39,14 +40,11 @@ struct vtkPsiVolumeMapper::Internals
   PsiSamplesPassed Samples;     // the volume's samples that pass the depth test (testing aid)
   bool CountSamples = false;
   uint64_t SamplesPassed = 0;   // counted over the last frame's draws
-  // What the last front-to-back frame's masks found, and of which mesh, sampled transfer
-  // function and settings (PsiSceneFacts::MasksFoundNoOpaque).
-  struct
-  {
-    int Mesh = -1, Transfer = -1;
-    vtkMTimeType Settings = 0;
-    bool NoOpaque = false;
-  } Saturation;
+  // The way each frame draws, timed on the first frames under 'Auto' (PsiMeasuredChoice.h), and
+  // the seconds the last frame spent making its programs ready (not the way's cost; -1: nothing
+  // drawn).
+  psi::MeasuredChoice Choice;
+  double ProgramSeconds = -1;
 
   // Transfer-function nodes for adaptive sampling, for the property and range they came from.
   PsiAdaptiveNodes AdaptiveNodes;

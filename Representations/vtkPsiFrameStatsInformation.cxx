@@ -41,7 +41,8 @@ void vtkPsiFrameStatsInformation::CopyToStream(vtkClientServerStream* stream)
           << static_cast<long long>(this->Stats.LastSortCycles) << this->Stats.LastRenderSeconds
           << this->Stats.LastSortSeconds << this->Stats.LastPreIntegrationSeconds
           << static_cast<long long>(this->Stats.IntermixedVolumes)
-          << static_cast<long long>(this->Stats.IntermixedTetrahedra) << vtkClientServerStream::End;
+          << static_cast<long long>(this->Stats.IntermixedTetrahedra)
+          << this->Stats.DrawWay.c_str() << vtkClientServerStream::End;
 }
 
 void vtkPsiFrameStatsInformation::CopyFromStream(const vtkClientServerStream* stream)
@@ -62,6 +63,8 @@ void vtkPsiFrameStatsInformation::CopyFromStream(const vtkClientServerStream* st
   stream->GetArgument(0, 7, &intermixed[1]);
   this->Stats.IntermixedVolumes = intermixed[0];
   this->Stats.IntermixedTetrahedra = intermixed[1];
+  const char* way = nullptr;
+  this->Stats.DrawWay = stream->GetArgument(0, 8, &way) && way ? way : "";
 }
 
 void vtkPsiFrameStatsInformation::PrintSelf(ostream& os, vtkIndent indent)
@@ -75,4 +78,5 @@ void vtkPsiFrameStatsInformation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastPreIntegrationSeconds: " << this->Stats.LastPreIntegrationSeconds << "\n";
   os << indent << "IntermixedVolumes: " << this->Stats.IntermixedVolumes << "\n";
   os << indent << "IntermixedTetrahedra: " << this->Stats.IntermixedTetrahedra << "\n";
+  os << indent << "DrawWay: " << this->Stats.DrawWay << "\n";
 }

@@ -212,6 +212,11 @@ vtkIdType vtkPsiVolumeRepresentation::GetNumberOfIntermixedTetrahedra()
   return this->PsiMapper->GetNumberOfIntermixedTetrahedra();
 }
 
+const char* vtkPsiVolumeRepresentation::GetLastDrawWay()
+{
+  return this->PsiMapper->GetLastDrawWay().c_str();
+}
+
 vtkIdType vtkPsiVolumeRepresentation::GetNumberOfTetrahedra()
 {
   return this->PsiMapper->GetNumberOfTetrahedra();

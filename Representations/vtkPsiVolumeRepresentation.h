@@ -98,6 +98,8 @@ public:
   vtkIdType GetLastSortCycles();
   vtkIdType GetNumberOfIntermixedVolumes();
   vtkIdType GetNumberOfIntermixedTetrahedra();
+  /// How the last frame was drawn and how that way was chosen (vtkPsiVolumeMapper::GetLastDrawWay).
+  const char* GetLastDrawWay();
 #ifndef __VTK_WRAP__
   /// All of the above at once (vtkPsiFrameStatsInformation gathers it over the processes).
   psi::FrameStats GetFrameStats() const;

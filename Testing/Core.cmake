@@ -60,6 +60,11 @@ add_executable(TestFramePlan Cxx/TestFramePlan.cxx)
 target_link_libraries(TestFramePlan PRIVATE PsiVolume::Core)
 add_test(NAME PsiCore.FramePlan COMMAND TestFramePlan)
 
+# The choice among equal ways of drawing a frame by timing them (GL-free, given times).
+add_executable(TestMeasuredChoice Cxx/TestMeasuredChoice.cxx)
+target_link_libraries(TestMeasuredChoice PRIVATE PsiVolume::Core)
+add_test(NAME PsiCore.MeasuredChoice COMMAND TestMeasuredChoice)
+
 # The exact reference of several media sharing space against what it reduces to.
 add_executable(TestReferenceMedia Cxx/TestReferenceMedia.cxx)
 target_link_libraries(TestReferenceMedia PRIVATE PsiVolume::Core PsiReference VTK::RenderingCore

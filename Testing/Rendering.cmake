@@ -91,6 +91,11 @@ psi_add_render_test(TranslucentGeometry TestPsiTranslucentGeometry TIMEOUT 300)
 psi_add_gl_executable(TestPsiDriverLimits)
 add_test(NAME PsiRendering.DriverLimits COMMAND TestPsiDriverLimits)
 
+# The ways 'Auto' times on the first frames: each the fixed way's image within 1/255, a choice
+# the read-outs name, explicit settings honoured, and what decides measuring again.
+psi_add_gl_executable(TestPsiMeasuredChoice)
+add_test(NAME PsiRendering.MeasuredChoice COMMAND TestPsiMeasuredChoice)
+
 # The shipped GLSL of each method on the GPU against its C++ version.
 find_package(OpenGL REQUIRED)
 psi_add_gl_executable(TestIntegrationGLSL OpenGL::GL)

@@ -317,12 +317,13 @@ def psi_contenders(cap, methods, back_to_front=False):
     """'Psi Volume' with each method, adaptive sampling off and on, and with `back_to_front` also
     each method with EarlyRayTermination off ("M, back to front"): (contenders, images)."""
     contenders, images = [], {}
-    own = int(cap.rep.EarlyRayTermination)  # the display's own, for every other row
-    variants = [("Off", own), ("On", own)] + ([("Off", 0)] if back_to_front and own else [])
+    own = cap.rep.EarlyRayTermination  # the display's own, for every other row
+    front = own != "Off"
+    variants = [("Off", own), ("On", own)] + ([("Off", "Off")] if back_to_front and front else [])
     for m in methods:
         for adaptive, termination in variants:
             name = "%s%s%s" % (m, " + adaptive" if adaptive == "On" else "",
-                               ", back to front" if own and not termination else "")
+                               ", back to front" if front and termination == "Off" else "")
 
             def prepare(m=m, adaptive=adaptive, termination=termination):
                 for c in [cap] + cap.others:  # the first one's settings draw them all
@@ -342,7 +343,7 @@ def interactive_contender(cap, method):
     the mesh drawn by VTK's GPU ray caster, whatever the method; `method` is set for the still
     frame before it), timed with InteractiveRender. Returns (contender, image, the level of
     detail's build seconds, note)."""
-    own = int(cap.rep.EarlyRayTermination)
+    own = cap.rep.EarlyRayTermination
 
     def prepare():
         for c in [cap] + cap.others:

@@ -32,8 +32,9 @@ PROJECTORS = {"Psi Volume GS": "Geometry Shader", "Psi Volume CS": "Compute Shad
 def scale_view(source, array, mapper, size):
     """The scene of bench_scale.py and bench_threads.py: `source` colored by `array` in a
     size x size view, drawn by `mapper` ("Psi Volume GS", "Psi Volume CS", either with " fan"
-    for Shirley and Tuchman's fan and/or " back to front" for EarlyRayTermination off,
-    "Psi Volume" for the Auto projector, "Outline" for the 'Outline' representation, or one of
+    for Shirley and Tuchman's fan and/or " back to front" or " front to back" for
+    EarlyRayTermination 'Off' or 'On' (each way fixed, nothing timed), "Psi Volume" for every
+    'Auto' (the ways timed on the first frames, psi::MeasuredChoice), "Outline" for the 'Outline' representation, or one of
     ParaView's SelectMapper values), the camera reset and raised 25 degrees. Returns (view, rep)."""
     view = simple.CreateRenderView()
     view.ViewSize = [size, size]
@@ -43,12 +44,16 @@ def scale_view(source, array, mapper, size):
         rep.SetRepresentationType("Outline")
     elif mapper.startswith("Psi Volume"):
         rep.SetRepresentationType("Psi Volume")
-        back = mapper.endswith(" back to front")
-        name = mapper[:-len(" back to front")] if back else mapper
-        fan = name.endswith(" fan")
-        rep.Projector = PROJECTORS.get(name[:-len(" fan")] if fan else name, "Auto")
-        rep.Decomposition = "Fan" if fan else "Silhouette"
-        rep.EarlyRayTermination = 0 if back else 1
+        if mapper == "Psi Volume":
+            rep.Projector = rep.Decomposition = rep.EarlyRayTermination = "Auto"
+        else:
+            direction = {" back to front": "Off", " front to back": "On"}
+            ending = next((e for e in direction if mapper.endswith(e)), "")
+            name = mapper[:len(mapper) - len(ending)]
+            fan = name.endswith(" fan")
+            rep.Projector = PROJECTORS.get(name[:-len(" fan")] if fan else name, "Auto")
+            rep.Decomposition = "Fan" if fan else "Silhouette"
+            rep.EarlyRayTermination = direction.get(ending, "Auto")
     else:
         rep.SelectMapper = mapper
     view.ResetCamera()

@@ -99,9 +99,10 @@ inline double CheckFrontToBack(
   // where the sort broke cycles there is no visibility order: the two directions break them at
   // other cells (nearest or farthest remaining), and only the reference bounds each image
   const bool exactOrder = mapper->GetLastSortCycles() == 0;
-  mapper->EarlyRayTerminationOff();
+  const int own = mapper->GetEarlyRayTermination();
+  mapper->SetEarlyRayTermination(psi::EarlyRayTerminations::Off);
   const std::vector<double> back = GrabRGB(win);
-  mapper->EarlyRayTerminationOn();
+  mapper->SetEarlyRayTermination(own);
   win->Render(); // the window shows the frame as drawn, for the caller's next reads
   const double worst = LargestDifference(gpu, back);
   PSI_CHECK(!exactOrder || worst <= 1.0 / 255 + 1e-9,

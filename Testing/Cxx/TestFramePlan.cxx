@@ -189,29 +189,76 @@ void TestEarlyRayTermination()
     "MaxRayOpacity %g", psi::MaxRayOpacity(table, 4.0));
   PSI_CHECK(psi::MaxRayOpacity(table, 0.0) == 0, "a ray of no length stays transparent");
 
+  using ERT = psi::EarlyRayTerminations;
   psi::Settings s = Settings();
   PsiSceneFacts facts = Facts();
   facts.MaxRayOpacity = 1 - std::exp(-20.0);
-  PSI_CHECK(PlanFrame(s, facts).FrontToBack, "a volume that can turn opaque: front to back");
+  PsiFramePlan plan = PlanFrame(s, facts);
+  PSI_CHECK(plan.Way.FrontToBack && plan.Open.Direction && plan.Open.MasksPerFrame,
+    "a volume that can turn opaque: front to back, back to front timed against it");
   facts.MaxRayOpacity = psi::SaturatedOpacity - 1e-6;
-  PSI_CHECK(!PlanFrame(s, facts).FrontToBack, "no pixel can turn opaque: back to front");
+  plan = PlanFrame(s, facts);
+  PSI_CHECK(!plan.Way.FrontToBack && !plan.Open.Direction && !plan.Open.MasksPerFrame,
+    "no pixel can turn opaque: back to front, nothing to time");
+  s.EarlyRayTermination = ERT::On;
+  plan = PlanFrame(s, facts);
+  PSI_CHECK(plan.Way.FrontToBack && !plan.Open.Direction && !plan.Open.MasksPerFrame,
+    "'On': front to back all the same, with the default masks");
+  s.EarlyRayTermination = ERT::Auto;
   s.IsosurfaceValues = { 0.5 };
-  PSI_CHECK(PlanFrame(s, facts).FrontToBack, "an isosurface can hide what is behind it");
+  PSI_CHECK(PlanFrame(s, facts).Way.FrontToBack, "an isosurface can hide what is behind it");
   s.IsosurfaceOpacity = 0;
-  PSI_CHECK(!PlanFrame(s, facts).FrontToBack, "an isosurface of opacity 0 hides nothing");
+  PSI_CHECK(!PlanFrame(s, facts).Way.FrontToBack, "an isosurface of opacity 0 hides nothing");
   s = Settings();
   facts.MaxRayOpacity = 1;
-  s.EarlyRayTermination = false;
-  PSI_CHECK(!PlanFrame(s, facts).FrontToBack, "switched off");
-  s.EarlyRayTermination = true;
-  facts.DepthPeeled = true;
-  PSI_CHECK(!PlanFrame(s, facts).FrontToBack, "not within depth peeling");
-  facts.DepthPeeled = false;
-  facts.MasksOpaquePixels = false;
-  PSI_CHECK(!PlanFrame(s, facts).FrontToBack, "not when the driver cannot mask opaque pixels");
-  facts.MasksOpaquePixels = true;
-  facts.MasksFoundNoOpaque = true;
-  PSI_CHECK(!PlanFrame(s, facts).FrontToBack, "not when an earlier frame found no opaque pixel");
+  s.EarlyRayTermination = ERT::Off;
+  plan = PlanFrame(s, facts);
+  PSI_CHECK(!plan.Way.FrontToBack && !plan.Open.Direction, "switched off");
+  for (ERT e : { ERT::On, ERT::Auto })
+  {
+    s.EarlyRayTermination = e;
+    facts.DepthPeeled = true;
+    plan = PlanFrame(s, facts);
+    PSI_CHECK(!plan.Way.FrontToBack && !plan.Open.Any(), "not within depth peeling");
+    facts.DepthPeeled = false;
+    facts.MasksOpaquePixels = false;
+    PSI_CHECK(!PlanFrame(s, facts).Way.FrontToBack, "not when the driver cannot mask pixels");
+    facts.MasksOpaquePixels = true;
+  }
+}
+
+// The projector and the decomposition: their 'Auto' is the geometry shader and the silhouette,
+// with the other open to timing where it draws the same image.
+void TestOpenWays()
+{
+  psi::Settings s; // every 'Auto'
+  PsiSceneFacts facts = Facts();
+  facts.ComputeAvailable = true;
+  PsiFramePlan plan = PlanFrame(s, facts);
+  PSI_CHECK(!plan.Way.ComputeProjector && plan.Way.Silhouette && plan.Open.Projector &&
+      plan.Open.Decomposition,
+    "'Auto': geometry shader and silhouettes first, the others timed");
+  facts.ComputeAvailable = false;
+  PSI_CHECK(!PlanFrame(s, facts).Open.Projector, "no compute projector on this driver");
+  s.Projector = psi::Projectors::ComputeShader;
+  s.Decomposition = psi::Decompositions::Fan;
+  plan = PlanFrame(s, facts);
+  PSI_CHECK(plan.Way.ComputeProjector && !plan.Way.Silhouette && !plan.Features.Silhouette &&
+      !plan.Open.Projector && !plan.Open.Decomposition,
+    "an explicit setting forces its way");
+  s = psi::Settings();
+  s.ExactPerspectiveSegments = false;
+  PSI_CHECK(!PlanFrame(s, facts).Open.Decomposition,
+    "the fan without exact segments in perspective draws another image");
+  s.ExactPerspectiveSegments = true;
+  facts.Parallel = true;
+  PSI_CHECK(!PlanFrame(s, facts).Open.Decomposition, "in parallel the fan interpolates HAPT's");
+  facts.Parallel = false;
+  facts.SeparateOpacity = true;
+  PSI_CHECK(!PlanFrame(s, facts).Open.Decomposition, "a separate opacity needs silhouettes");
+  plan = UseWay(PlanFrame(Settings(), Facts()), psi::DrawWay{ true, 4, true, false });
+  PSI_CHECK(plan.Way.ComputeProjector && !plan.Features.Silhouette && plan.Way.MasksPerFrame == 4,
+    "UseWay: the way and its silhouette feature");
 }
 } // namespace
 
@@ -224,6 +271,7 @@ int main()
   TestSeparateOpacityAndPeeling();
   TestSceneDepth();
   TestEarlyRayTermination();
+  TestOpenWays();
   std::printf("%s: %d failures\n", psitest::Failures() ? "FAILED" : "passed", psitest::Failures());
   return psitest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
 }

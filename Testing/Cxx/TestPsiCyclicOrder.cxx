@@ -154,7 +154,8 @@ void CheckViews(Fixture& f)
   for (const bool frontToBack : { false, true })
   {
     psitest::LookAtCentre(f.View.Renderer, eye[0], eye[1], eye[2]);
-    f.Mapper->SetEarlyRayTermination(frontToBack);
+    f.Mapper->SetEarlyRayTermination(
+      frontToBack ? psi::EarlyRayTerminations::On : psi::EarlyRayTerminations::Off);
     const std::string name =
       "cyclic_view" + std::to_string(v / 2) + (frontToBack ? "_front_to_back" : "");
     ++v;

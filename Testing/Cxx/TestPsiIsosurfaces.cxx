@@ -364,16 +364,17 @@ void CheckIsosurfaceMethodsAgreeInView(Scene& s, const IsoCase& k, int index, in
     mapper->GetLastUsedIsosurfaceMethod() ==
     static_cast<int>(psi::IsosurfaceMethods::MarchingTetrahedra);
   const bool discarded = mapper->GetLastUsedEarlyDiscard();
-  // front to back (early ray termination, chosen where a surface can hide what is behind it,
-  // unless an earlier frame found no opaque pixel) each cell's pieces and surfaces are emitted in
-  // the reverse sequence: the same image as back to front within 1/255
+  // front to back (early ray termination, chosen where a surface can hide what is behind it)
+  // each cell's pieces and surfaces are emitted in the reverse sequence: the same image as back
+  // to front within 1/255
   const bool frontToBack = mapper->GetLastUsedEarlyRayTermination();
   double fromBack = 0;
   if (frontToBack && usedMT)
   {
-    mapper->EarlyRayTerminationOff();
+    const int own = mapper->GetEarlyRayTermination();
+    mapper->SetEarlyRayTermination(psi::EarlyRayTerminations::Off);
     fromBack = psitest::DifferenceFrom(mt, Grab(win)).Max;
-    mapper->EarlyRayTerminationOn();
+    mapper->SetEarlyRayTermination(own);
   }
   PSI_CHECK(fromBack <= 1.0 / 255 + 1e-9,
     "%s view %d: drawn front to back (%d), %g/255 from back to front", k.Name, view, frontToBack,

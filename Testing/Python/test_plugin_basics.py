@@ -118,9 +118,31 @@ def check_opacity(rep, what):
             "%s: 'Psi Volume' uses the color map's opacity function" % what)
 
 
+def draw_way(rep):
+    """The last frame's LastDrawWay read-out."""
+    rep.UpdatePropertyInformation()
+    return rep.GetProperty("LastDrawWay").SMProperty.GetElement(0)
+
+
+def measure(view, rep, what):
+    """Renders until 'Auto' has timed its ways; every frame must use the compute projector the
+    state forces. Returns the last frame's way."""
+    for _ in range(30):
+        simple.Render(view)
+        way = draw_way(rep)
+        t.check("compute shader" in way, "%s: the forced projector drawn (%s)" % (what, way))
+        if "(measuring" not in way:
+            break
+    t.check("(chosen by measurement of" in way, "%s: a way chosen by measurement: %s" % (what, way))
+    return way
+
+
 check_opacity(d, "before save")
 d.IntegrationMethod = "Average"
-simple.Render(view)
+# the ways 'Auto' times, with the projector forced: both survive the state file
+d.Projector = "Compute Shader"
+d.EarlyRayTermination = "Auto"
+measure(view, d, "before save")
 before = testing.grab(view)
 state = os.path.join(tempfile.mkdtemp(), "psi.pvsm")
 simple.SaveState(state)
@@ -133,6 +155,10 @@ after = testing.grab(view)
 reps = [r for r in simple.GetRepresentations().values() if r.GetProperty("IntegrationMethod")]
 t.check(any(r.Representation == "Psi Volume" and r.IntegrationMethod == "Average" for r in reps),
         "state file restores 'Psi Volume' and its integration method")
+t.check(all(r.Projector == "Compute Shader" and r.EarlyRayTermination == "Auto" and
+            r.Decomposition == "Auto" for r in reps),
+        "state file restores the forced projector and the 'Auto' ways")
+measure(view, reps[0], "after load")
 for r in reps:
     check_opacity(r, "after load")
 e_state = testing.mean_error(after, before)

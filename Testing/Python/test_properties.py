@@ -39,7 +39,7 @@ cases = [
     ("IntegrationMethod", list(d.GetProperty("IntegrationMethod").Available), None),
     ("SortMethod", ["MPVONC", "Centroid"], None),
     ("EarlyDiscard", [0, 1], None),
-    ("EarlyRayTermination", [0, 1], None),
+    ("EarlyRayTermination", ["Off", "On", "Auto"], None),
     ("AdaptiveSampling", ["On", "Auto", "Off"], None),
     ("IsosurfaceValues", [[mid], [lo + 0.3 * (hi - lo), mid, lo + 0.7 * (hi - lo)], []], None),
     ("IsosurfaceOpacities", [[0.5], [0.2, 0.9], []], None),

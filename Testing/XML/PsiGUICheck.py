@@ -198,8 +198,8 @@ def check_report(source):
 #
 # The read-out (Qt/pqPsiFrameStatsWidget) shows "last frame: X ms (sort Y ms), N tetrahedra,
 # M cells skipped[, K sort cycles][; drawn intermixed with V other volumes (T tetrahedra in
-# all, the settings of the view's first)]": X and Y are LastRenderSeconds and LastSortSeconds in milliseconds, 2 decimals below
-# 10 ms and 1 from there; N, M, K and T are NumberOfTetrahedra, NumberOfSkippedCells,
+# all, the settings of the view's first)][; drawn W]": X and Y are LastRenderSeconds and
+# LastSortSeconds in milliseconds, 2 decimals below 10 ms and 1 from there; W is LastDrawWay; N, M, K and T are NumberOfTetrahedra, NumberOfSkippedCells,
 # LastSortCycles and NumberOfIntermixedTetrahedra with thousands separators, K and T only when
 # above 0.
 # QtTesting's pqcheck compares a widget's property with a string fixed in the script, and the
@@ -211,7 +211,10 @@ _READOUT = re.compile(
     r"^last frame: ([0-9]+\.[0-9]+) ms \(sort ([0-9]+\.[0-9]+) ms\), ([0-9,]+) tetrahedra, "
     r"([0-9,]+) cells skipped(?:, ([0-9,]+) sort cycles)?"
     r"(?:; drawn intermixed with ([0-9,]+) other volumes? \(([0-9,]+) tetrahedra in all, the "
-    r"settings of the view's first\))?$")
+    r"settings of the view's first\))?"
+    r"(?:; drawn ((?:front to back \([0-9]+ masks\)|back to front), (?:geometry|compute) shader, "
+    r"(?:silhouettes|fan) \((?:as set|measuring \(way [0-9]+\)|chosen by measurement of [0-9]+ "
+    r"ways)\)))?$")
 # (shown in the read-out's n-th group, information property, how the processes' values combine)
 _SHOWN = (
     (1, "LastRenderSeconds", "max"),
@@ -304,6 +307,17 @@ def _server_values(owner, names):
         run("\n".join("Delete id_value(%d)" % i for i in ids.values()))
 
 
+def _draw_way(rep):
+    """The representation's LastDrawWay where this process renders (builtin session); None on a
+    server, whose string read-out the panel gathers from its first process."""
+    from paraview import servermanager
+
+    if servermanager.ActiveConnection.IsRemote():
+        return None
+    rep.UpdatePropertyInformation()
+    return rep.GetProperty("LastDrawWay").SMProperty.GetElement(0)
+
+
 def _property_values(rep):
     """{name: value} of the read-out's information properties of the representation `rep`: pulled
     with UpdatePropertyInformation where this process renders (builtin session), else from the
@@ -355,6 +369,9 @@ def check_readout(stage, volumes=None):
         if volumes is not None and others != volumes - 1:
             wrong.append("drawn intermixed with %d other volumes, %d expected"
                          % (others, volumes - 1))
+        way = _draw_way(simple.GetDisplayProperties())
+        if way is not None and match.group(8) != way:
+            wrong.append("drawn %r shown for LastDrawWay %r" % (match.group(8), way))
         for group, name, how in _SHOWN:
             shown = match.group(group)
             if how == "max":
