@@ -113,6 +113,7 @@ PsiFramePlan PlanFrame(const psi::Settings& s, const PsiSceneFacts& facts)
   // table misses the function's nodes; never when the nodes cannot follow the function.
   f.Adaptive = facts.NodesFaithful && psi::UsesAdaptiveSampling(s, facts.TableDeviation);
   f.MaxAdaptiveNodes = psi::MaxAdaptiveNodes;
+  f.RasterFloor = s.RasterFloor;
   // A separate opacity array: drawn with silhouettes, whose fragments carry both scalars; not
   // with adaptive sampling (nodes of one scalar); early discard judged on the opacity scalar,
   // per cell, so not per marching-tetrahedra piece.

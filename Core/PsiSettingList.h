@@ -40,6 +40,8 @@
 //    (psi::IsosurfaceMethods; Maximo et al. 2010 §3.4); past the driver's geometry-output limit
 //    marching tetrahedra fall back to per fragment.
 //  IsosurfaceShading: psi::IsosurfaceShadings.
+//  RasterFloor: benchmarks only (Benchmarks/bench_floor.py): every fragment writes one constant
+//    color, the cost of the same triangles without shading (psi::ShaderFeatures::RasterFloor).
 #define PSI_RENDER_SETTINGS(ENUM, NUMBER, BOOL)                                                   \
   ENUM(IntegrationMethod, Method, PartialPreIntegration, FullPreIntegration)                      \
   ENUM(SortMethod, Sorts, MPVONC, MPVONC)                                                         \
@@ -53,7 +55,8 @@
   NUMBER(IsosurfaceOpacity, double, 1, 0, 1, PROPERTY)                                            \
   BOOL(IsosurfaceUseColorMap, true, PROPERTY)                                                     \
   ENUM(IsosurfaceMethod, IsosurfaceMethods, Auto, Auto)                                           \
-  ENUM(IsosurfaceShading, IsosurfaceShadings, Smooth, Unlit)
+  ENUM(IsosurfaceShading, IsosurfaceShadings, Smooth, Unlit)                                      \
+  BOOL(RasterFloor, false, MAPPER)
 
 // What the representation draws while the camera moves (psi::InteractionSettings; the mapper
 // never sees them):

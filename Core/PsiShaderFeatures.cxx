@@ -51,7 +51,8 @@ bool ShaderFeatures::operator==(const ShaderFeatures& o) const
     OpaqueClip == o.OpaqueClip && EarlyDiscard == o.EarlyDiscard && IsoCount == o.IsoCount &&
     IsoSmooth == o.IsoSmooth && IsoTriangles == o.IsoTriangles && Adaptive == o.Adaptive &&
     SeparateOpacity == o.SeparateOpacity && DepthPeel == o.DepthPeel &&
-    MaxAdaptiveNodes == o.MaxAdaptiveNodes && MaxLights == o.MaxLights;
+    MaxAdaptiveNodes == o.MaxAdaptiveNodes && MaxLights == o.MaxLights &&
+    RasterFloor == o.RasterFloor;
 }
 
 std::string ShaderFeatures::Defines() const
@@ -99,6 +100,10 @@ std::string ShaderFeatures::Defines() const
   if (Adaptive)
   {
     d += "#define PSI_ADAPTIVE\n" + Define("PSI_TF_NODES_MAX", MaxAdaptiveNodes);
+  }
+  if (RasterFloor)
+  {
+    d += "#define PSI_RASTER_FLOOR\n";
   }
   return d;
 }

@@ -52,6 +52,9 @@ struct PSIVOLUMECORE_EXPORT ShaderFeatures
   bool DepthPeel = false;
   int MaxAdaptiveNodes = psi::MaxAdaptiveNodes;
   int MaxLights = 8;
+  /// Benchmarks only: every fragment writes one constant color, and the compiler drops the ray
+  /// and its integration: what the same triangles cost without shading (the raster floor).
+  bool RasterFloor = false;
 
   bool operator==(const ShaderFeatures& o) const;
   bool operator!=(const ShaderFeatures& o) const { return !(*this == o); }

@@ -287,6 +287,12 @@ ShaderSources ComposeShaders(const ShaderFeatures& f, const char* integratorSour
     Apply(fs, PsiSeparateOpacityFS, SeparateOpacitySkips(f, split)); // after the sites' features
   }
   RemoveTags(fs);
+  if (f.RasterFloor) // the shaded main kept but never called: the compiler drops its work
+  {
+    const std::string shaded = "void main()\n{";
+    fs.replace(fs.find(shaded), shaded.size(), "void shadedMain()\n{");
+    fs += "\nvoid main()\n{\n  gl_FragData[0] = vec4(0.02);\n}\n";
+  }
   return out;
 }
 

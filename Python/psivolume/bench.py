@@ -34,8 +34,9 @@ def scale_view(source, array, mapper, size):
     size x size view, drawn by `mapper` ("Psi Volume GS", "Psi Volume CS", either with " fan"
     for Shirley and Tuchman's fan and/or " back to front" or " front to back" for
     EarlyRayTermination 'Off' or 'On' (each way fixed, nothing timed), "Psi Volume" for every
-    'Auto' (the ways timed on the first frames, psi::MeasuredChoice), "Outline" for the 'Outline' representation, or one of
-    ParaView's SelectMapper values), the camera reset and raised 25 degrees. Returns (view, rep)."""
+    'Auto' (the ways timed on the first frames, psi::MeasuredChoice), "Outline" for the
+    'Outline' representation, or one of ParaView's SelectMapper values), the camera reset and
+    raised 25 degrees. Returns (view, rep)."""
     view = simple.CreateRenderView()
     view.ViewSize = [size, size]
     view.OrientationAxesVisibility = 0
