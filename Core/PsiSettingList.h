@@ -40,7 +40,7 @@
 //    (psi::IsosurfaceMethods; Maximo et al. 2010 §3.4); past the driver's geometry-output limit
 //    marching tetrahedra fall back to per fragment.
 //  IsosurfaceShading: psi::IsosurfaceShadings.
-//  RasterFloor: benchmarks only (Benchmarks/bench_floor.py): every fragment writes one constant
+//  RasterFloor: benchmarks only (Benchmarks/bench_ways.py): every fragment writes one constant
 //    color, the cost of the same triangles without shading (psi::ShaderFeatures::RasterFloor).
 #define PSI_RENDER_SETTINGS(ENUM, NUMBER, BOOL)                                                   \
   ENUM(IntegrationMethod, Method, PartialPreIntegration, FullPreIntegration)                      \

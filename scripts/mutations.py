@@ -467,10 +467,24 @@ MUTATIONS = [
     Mutation("early_termination_mask_half_opaque", "Shaders/PsiOpaqueMaskFS.glsl",
              "< saturatedOpacity)", "< 0.5 * saturatedOpacity)", GL),
     Mutation("early_termination_within_peeling", "Core/PsiFramePlan.cxx",
-             "facts.MasksOpaquePixels && !f.DepthPeel && canSaturate &&",
-             "facts.MasksOpaquePixels && canSaturate &&", ["PsiCore.FramePlan"]),
-    Mutation("early_termination_despite_no_opaque_pixel", "Core/PsiFramePlan.cxx",
-             "    !facts.MasksFoundNoOpaque;", "    true;", ["PsiCore.FramePlan"]),
+             "return facts.MasksOpaquePixels && !f.DepthPeel;",
+             "return facts.MasksOpaquePixels;", ["PsiCore.FramePlan"]),
+    # 'Auto' and its measurement (psi::MeasuredChoice): the slower way kept; a new transfer
+    # function or mesh not measured again; the fan timed in parallel, where it draws another
+    # image; an alternative opened under a forced setting.
+    Mutation("measured_choice_keeps_the_slower", "Core/PsiMeasuredChoice.cxx",
+             "if (this->TrialSeconds < this->BestSeconds)",
+             "if (this->BestSeconds == std::numeric_limits<double>::infinity())",
+             ["PsiCore.MeasuredChoice"]),
+    Mutation("measured_choice_not_again", "Core/PsiMeasuredChoice.cxx",
+             "if (!this->Started || decides != this->Decides ||",
+             "if (!this->Started ||", ["PsiCore.MeasuredChoice", "PsiRendering.MeasuredChoice"]),
+    Mutation("measured_choice_fan_in_parallel", "Core/PsiFramePlan.cxx",
+             "!f.SeparateOpacity &&\n    f.ExactSegments;",
+             "!f.SeparateOpacity &&\n    true;", ["PsiCore.FramePlan", "PsiRendering.MeasuredChoice"]),
+    Mutation("measured_choice_despite_forced_direction", "Core/PsiFramePlan.cxx",
+             "plan.Open.Direction = autoFront;", "plan.Open.Direction = possible;",
+             ["PsiCore.FramePlan", "PsiRendering.MeasuredChoice"]),
     # A cycle break (Williams 1992 §7) takes the nearest remaining tetrahedron instead of the
     # farthest (the key's ascending order is farthest first), or the one of smallest id: the
     # breaks cascade on a mesh with cycles (a twisted Delaunay mesh).

@@ -764,6 +764,8 @@ def case_outofrange():
     view = make_view()
     d = show(producer(make_grid(p, tets, point_scalars=field(p))), view, "f", unit=0.15)
     aim(view, [0, 1, 0, 1, 0, 1])
+    # one way fixed: under 'Auto' the frames of a measurement may draw others (within 1/255)
+    d.EarlyRayTermination, d.Projector, d.Decomposition = "Off", "Geometry Shader", "Silhouette"
     for name, bad, clamped in (("IntegrationMethod", 99, 6), ("IntegrationMethod", -3, 0),
                                ("SortMethod", 7, 1), ("AdaptiveSampling", 5, 2),
                                ("IsosurfaceMethod", -1, 0), ("IsosurfaceShading", 9, 2)):
