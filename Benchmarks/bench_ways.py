@@ -56,9 +56,24 @@ def scene(name, mapper):
         cam.Azimuth(30)
         cam.Elevation(20)
         view.ResetCamera()
-    if mapper == FLOOR:  # a mapper-only switch: on the representation of this process
-        rep.GetClientSideObject().GetActiveRepresentation().SetRasterFloor(1)
+    if mapper == FLOOR:
+        set_raster_floor(rep)
     return view, rep, src.GetDataInformation().GetNumberOfCells()
+
+
+def set_raster_floor(rep):
+    """RasterFloor on: a mapper-only switch with no property, called on the 'Psi Volume'
+    representation through a ClientServer stream (the representation is not Python-wrapped)."""
+    from paraview.modules.vtkRemotingClientServerStream import vtkClientServerStream
+    from paraview.modules.vtkRemotingCore import vtkPVSession
+
+    owner = rep.GetProperty("LastDrawWay").SMProperty.GetParent()  # the 'Psi Volume' sub-proxy
+    stream = vtkClientServerStream()
+    stream.StreamFromString("Invoke id_value(1) GetVTKObject uint32_value(%d)\n"
+                            "Assign id_value(5050601) LastResult()\n"
+                            "Invoke id_value(5050601) SetRasterFloor int32_value(1)\n"
+                            "Delete id_value(5050601)" % owner.GetGlobalID())
+    owner.GetSession().ExecuteStream(vtkPVSession.RENDER_SERVER, stream, False)
 
 
 def draw_way(rep):
