@@ -7,6 +7,8 @@
     one named function per check, and a test file past 600 lines holds more than one concept
     (its mesh builders or checkers belong in a header of their own);
   - no shader file (Shaders/*.glsl) longer than 300 lines;
+  - the README, a user's manual, at most 400 lines, and no table row of it repeated in docs/*.md
+    (a table is kept in one place);
   - the modules' dependencies along VTK's line: Core, Rendering and Filters depend on no ParaView
     module (Rendering renders from plain VTK), Core on neither Rendering nor Representations, and
     Rendering and Filters not on Representations;
@@ -30,7 +32,7 @@ from xml.parsers.expat import ExpatError
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 FOLDERS = ["Core", "Rendering", "Representations", "Filters", "Readers",
            "Testing/Cxx", "Reference", "Testing/Fuzz"]
-MAX_FUNCTION, MAX_FILE, MAX_MAPPER, MAX_SHADER = 150, 600, 500, 300
+MAX_FUNCTION, MAX_FILE, MAX_MAPPER, MAX_SHADER, MAX_README = 150, 600, 500, 300, 400
 
 
 def strip(src):
@@ -183,9 +185,26 @@ def stale_references(build=None):
     return errors
 
 
+def readme():
+    """The README's length, and its table rows (bar the header separators) found again in a
+    page of docs/."""
+    text = (ROOT / "README.md").read_text()
+    errors = []
+    if text.count("\n") > MAX_README:
+        errors.append("README.md: %d lines (limit %d)" % (text.count("\n"), MAX_README))
+    rows = {line.strip() for line in text.splitlines()
+            if line.startswith("|") and not re.match(r"^\|[-| :]+\|$", line.strip())}
+    for page in sorted((ROOT / "docs").glob("*.md")):
+        twice = rows & {line.strip() for line in page.read_text().splitlines()}
+        if twice:
+            errors.append("README.md: %d table row(s) also in %s, e.g. %s"
+                          % (len(twice), page.relative_to(ROOT), sorted(twice)[0][:60]))
+    return errors
+
+
 def main():
     build = sys.argv[sys.argv.index("--build-dir") + 1] if "--build-dir" in sys.argv else None
-    errors = malformed_xml() + stale_references(build)
+    errors = malformed_xml() + stale_references(build) + readme()
     for folder in FOLDERS:
         for path in sorted((ROOT / folder).glob("*.[ch]xx")) + sorted((ROOT / folder).glob("*.h")):
             rel = path.relative_to(ROOT)
