@@ -18,6 +18,7 @@ DOCS = ROOT / "docs" / "benchmarks"
 # The sections in page order: benchmark (as records name it) and the section's title.
 SECTIONS = [
     ("Benchmarks/bench_scale.py", "against 'Projected tetra' as the mesh grows"),
+    ("Benchmarks/bench_ways.py", "the way 'Auto' chooses against each way fixed and the raster floor"),
     ("Benchmarks/bench_interaction.py", "while the camera moves: the level of detail"),
     ("Benchmarks/bench_intermixed.py", "several volumes in one view: one of n against two of n/2"),
     ("Benchmarks/bench_moreland_table.py", "Moreland's Table 6.4 side by side"),

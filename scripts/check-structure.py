@@ -7,6 +7,9 @@
     one named function per check, and a test file past 600 lines holds more than one concept
     (its mesh builders or checkers belong in a header of their own);
   - no shader file (Shaders/*.glsl) longer than 300 lines;
+  - every C++ file of the project formatted as .clang-format says (VTK's style), by clang-format
+    14 (Debian 12's: other versions break some lines differently; with another version, or
+    none, the format is not checked and the output says so);
   - the README, a user's manual, at most 400 lines, and no table row of it repeated in docs/*.md
     (a table is kept in one place);
   - the modules' dependencies along VTK's line: Core, Rendering and Filters depend on no ParaView
@@ -25,6 +28,8 @@ a body is the braces that follow a line ending a signature `)` (or `) const`, `o
 Prints every violation and exits 1 when there is one."""
 import pathlib
 import re
+import shutil
+import subprocess
 import sys
 import xml.dom.minidom
 from xml.parsers.expat import ExpatError
@@ -182,6 +187,31 @@ def stale_references(build=None):
         for header in sorted((ROOT / module).glob("*.h")):
             if header.stem not in listed:
                 errors.append("%s/%s: not in %s/CMakeLists.txt" % (module, header.name, module))
+    return errors
+
+
+CLANG_FORMAT_MAJOR = 14
+
+
+def unformatted():
+    """The C++ files clang-format (of the pinned major version) would change."""
+    tool = shutil.which("clang-format-%d" % CLANG_FORMAT_MAJOR) or shutil.which("clang-format")
+    version = subprocess.run([tool, "--version"], capture_output=True, text=True).stdout \
+        if tool else ""
+    major = re.search(r"version (\d+)", version)
+    if not major or int(major.group(1)) != CLANG_FORMAT_MAJOR:
+        print("format: not checked (clang-format %d wanted, %s found)"
+              % (CLANG_FORMAT_MAJOR, major.group(0) if major else "none"))
+        return []
+    files = [str(p.relative_to(ROOT)) for folder in FOLDERS + ["Qt", "Benchmarks", "Plugin",
+                                                                "Readers/SurfaceOFF"]
+             for pattern in ("*.cxx", "*.h") for p in sorted((ROOT / folder).glob(pattern))]
+    errors = []
+    for name in files:
+        done = subprocess.run([tool, "--style=file", "--dry-run", "--Werror", name], cwd=ROOT,
+                              capture_output=True, text=True)
+        if done.returncode != 0:
+            errors.append("%s: not formatted (clang-format -i %s)" % (name, name))
     return errors
 
 
