@@ -6,10 +6,10 @@
 // pre-integration table (Röttger, Kraus & Ertl 2000) is timed and measured through one.
 // `--csv` prints machine-readable rows for Benchmarks/bench_integration.py.
 #include "PsiIntegrationMethods.h"
-#include "PsiReferenceIntegrals.h"
+#include "PsiPartialPreIntegrationTable.h"
 #include "PsiPreIntegrationTable.h"
 #include "PsiRampTable.h"
-#include "PsiPartialPreIntegrationTable.h"
+#include "PsiReferenceIntegrals.h"
 #include "PsiTransferFunctionTable.h"
 
 #include <algorithm>
@@ -38,8 +38,8 @@ int main(int argc, char* argv[])
   // Full pre-integration: a lookup in a table built for a transfer function, whose build is
   // timed separately (it is paid on every transfer-function edit).
   const psi::TransferFunctionTable tf = psitest::RampTable({ 0, 0, 1, 0 }, { 1, 0.5f, 0, 1 });
-  const psi::PreIntegrationTable pre = psi::BuildPreIntegrationTable(
-    tf, table, psi::MakePreIntegrationLengthAxis(0, 100.0));
+  const psi::PreIntegrationTable pre =
+    psi::BuildPreIntegrationTable(tf, table, psi::MakePreIntegrationLengthAxis(0, 100.0));
   // For its accuracy: a table for L(s) = s, tau(s) = s on [0, 1], lengths up to 1; a sweep point
   // (alpha_f, alpha_b, D) is the segment from s = alpha_f to s = alpha_b.
   psi::TransferFunctionTable ramp = tf;
@@ -49,17 +49,19 @@ int main(int argc, char* argv[])
     const float v[4] = { s, s, s, s };
     std::copy(v, v + 4, &ramp.Rgba[4 * i]);
   }
-  const psi::PreIntegrationTable rampTable = psi::BuildPreIntegrationTable(
-    ramp, table, psi::MakePreIntegrationLengthAxis(0, 1.0));
+  const psi::PreIntegrationTable rampTable =
+    psi::BuildPreIntegrationTable(ramp, table, psi::MakePreIntegrationLengthAxis(0, 1.0));
 
   if (csv)
   {
-    std::printf("method,ns_per_segment,max_err_D0.001,max_err_D0.1,max_err_D1,max_err_D100,mean_err,"
-                "psi_table,pre_integration_table,optical_model\n");
+    std::printf(
+      "method,ns_per_segment,max_err_D0.001,max_err_D0.1,max_err_D1,max_err_D100,mean_err,"
+      "psi_table,pre_integration_table,optical_model\n");
   }
   else
   {
-    std::printf("Psi table %dx%d built in %.3f s; full pre-integration table %dx%dx%d built in %.3f s\n\n",
+    std::printf(
+      "Psi table %dx%d built in %.3f s; full pre-integration table %dx%dx%d built in %.3f s\n\n",
       table.N, table.N, table.BuildSeconds, pre.ScalarSamples, pre.ScalarSamples, pre.LengthSamples,
       pre.BuildSeconds);
     std::printf("%-34s %10s %10s %10s %10s %10s %10s\n", "method", "ns/segment", "max D=.001",
@@ -85,7 +87,8 @@ int main(int argc, char* argv[])
         sink += info.Integrate(s, &table)[0];
       }
     }
-    const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() / N;
+    const double ns =
+      std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() / N;
     double maxErr[4], meanErr = 0;
     int count = 0, di = 0;
     for (double D : { 0.001, 0.1, 1.0, 100.0 })

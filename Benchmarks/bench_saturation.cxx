@@ -87,8 +87,8 @@ std::vector<std::vector<Fragment>> PixelFragments(
   std::vector<std::vector<Fragment>> pixels = psi::ReferencePixelPieces(sc, cam);
   for (auto& list : pixels)
   {
-    std::sort(list.begin(), list.end(),
-      [](const Fragment& a, const Fragment& b) { return a.t0 < b.t0; });
+    std::sort(
+      list.begin(), list.end(), [](const Fragment& a, const Fragment& b) { return a.t0 < b.t0; });
   }
   return pixels;
 }
@@ -97,10 +97,10 @@ std::vector<std::vector<Fragment>> PixelFragments(
 
 struct RayTally
 {
-  double Alpha = 0;                          // accumulated opacity at the ray's end
-  size_t Fragments = 0;                      // segments through tetrahedra
-  double Length = 0;                         // ray length inside the mesh
-  double TSat[NumThresholds];                // where alpha first reaches each threshold
+  double Alpha = 0;                           // accumulated opacity at the ray's end
+  size_t Fragments = 0;                       // segments through tetrahedra
+  double Length = 0;                          // ray length inside the mesh
+  double TSat[NumThresholds];                 // where alpha first reaches each threshold
   size_t FragmentsBehind[NumThresholds] = {}; // fragments starting at or behind TSat
   double LengthBehind[NumThresholds] = {};
 };
@@ -174,9 +174,9 @@ RayTally Walk(const std::vector<Fragment>& fragments, const Attenuation& tau)
 // 1 - exp(-kappa length), which gives each pixel's length inside the mesh.
 struct CheckResult
 {
-  double MaxAlphaError = 0;          // |reference alpha - walk alpha|, largest over pixels
-  double MaxLengthError = 0;         // relative, largest over pixels
-  size_t ReferenceFragments = 0;     // segments the reference integrated
+  double MaxAlphaError = 0;      // |reference alpha - walk alpha|, largest over pixels
+  double MaxLengthError = 0;     // relative, largest over pixels
+  size_t ReferenceFragments = 0; // segments the reference integrated
 };
 
 CheckResult Check(const psi::ReferenceScene& scene, const psi::ReferenceCamera& camera,
@@ -187,7 +187,8 @@ CheckResult Check(const psi::ReferenceScene& scene, const psi::ReferenceCamera& 
   CheckResult c;
 
   psi::ReferenceScene white = scene;
-  white.Transfer = [&tau](double v, double out[4]) {
+  white.Transfer = [&tau](double v, double out[4])
+  {
     out[0] = out[1] = out[2] = 1;
     out[3] = tau(v);
   };
@@ -201,7 +202,8 @@ CheckResult Check(const psi::ReferenceScene& scene, const psi::ReferenceCamera& 
   const double kappa = 1e-3 / extent; // optical depth at most ~1e-3 on any ray
   size_t calls = 0;
   psi::ReferenceScene thin = std::move(white);
-  thin.Transfer = [kappa, &calls](double, double out[4]) {
+  thin.Transfer = [kappa, &calls](double, double out[4])
+  {
     ++calls;
     out[0] = out[1] = out[2] = 1;
     out[3] = kappa;
@@ -305,10 +307,10 @@ int main(int argc, char* argv[])
       lengthBehind[a] += r.LengthBehind[a];
     }
   }
-  std::printf("tetrahedra %zu\nsize %d %d\nunit %.9g\n", scene.Tets.size(), s.Width, s.Height,
-    s.Unit);
-  std::printf("pixels_hit %zu\nfragments %zu\nfragments_per_hit_pixel %.2f\n", hitPixels,
-    fragments, hitPixels ? double(fragments) / hitPixels : 0.0);
+  std::printf(
+    "tetrahedra %zu\nsize %d %d\nunit %.9g\n", scene.Tets.size(), s.Width, s.Height, s.Unit);
+  std::printf("pixels_hit %zu\nfragments %zu\nfragments_per_hit_pixel %.2f\n", hitPixels, fragments,
+    hitPixels ? double(fragments) / hitPixels : 0.0);
   std::printf("mean_alpha_hit_pixels %.6f\n", hitPixels ? alphaSum / hitPixels : 0.0);
   for (int a = 0; a < NumThresholds; ++a)
   {

@@ -52,10 +52,12 @@ void Row(const char* name, vtkDataSet* input, int mode)
   vtkNew<vtkPsiConformingTetrahedralize> filter;
   filter->SetSplitMode(mode);
   filter->SetInputData(input);
-  const double tFilter = Best(3, [&] {
-    filter->Modified();
-    filter->Update();
-  });
+  const double tFilter = Best(3,
+    [&]
+    {
+      filter->Modified();
+      filter->Update();
+    });
   vtkUnstructuredGrid* ug = filter->GetOutput();
   const size_t n = static_cast<size_t>(ug->GetNumberOfCells());
   std::vector<float> points4(4 * static_cast<size_t>(ug->GetNumberOfPoints()));
@@ -78,9 +80,8 @@ void Row(const char* name, vtkDataSet* input, int mode)
       tets[4 * t + k] = static_cast<uint32_t>(p[k]);
   }
   std::vector<int32_t> neighbors;
-  const double tConn = Best(3, [&] {
-    psi::ComputeTetNeighbors(tets.data(), n, points4.size() / 4, neighbors);
-  });
+  const double tConn =
+    Best(3, [&] { psi::ComputeTetNeighbors(tets.data(), n, points4.size() / 4, neighbors); });
 
   // Views: 8 perspective eyes on a sphere 2.5 diagonals around the centre.
   const double c[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
@@ -97,18 +98,22 @@ void Row(const char* name, vtkDataSet* input, int mode)
     const double th = 0.7 + 2.1 * v, ph = 0.3 + 0.37 * v;
     const double eye[3] = { c[0] + 2.5 * diag * std::cos(th) * std::cos(ph),
       c[1] + 2.5 * diag * std::sin(th) * std::cos(ph), c[2] + 2.5 * diag * std::sin(ph) };
-    tCentroid += Best(1, [&] {
-      psi::SortBackToFront(psi::ComputeCentroids(points4.data(), tets.data(), n), eye, false, order);
-    });
+    tCentroid += Best(1,
+      [&]
+      {
+        psi::SortBackToFront(
+          psi::ComputeCentroids(points4.data(), tets.data(), n), eye, false, order);
+      });
     psi::MPVONCResult r;
-    tMPVONC += Best(1, [&] {
-      r = psi::SortMPVONC(points4.data(), tets.data(), n, neighbors.data(), eye, false, order);
-    });
+    tMPVONC += Best(1,
+      [&] {
+        r = psi::SortMPVONC(points4.data(), tets.data(), n, neighbors.data(), eye, false, order);
+      });
     cycles += r.CyclesBroken;
   }
   std::printf("| %-28s | %9zu | %9lld | %10.3f | %12.3f | %13.1f | %10.1f | %11.1f |\n", name, n,
-    (long long)filter->GetNumberOfRemovedDegenerateTets(), tFilter, tConn,
-    1e3 * tCentroid / views, 1e3 * tMPVONC / views, double(cycles) / views);
+    (long long)filter->GetNumberOfRemovedDegenerateTets(), tFilter, tConn, 1e3 * tCentroid / views,
+    1e3 * tMPVONC / views, double(cycles) / views);
 }
 } // namespace
 

@@ -68,9 +68,8 @@ void PlanWay(PsiFramePlan& plan, const psi::Settings& s, const PsiSceneFacts& fa
   plan.Open.Direction = autoFront;
   plan.Open.MasksPerFrame = autoFront;
   plan.Open.Projector = s.Projector == psi::Projectors::Auto && facts.ComputeAvailable;
-  plan.Open.Decomposition =
-    s.Decomposition == psi::Decompositions::Auto && f.Silhouette && !f.SeparateOpacity &&
-    f.ExactSegments;
+  plan.Open.Decomposition = s.Decomposition == psi::Decompositions::Auto && f.Silhouette &&
+    !f.SeparateOpacity && f.ExactSegments;
   if (facts.DepthPeeled)
   {
     plan.Open = psi::DrawWayOptions();

@@ -18,15 +18,16 @@
 /// What the frame finds in the scene and in its data.
 struct PsiSceneFacts
 {
-  bool Parallel = false;             ///< parallel projection
-  bool NearPlaneCuts = false;        ///< the near plane cuts the mesh's bounds
-  bool OpaqueOverlaps = false;       ///< opaque geometry overlaps the volume (psi::OpaqueGeometryOverlaps)
-  bool SceneOpaque = false;          ///< the scene has opaque geometry anywhere
-  bool DepthPeeled = false;          ///< drawn within a depth-peeling stage (not Plain)
-  bool SeparateOpacity = false;      ///< the mesh carries a separate opacity array
-  bool ZeroOpacity = false;          ///< the opacity function has zero regions over the range
-  bool NodesFaithful = true;         ///< the adaptive nodes follow the function (PsiAdaptiveNodes)
-  double TableDeviation = 0;         ///< how far the sampled table misses the nodes
+  bool Parallel = false;      ///< parallel projection
+  bool NearPlaneCuts = false; ///< the near plane cuts the mesh's bounds
+  bool OpaqueOverlaps =
+    false;                  ///< opaque geometry overlaps the volume (psi::OpaqueGeometryOverlaps)
+  bool SceneOpaque = false; ///< the scene has opaque geometry anywhere
+  bool DepthPeeled = false; ///< drawn within a depth-peeling stage (not Plain)
+  bool SeparateOpacity = false; ///< the mesh carries a separate opacity array
+  bool ZeroOpacity = false;     ///< the opacity function has zero regions over the range
+  bool NodesFaithful = true;    ///< the adaptive nodes follow the function (PsiAdaptiveNodes)
+  double TableDeviation = 0;    ///< how far the sampled table misses the nodes
   /// The largest opacity a ray through the mesh's bounds can reach (psi::MaxRayOpacity over the
   /// bounds' diagonal): 1 when unknown.
   double MaxRayOpacity = 1;
@@ -54,11 +55,11 @@ struct PsiFramePlan
   /// The tables the features read besides the transfer function (always read).
   struct
   {
-    bool OpacityPrefix = false;  ///< early discard's prefix counts
-    bool PartialPreIntegrationTable = false;       ///< partial pre-integration's Psi table
-    bool PreIntegration = false; ///< Röttger's 3D table
-    bool AdaptiveNodes = false;  ///< the nodes as uniforms
-    bool Gradients = false;      ///< smoothed point gradients (smooth isosurfaces)
+    bool OpacityPrefix = false;              ///< early discard's prefix counts
+    bool PartialPreIntegrationTable = false; ///< partial pre-integration's Psi table
+    bool PreIntegration = false;             ///< Röttger's 3D table
+    bool AdaptiveNodes = false;              ///< the nodes as uniforms
+    bool Gradients = false;                  ///< smoothed point gradients (smooth isosurfaces)
   } Tables;
   /// Copy the scene's depth for the depth test (opaque geometry, or the shaders sample it).
   bool SceneDepth = false;

@@ -12,11 +12,11 @@ namespace psi
 {
 struct FrameStats
 {
-  int64_t NumberOfTetrahedra = 0;   ///< drawn (summed over processes)
-  int64_t NumberOfSkippedCells = 0; ///< non-tetrahedra, non-finite scalars (summed)
-  int64_t LastSortCycles = 0;       ///< cycles MPVONC had to break (summed)
-  double LastRenderSeconds = 0;     ///< CPU seconds of the frame's Render calls (largest)
-  double LastSortSeconds = 0;       ///< of the visibility sort (largest)
+  int64_t NumberOfTetrahedra = 0;       ///< drawn (summed over processes)
+  int64_t NumberOfSkippedCells = 0;     ///< non-tetrahedra, non-finite scalars (summed)
+  int64_t LastSortCycles = 0;           ///< cycles MPVONC had to break (summed)
+  double LastRenderSeconds = 0;         ///< CPU seconds of the frame's Render calls (largest)
+  double LastSortSeconds = 0;           ///< of the visibility sort (largest)
   double LastPreIntegrationSeconds = 0; ///< of the last full pre-integration rebuild (largest)
   /// Several volumes intermixed: how many were drawn in one pass with this one (0: drawn alone;
   /// largest), and that combined draw's tetrahedra (summed).

@@ -41,7 +41,8 @@ struct Segment
 /// including +inf (Psi = 0). Returns NaN for NaN input.
 PSIVOLUMECORE_EXPORT double Psi(double taubD, double taufD);
 
-/// gamma = tau D / (tau D + 1), the table coordinate of Moreland & Angel 2004 Eq. 11 (in [0, 1]; +inf -> 1).
+/// gamma = tau D / (tau D + 1), the table coordinate of Moreland & Angel 2004 Eq. 11 (in [0, 1];
+/// +inf -> 1).
 PSIVOLUMECORE_EXPORT double GammaOf(double tauD);
 /// Inverse of GammaOf: tau D = gamma / (1 - gamma).
 PSIVOLUMECORE_EXPORT double TauDOf(double gamma);
@@ -49,11 +50,12 @@ PSIVOLUMECORE_EXPORT double TauDOf(double gamma);
 /// zeta = exp(-(tau_b + tau_f) D / 2), Moreland & Angel 2004 Eq. 8.
 PSIVOLUMECORE_EXPORT double Zeta(double taubD, double taufD);
 
-/// Shirley-Tuchman average luminance and attenuation (Moreland 2004 dissertation §3.2): L and tau taken as the
-/// mean of the two ends, alpha = 1 - exp(-tau D), color = L alpha.
+/// Shirley-Tuchman average luminance and attenuation (Moreland 2004 dissertation §3.2): L and tau
+/// taken as the mean of the two ends, alpha = 1 - exp(-tau D), color = L alpha.
 PSIVOLUMECORE_EXPORT Rgba IntegrateAverage(const Segment& s);
 
-/// Moreland & Angel 2004 Eq. 7 given a Psi value (exact Psi, or a table lookup): partial pre-integration.
+/// Moreland & Angel 2004 Eq. 7 given a Psi value (exact Psi, or a table lookup): partial
+/// pre-integration.
 PSIVOLUMECORE_EXPORT Rgba IntegrateWithPsi(const Segment& s, double psi);
 
 // Where the exponent E(u) = b u + c u^2 (b = tau_f D, c = (tau_b D - tau_f D)/2) reaches `cut`.

@@ -227,8 +227,8 @@ Rgba IntegrateLinearLuminanceAverageOpacity(const TFSegment& s, const PartialPre
 Rgba IntegrateLinearOpacityImproved(const TFSegment& s, const PartialPreIntegrationTable*)
 {
   const double tb = Transmittance(s.ab), tf = Transmittance(s.af);
-  const double zeta =
-    std::exp(-DepthOfTransmittance(0.5 * (tb + tf) - 0.108165 * (tb - tf) * (tb - tf), s.D, s.unit));
+  const double zeta = std::exp(
+    -DepthOfTransmittance(0.5 * (tb + tf) - 0.108165 * (tb - tf) * (tb - tf), s.D, s.unit));
   const double tau2D = DepthOfTransmittance(0.27 * tb + 0.73 * tf, s.D, s.unit);
   return Blend(s, std::isinf(tau2D) ? 0.0 : PsiHomogeneous(tau2D), zeta);
 }
@@ -257,8 +257,7 @@ constexpr IntegrationMethodInfo Rows[] = {
     IntegrateLinearExact, 1e-9, // closed form in double
     "Williams, Max & Stein 1998; Moreland 2004 dissertation §3.2.3, Eq. 3.28" },
   { Method::AverageOpacity, "Average Opacity", "PsiIntegrateAverageOpacity", false, false, Opacity,
-    IntegrateAverageOpacity, 0.5,
-    "Wilhelms & van Gelder 1991; Moreland 2004 dissertation §5.3" },
+    IntegrateAverageOpacity, 0.5, "Wilhelms & van Gelder 1991; Moreland 2004 dissertation §5.3" },
   { Method::LinearLuminanceAverageOpacity, "Linear Luminance Average Opacity",
     "PsiIntegrateLinearLuminanceAverageOpacity", false, false, Opacity,
     IntegrateLinearLuminanceAverageOpacity, 0.2, // dissertation Fig. 5.7

@@ -34,14 +34,14 @@ struct PartialPreIntegrationTable;
 /// enumeration) and the row of IntegrationMethodTable().
 enum class Method
 {
-  Average = 0,                     ///< 1. average luminance and attenuation (§3.2.2, Eq. 3.16)
-  PartialPreIntegration = 1,       ///< 2. Psi table (§5.2; Moreland & Angel 2004)
-  LinearExact = 2,                 ///< 3. Williams, Max & Stein 1998 (§3.2.3, Eq. 3.28)
-  AverageOpacity = 3,              ///< 4. average luminance and opacity (Wilhelms-van Gelder)
+  Average = 0,                       ///< 1. average luminance and attenuation (§3.2.2, Eq. 3.16)
+  PartialPreIntegration = 1,         ///< 2. Psi table (§5.2; Moreland & Angel 2004)
+  LinearExact = 2,                   ///< 3. Williams, Max & Stein 1998 (§3.2.3, Eq. 3.28)
+  AverageOpacity = 3,                ///< 4. average luminance and opacity (Wilhelms-van Gelder)
   LinearLuminanceAverageOpacity = 4, ///< 5. §5.3.1, Appendix B.5
-  LinearOpacityImproved = 5,       ///< 6. §5.3.2, Eqs. 5.13-5.14, Appendix B.6
-  FullPreIntegration = 6,          ///< 7. Röttger et al. 2000, 3D table per transfer function
-  Count = 7                        ///< number of rows of IntegrationMethodTable()
+  LinearOpacityImproved = 5,         ///< 6. §5.3.2, Eqs. 5.13-5.14, Appendix B.6
+  FullPreIntegration = 6,            ///< 7. Röttger et al. 2000, 3D table per transfer function
+  Count = 7                          ///< number of rows of IntegrationMethodTable()
 };
 
 /// The optical model a method approximates, hence the reference it is measured against.

@@ -90,7 +90,8 @@ TetMesh IntermixMeshes(const std::vector<IntermixedVolume>& volumes, int samples
       const double u = v.Points4[4 * i + 3];
       m.Points4.insert(m.Points4.end(),
         { static_cast<float>(w[0] - m.Shift[0]), static_cast<float>(w[1] - m.Shift[1]),
-          static_cast<float>(w[2] - m.Shift[2]), static_cast<float>(SlotScalar(k, n, samples, u)) });
+          static_cast<float>(w[2] - m.Shift[2]),
+          static_cast<float>(SlotScalar(k, n, samples, u)) });
       if (opacity)
       {
         const double o = v.Opacity.empty() ? u : v.Opacity[i];
@@ -163,7 +164,8 @@ std::vector<int32_t> WeldedFaceNeighbors(const TetMesh& mesh)
   const size_t np = mesh.NumberOfPoints();
   std::vector<uint32_t> byPosition(np);
   std::iota(byPosition.begin(), byPosition.end(), 0u);
-  const auto key = [&mesh](uint32_t i) {
+  const auto key = [&mesh](uint32_t i)
+  {
     const float* p = &mesh.Points4[4 * size_t(i)];
     return std::make_tuple(p[0], p[1], p[2]);
   };

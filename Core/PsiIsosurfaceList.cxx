@@ -8,8 +8,8 @@
 
 namespace psi
 {
-IsosurfaceList IsosurfaceList::Normalize(const std::vector<double>& values,
-  const std::vector<double>& opacities, double defaultOpacity)
+IsosurfaceList IsosurfaceList::Normalize(
+  const std::vector<double>& values, const std::vector<double>& opacities, double defaultOpacity)
 {
   std::vector<std::pair<double, float>> list; // (value, opacity)
   for (size_t i = 0; i < values.size(); ++i)
@@ -18,17 +18,13 @@ IsosurfaceList IsosurfaceList::Normalize(const std::vector<double>& values,
     const double o = i < opacities.size() ? opacities[i] : defaultOpacity;
     if (FiniteScalar(v))
     {
-      list.emplace_back(v,
-        static_cast<float>(std::isfinite(o) ? std::min(1.0, std::max(0.0, o)) : 1.0));
+      list.emplace_back(
+        v, static_cast<float>(std::isfinite(o) ? std::min(1.0, std::max(0.0, o)) : 1.0));
     }
   }
   using Entry = std::pair<double, float>;
-  auto byValue = [](const Entry& a, const Entry& b) {
-    return a.first < b.first;
-  };
-  auto sameValue = [](const Entry& a, const Entry& b) {
-    return a.first == b.first;
-  };
+  auto byValue = [](const Entry& a, const Entry& b) { return a.first < b.first; };
+  auto sameValue = [](const Entry& a, const Entry& b) { return a.first == b.first; };
   std::stable_sort(list.begin(), list.end(), byValue);
   list.erase(std::unique(list.begin(), list.end(), sameValue), list.end());
   IsosurfaceList out;

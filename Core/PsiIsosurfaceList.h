@@ -21,8 +21,8 @@ struct PSIVOLUMECORE_EXPORT IsosurfaceList
   size_t Dropped = 0;           ///< distinct finite values beyond MaxCount
 
   /// values[i] with opacities[i], or `defaultOpacity` where opacities has no entry i.
-  static IsosurfaceList Normalize(const std::vector<double>& values,
-    const std::vector<double>& opacities, double defaultOpacity);
+  static IsosurfaceList Normalize(
+    const std::vector<double>& values, const std::vector<double>& opacities, double defaultOpacity);
 
   int Count() const { return static_cast<int>(this->Values.size()); }
   bool Empty() const { return this->Values.empty(); }

@@ -174,7 +174,8 @@ bool Barycentric(const double a[3], const double b[3], const double c[3], const 
     e3[k] = d[k] - a[k];
     r[k] = p[k] - a[k];
   }
-  auto det = [](const double* u, const double* v, const double* w) {
+  auto det = [](const double* u, const double* v, const double* w)
+  {
     return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
       u[2] * (v[0] * w[1] - v[1] * w[0]);
   };

@@ -77,8 +77,8 @@ uint64_t CentroidKey(const float* points4, const uint32_t* v, uint32_t t, const 
 // Williams §4: the relation across face f of the tetrahedron with points v. The eye is compared
 // with the face plane: when the eye and the opposite vertex are on the same side, the neighbour
 // is behind the face. NoOrder for an edge-on face (the eye in its plane) or a flat tetrahedron.
-int8_t FaceRelation(const float* points4, const uint32_t* v, int f, const double eye[3],
-  bool parallel)
+int8_t FaceRelation(
+  const float* points4, const uint32_t* v, int f, const double eye[3], bool parallel)
 {
   auto P = [&](uint32_t id) { return points4 + 4 * static_cast<size_t>(id); };
   const float* a = P(v[FaceVerts[f][0]]);
@@ -89,8 +89,8 @@ int8_t FaceRelation(const float* points4, const uint32_t* v, int f, const double
   const double w[3] = { double(cc[0]) - a[0], double(cc[1]) - a[1], double(cc[2]) - a[2] };
   const double N[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
     u[0] * w[1] - u[1] * w[0] };
-  const double so = N[0] * (double(o[0]) - a[0]) + N[1] * (double(o[1]) - a[1]) +
-    N[2] * (double(o[2]) - a[2]);
+  const double so =
+    N[0] * (double(o[0]) - a[0]) + N[1] * (double(o[1]) - a[1]) + N[2] * (double(o[2]) - a[2]);
   double e[3]; // toward the eye; in parallel projection the eye is at infinity
   for (int k = 0; k < 3; ++k)
   {
@@ -128,59 +128,63 @@ void BehindRelation(const float* points4, TetCells tets, int64_t n, const int32_
 {
   std::vector<uint8_t> decided(static_cast<size_t>(n), 0);
   vtkSMPThreadLocal<Counts> localCounts;
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    Counts& c = localCounts.Local();
-    for (vtkIdType t = begin; t < end; ++t)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      uint32_t v[4];
-      tets.Get(static_cast<size_t>(t), v);
-      for (int f = 0; f < 4; ++f)
+      Counts& c = localCounts.Local();
+      for (vtkIdType t = begin; t < end; ++t)
       {
-        const int64_t nb = neighbors[4 * t + f];
-        if (nb <= t || nb >= n)
+        uint32_t v[4];
+        tets.Get(static_cast<size_t>(t), v);
+        for (int f = 0; f < 4; ++f)
         {
-          continue; // boundary, or decided by the neighbour
+          const int64_t nb = neighbors[4 * t + f];
+          if (nb <= t || nb >= n)
+          {
+            continue; // boundary, or decided by the neighbour
+          }
+          if (SharedFace(neighbors, nb, t) == 4)
+          {
+            ++c.Inconsistent;
+            continue;
+          }
+          const int8_t r = FaceRelation(points4, v, f, eye, parallel);
+          if (r == NoOrder)
+          {
+            ++c.Degenerate;
+            continue;
+          }
+          ++c.Constraints;
+          decided[t] |= PackRelation(r, f);
         }
-        if (SharedFace(neighbors, nb, t) == 4)
-        {
-          ++c.Inconsistent;
-          continue;
-        }
-        const int8_t r = FaceRelation(points4, v, f, eye, parallel);
-        if (r == NoOrder)
-        {
-          ++c.Degenerate;
-          continue;
-        }
-        ++c.Constraints;
-        decided[t] |= PackRelation(r, f);
       }
-    }
-  });
+    });
   rel.resize(static_cast<size_t>(n));
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    Counts& c = localCounts.Local();
-    for (vtkIdType t = begin; t < end; ++t)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      uint8_t packed = decided[t];
-      for (int f = 0; f < 4; ++f)
+      Counts& c = localCounts.Local();
+      for (vtkIdType t = begin; t < end; ++t)
       {
-        const int64_t nb = neighbors[4 * t + f];
-        if (nb < 0 || nb >= t)
+        uint8_t packed = decided[t];
+        for (int f = 0; f < 4; ++f)
         {
-          continue; // boundary, itself, or decided above
+          const int64_t nb = neighbors[4 * t + f];
+          if (nb < 0 || nb >= t)
+          {
+            continue; // boundary, itself, or decided above
+          }
+          const int j = SharedFace(neighbors, nb, t);
+          if (j == 4)
+          {
+            ++c.Inconsistent;
+            continue;
+          }
+          packed |= PackRelation(static_cast<int8_t>(-RelationAt(decided[nb], j)), f);
         }
-        const int j = SharedFace(neighbors, nb, t);
-        if (j == 4)
-        {
-          ++c.Inconsistent;
-          continue;
-        }
-        packed |= PackRelation(static_cast<int8_t>(-RelationAt(decided[nb], j)), f);
+        rel[t] = packed;
       }
-      rel[t] = packed;
-    }
-  });
+    });
   for (const Counts& c : localCounts)
   {
     result.Constraints += c.Constraints;
@@ -204,16 +208,18 @@ std::vector<uint8_t> InDegrees(const std::vector<uint8_t>& rel, int64_t n, SortD
 {
   const int8_t before = EmittedBefore(direction);
   std::vector<uint8_t> indeg(static_cast<size_t>(n), 0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType t = begin; t < end; ++t)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const int8_t r[4] = { RelationAt(rel[t], 0), RelationAt(rel[t], 1), RelationAt(rel[t], 2),
-        RelationAt(rel[t], 3) };
-      // (Written with std::count: GCC 12 -O3 miscompiled a uint8_t "k += cond ? 1 : 0" loop
-      // here, adding the vector mask -1 instead of 1.)
-      indeg[t] = static_cast<uint8_t>(std::count(r, r + 4, before));
-    }
-  });
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        const int8_t r[4] = { RelationAt(rel[t], 0), RelationAt(rel[t], 1), RelationAt(rel[t], 2),
+          RelationAt(rel[t], 3) };
+        // (Written with std::count: GCC 12 -O3 miscompiled a uint8_t "k += cond ? 1 : 0" loop
+        // here, adding the vector mask -1 instead of 1.)
+        indeg[t] = static_cast<uint8_t>(std::count(r, r + 4, before));
+      }
+    });
   return indeg;
 }
 
@@ -222,8 +228,8 @@ std::vector<uint8_t> InDegrees(const std::vector<uint8_t>& rel, int64_t n, SortD
 // the tetrahedron becomes ready); when none is ready (a cycle, Williams §7) the farthest
 // remaining one is taken. Nearest first: the nearest, in the reversed DAG.
 template <class Key>
-void TopologicalOrder(const Key& key, const int32_t* neighbors,
-  const std::vector<uint8_t>& rel, std::vector<uint8_t>& indeg, std::vector<uint32_t>& order,
+void TopologicalOrder(const Key& key, const int32_t* neighbors, const std::vector<uint8_t>& rel,
+  std::vector<uint8_t>& indeg, std::vector<uint32_t>& order,
   const std::function<void(size_t)>& emittedSoFar, SortDirection direction, MPVONCResult& result)
 {
   const int8_t after = static_cast<int8_t>(-EmittedBefore(direction));
@@ -314,11 +320,14 @@ MPVONCResult SortMPVONC(const float* points4, TetCells tets, size_t numTets,
   const int64_t n = static_cast<int64_t>(numTets);
   std::vector<uint8_t> rel, indeg;
   // Phases I and II on all cores: nothing is emitted, so nothing is drawn, until they end.
-  Parallel([&] {
-    BehindRelation(points4, tets, n, neighbors, eye, parallel, rel, result);
-    indeg = InDegrees(rel, n, direction);
-  });
-  const auto key = [&](uint32_t t) {
+  Parallel(
+    [&]
+    {
+      BehindRelation(points4, tets, n, neighbors, eye, parallel, rel, result);
+      indeg = InDegrees(rel, n, direction);
+    });
+  const auto key = [&](uint32_t t)
+  {
     uint32_t v[4];
     tets.Get(t, v);
     return CentroidKey(points4, v, t, eye, parallel, direction);

@@ -59,9 +59,9 @@ struct MPVONCResult
 /// SortDirection::NearestFirst emits the same DAG's order reversed in the same way (a tetrahedron
 /// after every neighbour in front of it, the nearest ready one first), for front-to-back
 /// compositing; it is as exact, and streams as early.
-PSIVOLUMECORE_EXPORT MPVONCResult SortMPVONC(const float* points4, TetCells tets,
-  size_t numTets, const int32_t* neighbors, const double eye[3], bool parallel,
-  std::vector<uint32_t>& order, const std::function<void(size_t)>& emitted = {},
+PSIVOLUMECORE_EXPORT MPVONCResult SortMPVONC(const float* points4, TetCells tets, size_t numTets,
+  const int32_t* neighbors, const double eye[3], bool parallel, std::vector<uint32_t>& order,
+  const std::function<void(size_t)>& emitted = {},
   SortDirection direction = SortDirection::FarthestFirst);
 
 /// How often SortMPVONC reports its progress, in tetrahedra.

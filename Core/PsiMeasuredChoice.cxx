@@ -130,7 +130,8 @@ bool MeasuredChoice::NextTrial()
         {
           continue; // back to front draws no mask
         }
-        w.MasksPerFrame = w.MasksPerFrame == FewerMasksPerFrame ? DefaultMasksPerFrame : FewerMasksPerFrame;
+        w.MasksPerFrame =
+          w.MasksPerFrame == FewerMasksPerFrame ? DefaultMasksPerFrame : FewerMasksPerFrame;
         break;
       case Dimension::Projector:
         w.ComputeProjector = !w.ComputeProjector;

@@ -23,7 +23,8 @@ double TauDOfWarp(double u)
 
 double PartialPreIntegrationTable::Lookup(double gammab, double gammaf) const
 {
-  auto coord = [this](double g, int& i0, double& w) {
+  auto coord = [this](double g, int& i0, double& w)
+  {
     const double x = WarpOfGamma(std::min(std::max(g, 0.0), 1.0)) * (this->N - 1);
     i0 = std::min(static_cast<int>(std::floor(x)), this->N - 2);
     w = x - i0;
@@ -46,19 +47,23 @@ PartialPreIntegrationTable BuildPsiTable(int n)
   t.Values.resize(static_cast<size_t>(t.N) * t.N);
   // Rows on vtkSMPTools' threads (psi::Parallel): as many as the process allows, not one per core
   // in each MPI rank.
-  psi::Parallel([&t] {
-    vtkSMPTools::For(0, t.N, [&t](vtkIdType first, vtkIdType last) {
-      for (vtkIdType j = first; j < last; ++j)
-      {
-        const double taufD = TauDOfWarp(static_cast<double>(j) / (t.N - 1));
-        for (int i = 0; i < t.N; ++i)
+  psi::Parallel(
+    [&t]
+    {
+      vtkSMPTools::For(0, t.N,
+        [&t](vtkIdType first, vtkIdType last)
         {
-          const double taubD = TauDOfWarp(static_cast<double>(i) / (t.N - 1));
-          t.Values[static_cast<size_t>(j) * t.N + i] = static_cast<float>(Psi(taubD, taufD));
-        }
-      }
+          for (vtkIdType j = first; j < last; ++j)
+          {
+            const double taufD = TauDOfWarp(static_cast<double>(j) / (t.N - 1));
+            for (int i = 0; i < t.N; ++i)
+            {
+              const double taubD = TauDOfWarp(static_cast<double>(i) / (t.N - 1));
+              t.Values[static_cast<size_t>(j) * t.N + i] = static_cast<float>(Psi(taubD, taufD));
+            }
+          }
+        });
     });
-  });
   t.BuildSeconds = clock.Seconds();
   return t;
 }

@@ -1,10 +1,11 @@
-// PartialPreIntegrationTable: the partial pre-integration table Psi(gamma_b, gamma_f) (Moreland & Angel 2004 §4, Eq. 12).
+// PartialPreIntegrationTable: the partial pre-integration table Psi(gamma_b, gamma_f) (Moreland &
+// Angel 2004 §4, Eq. 12).
 //
 // gamma = tau D / (tau D + 1) maps tau D in [0, inf) onto [0, 1), so one finite table covers every
 // cell size. Sampling gamma uniformly, as Moreland does, leaves a square-root singularity at the
-// edge: for gamma_b -> 1, Psi ~ sqrt(pi / (2 tau_b D)) ~ sqrt(1 - gamma_b), which bilinear filtering
-// misses by 1e-2 in the last texel (measured, 512^2 and 1024^2). The samples are therefore placed
-// uniformly in the warped coordinate
+// edge: for gamma_b -> 1, Psi ~ sqrt(pi / (2 tau_b D)) ~ sqrt(1 - gamma_b), which bilinear
+// filtering misses by 1e-2 in the last texel (measured, 512^2 and 1024^2). The samples are
+// therefore placed uniformly in the warped coordinate
 //   u = 1 - sqrt(1 - gamma) = 1 - 1 / sqrt(tau D + 1),
 // in which Psi is linear near the edge and still smooth near 0 (u ~ gamma / 2). Samples sit at
 // u = i / (N - 1), both ends included (u = 1 is tau D -> inf, Psi = 0); bilinear filtering with

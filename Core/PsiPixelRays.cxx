@@ -87,8 +87,8 @@ PixelRays PixelRaysOf(const double dcvc[16], bool parallel, int width, int heigh
   {
     step[k] = c2[k] / w;
   }
-  const double scale = step[2] != 0 ? 1.0 / std::abs(step[2])
-                                    : 1.0 / std::sqrt(step[0] * step[0] + step[1] * step[1]);
+  const double scale =
+    step[2] != 0 ? 1.0 / std::abs(step[2]) : 1.0 / std::sqrt(step[0] * step[0] + step[1] * step[1]);
   for (int k = 0; k < 3; ++k)
   {
     rays.Step[0][k] = step[k] * scale;

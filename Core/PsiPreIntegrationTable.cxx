@@ -20,8 +20,8 @@ double PreIntegrationLengthAxis::Index(double l) const
     return 0;
   }
   const double x = l / this->MinLength;
-  const double k = x < 1 ? x : 1 + std::log(x) * (this->Samples - 2) /
-      std::log(this->MaxLength / this->MinLength);
+  const double k =
+    x < 1 ? x : 1 + std::log(x) * (this->Samples - 2) / std::log(this->MaxLength / this->MinLength);
   return std::min(k, static_cast<double>(this->Samples - 1));
 }
 
@@ -60,7 +60,8 @@ PreIntegrationLengthAxis MakePreIntegrationLengthAxis(double minEdge, double max
 void PreIntegrationTable::Lookup(double sf, double sb, double D, double out[4]) const
 {
   const int ns = this->ScalarSamples, nd = this->LengthSamples;
-  auto coord = [](double x, int n, int& i0, double& w) {
+  auto coord = [](double x, int n, int& i0, double& w)
+  {
     x = std::min(std::max(x, 0.0), static_cast<double>(n - 1));
     i0 = std::min(static_cast<int>(x), n - 2);
     w = x - i0;
@@ -81,7 +82,8 @@ void PreIntegrationTable::Lookup(double sf, double sb, double D, double out[4]) 
         for (int di = 0; di < 2; ++di)
         {
           const double w = (dk ? wk : 1 - wk) * (dj ? wj : 1 - wj) * (di ? wi : 1 - wi);
-          v += w * this->Rgba[4 * ((static_cast<size_t>(k + dk) * ns + (j + dj)) * ns + (i + di)) + c];
+          v +=
+            w * this->Rgba[4 * ((static_cast<size_t>(k + dk) * ns + (j + dj)) * ns + (i + di)) + c];
         }
       }
     }
@@ -89,8 +91,8 @@ void PreIntegrationTable::Lookup(double sf, double sb, double D, double out[4]) 
   }
 }
 
-PreIntegrationTable BuildPreIntegrationTable(const TransferFunctionTable& tf, const PartialPreIntegrationTable& psi,
-  const PreIntegrationLengthAxis& axis, int scalarSamples)
+PreIntegrationTable BuildPreIntegrationTable(const TransferFunctionTable& tf,
+  const PartialPreIntegrationTable& psi, const PreIntegrationLengthAxis& axis, int scalarSamples)
 {
   const Stopwatch clock;
   PreIntegrationTable t;
@@ -106,7 +108,8 @@ PreIntegrationTable BuildPreIntegrationTable(const TransferFunctionTable& tf, co
   const double tfStep = (tf.Range[1] - tf.Range[0]) / std::max(tf.Size - 1, 1);
   const double sStep = (t.Range[1] - t.Range[0]) / (ns - 1);
 
-  auto work = [&](vtkIdType first, vtkIdType last) {
+  auto work = [&](vtkIdType first, vtkIdType last)
+  {
     std::vector<double> L(4 * (MaxPiecesPerEntry + 1));
     for (int j = static_cast<int>(first); j < last; ++j) // back scalar
     {

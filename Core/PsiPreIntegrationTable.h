@@ -1,13 +1,14 @@
-// PsiPreIntegrationTable: full pre-integration (Röttger, Kraus & Ertl 2000): premultiplied color and opacity of a segment as a 3D table over (front scalar, back
-// scalar, length), built for one transfer function.
+// PsiPreIntegrationTable: full pre-integration (Röttger, Kraus & Ertl 2000): premultiplied color
+// and opacity of a segment as a 3D table over (front scalar, back scalar, length), built for one
+// transfer function.
 //
 // Each entry integrates the transfer function along the linear scalar path from s_f to s_b: the
 // path is cut into pieces on which the sampled transfer function is linear (at most
 // MaxPiecesPerEntry, evenly in s), each piece is integrated exactly for linear luminance and
-// attenuation (partial pre-integration, psi::PartialPreIntegrationTable), and the pieces are composited front to
-// back. Lengths are sampled on a logarithmic axis (PreIntegrationLengthAxis), so that short cells
-// next to long ones keep their relative accuracy. The table must be rebuilt whenever the transfer
-// function changes.
+// attenuation (partial pre-integration, psi::PartialPreIntegrationTable), and the pieces are
+// composited front to back. Lengths are sampled on a logarithmic axis (PreIntegrationLengthAxis),
+// so that short cells next to long ones keep their relative accuracy. The table must be rebuilt
+// whenever the transfer function changes.
 #ifndef PsiPreIntegrationTable_h
 #define PsiPreIntegrationTable_h
 
@@ -66,7 +67,8 @@ constexpr int MaxPiecesPerEntry = 32;
 
 /// The table over `axis` (its Samples are the length samples).
 PSIVOLUMECORE_EXPORT PreIntegrationTable BuildPreIntegrationTable(const TransferFunctionTable& tf,
-  const PartialPreIntegrationTable& psi, const PreIntegrationLengthAxis& axis, int scalarSamples = 128);
+  const PartialPreIntegrationTable& psi, const PreIntegrationLengthAxis& axis,
+  int scalarSamples = 128);
 
 } // namespace psi
 

@@ -97,7 +97,8 @@ ProjectionClass ClassifyProjection(const double x[4], const double y[4])
     return r;
   }
   // One collinear triple -> class 3 (its middle vertex lies on the edge of the other two).
-  static const int triples[4][4] = { { 0, 1, 2, 3 }, { 0, 1, 3, 2 }, { 0, 2, 3, 1 }, { 1, 2, 3, 0 } };
+  static const int triples[4][4] = { { 0, 1, 2, 3 }, { 0, 1, 3, 2 }, { 0, 2, 3, 1 },
+    { 1, 2, 3, 0 } };
   int collinear = 0;
   for (const auto& t : triples)
   {
@@ -190,8 +191,10 @@ bool BuildProjectionClassTable(ProjectionClassTable& table, std::string* error)
     }
     else if (same && pc.cls == 2)
     {
-      const bool d1 = (t.p[0] == pc.p[0] && t.p[1] == pc.p[1]) || (t.p[0] == pc.p[1] && t.p[1] == pc.p[0]);
-      const bool d2 = (t.p[0] == pc.p[2] && t.p[1] == pc.p[3]) || (t.p[0] == pc.p[3] && t.p[1] == pc.p[2]);
+      const bool d1 =
+        (t.p[0] == pc.p[0] && t.p[1] == pc.p[1]) || (t.p[0] == pc.p[1] && t.p[1] == pc.p[0]);
+      const bool d2 =
+        (t.p[0] == pc.p[2] && t.p[1] == pc.p[3]) || (t.p[0] == pc.p[3] && t.p[1] == pc.p[2]);
       same = d1 || d2;
     }
     else if (same && pc.cls == 3)
@@ -218,7 +221,8 @@ bool BuildProjectionClassTable(ProjectionClassTable& table, std::string* error)
 
 const ProjectionClassTable& GetProjectionClassTable()
 {
-  static const ProjectionClassTable table = [] {
+  static const ProjectionClassTable table = []
+  {
     ProjectionClassTable t;
     BuildProjectionClassTable(t);
     return t;
@@ -233,7 +237,8 @@ int PackProjectionClass(const ProjectionClass& c)
 
 const std::array<int, 81>& GetPackedProjectionClassTable()
 {
-  static const std::array<int, 81> packed = [] {
+  static const std::array<int, 81> packed = []
+  {
     std::array<int, 81> p{};
     for (int i = 0; i < 81; ++i)
     {

@@ -50,7 +50,8 @@ PSIVOLUMECORE_EXPORT ProjectionClass ClassifyProjection(const double x[4], const
 
 /// Derives the 81-entry table. On an inconsistency (which would be a bug), returns false and
 /// describes it in *error.
-PSIVOLUMECORE_EXPORT bool BuildProjectionClassTable(ProjectionClassTable& table, std::string* error = nullptr);
+PSIVOLUMECORE_EXPORT bool BuildProjectionClassTable(
+  ProjectionClassTable& table, std::string* error = nullptr);
 
 /// The table as built once per process.
 PSIVOLUMECORE_EXPORT const ProjectionClassTable& GetProjectionClassTable();

@@ -1,9 +1,10 @@
 // PsiSettingList: every scalar setting of 'Psi Volume', one line each, declared here once. From
 // this list follow the psi::Settings and psi::InteractionSettings members with their defaults,
-// the psi::Setting enumerators, the rows of psi::SettingTable() (name, kind, range; PsiSettings.cxx),
-// vtkPsiVolumeMapper's Set/Get and vtkPsiVolumeRepresentation's setters. Adding a setting is its
-// line here plus its property in XML/PsiVolumeRepresentation.xml (PsiCore.Settings checks that
-// the two agree: default, enumeration entries, range); docs/architecture.md "Adding a setting".
+// the psi::Setting enumerators, the rows of psi::SettingTable() (name, kind, range;
+// PsiSettings.cxx), vtkPsiVolumeMapper's Set/Get and vtkPsiVolumeRepresentation's setters. Adding a
+// setting is its line here plus its property in XML/PsiVolumeRepresentation.xml (PsiCore.Settings
+// checks that the two agree: default, enumeration entries, range); docs/architecture.md "Adding a
+// setting".
 //
 // ENUM(Name, Type, Default, Last): a typed enumeration psi::Type (PsiSettings.h) whose values
 //   0..Last are the XML's <Entry> numbers; C++ holds the enumerator, the setters take the number.
@@ -42,20 +43,20 @@
 //  IsosurfaceShading: psi::IsosurfaceShadings.
 //  RasterFloor: benchmarks only (Benchmarks/bench_ways.py): every fragment writes one constant
 //    color, the cost of the same triangles without shading (psi::ShaderFeatures::RasterFloor).
-#define PSI_RENDER_SETTINGS(ENUM, NUMBER, BOOL)                                                   \
-  ENUM(IntegrationMethod, Method, PartialPreIntegration, FullPreIntegration)                      \
-  ENUM(SortMethod, Sorts, MPVONC, MPVONC)                                                         \
-  ENUM(Projector, Projectors, Auto, Auto)                                                         \
-  ENUM(Decomposition, Decompositions, Auto, Auto)                                                 \
-  BOOL(ExactPerspectiveSegments, true, MAPPER)                                                    \
-  BOOL(EarlyDiscard, true, PROPERTY)                                                              \
-  ENUM(EarlyRayTermination, EarlyRayTerminations, Auto, On)                                       \
-  NUMBER(TransferFunctionSamples, int, 1024, 2, 65536, MAPPER)                                    \
-  ENUM(AdaptiveSampling, AdaptiveModes, Auto, Auto)                                               \
-  NUMBER(IsosurfaceOpacity, double, 1, 0, 1, PROPERTY)                                            \
-  BOOL(IsosurfaceUseColorMap, true, PROPERTY)                                                     \
-  ENUM(IsosurfaceMethod, IsosurfaceMethods, Auto, Auto)                                           \
-  ENUM(IsosurfaceShading, IsosurfaceShadings, Smooth, Unlit)                                      \
+#define PSI_RENDER_SETTINGS(ENUM, NUMBER, BOOL)                                                    \
+  ENUM(IntegrationMethod, Method, PartialPreIntegration, FullPreIntegration)                       \
+  ENUM(SortMethod, Sorts, MPVONC, MPVONC)                                                          \
+  ENUM(Projector, Projectors, Auto, Auto)                                                          \
+  ENUM(Decomposition, Decompositions, Auto, Auto)                                                  \
+  BOOL(ExactPerspectiveSegments, true, MAPPER)                                                     \
+  BOOL(EarlyDiscard, true, PROPERTY)                                                               \
+  ENUM(EarlyRayTermination, EarlyRayTerminations, Auto, On)                                        \
+  NUMBER(TransferFunctionSamples, int, 1024, 2, 65536, MAPPER)                                     \
+  ENUM(AdaptiveSampling, AdaptiveModes, Auto, Auto)                                                \
+  NUMBER(IsosurfaceOpacity, double, 1, 0, 1, PROPERTY)                                             \
+  BOOL(IsosurfaceUseColorMap, true, PROPERTY)                                                      \
+  ENUM(IsosurfaceMethod, IsosurfaceMethods, Auto, Auto)                                            \
+  ENUM(IsosurfaceShading, IsosurfaceShadings, Smooth, Unlit)                                       \
   BOOL(RasterFloor, false, MAPPER)
 
 // What the representation draws while the camera moves (psi::InteractionSettings; the mapper
@@ -64,8 +65,8 @@
 //  InteractiveBudget: seconds an interactive frame may take; 'Auto' draws the level of detail
 //    while the camera moves when the last still frame took longer (0.1 s keeps an interaction
 //    near 10 frames a second).
-#define PSI_INTERACTION_SETTINGS(ENUM, NUMBER, BOOL)                                              \
-  ENUM(InteractionMode, InteractionModes, Auto, FullFrame)                                        \
+#define PSI_INTERACTION_SETTINGS(ENUM, NUMBER, BOOL)                                               \
+  ENUM(InteractionMode, InteractionModes, Auto, FullFrame)                                         \
   NUMBER(InteractiveBudget, double, 0.1, 0, 60, PROPERTY)
 
 #endif

@@ -100,15 +100,15 @@ SettingChange ChangeOf(Struct& s, Setting id, double value)
 }
 } // namespace
 
-#define PSI_SETTING_ROW_ENUM(Name, Type, Default, Last)                                           \
-  { Setting::Name, #Name, SettingKind::Enumeration, AsNumber(Type::Default), 0,                   \
+#define PSI_SETTING_ROW_ENUM(Name, Type, Default, Last)                                            \
+  { Setting::Name, #Name, SettingKind::Enumeration, AsNumber(Type::Default), 0,                    \
     AsNumber(Type::Last), true, interaction },
-#define PSI_SETTING_ROW_NUMBER(Name, Type, Default, Min, Max, Where)                              \
-  { Setting::Name, #Name,                                                                         \
-    std::is_integral<Type>::value ? SettingKind::Integer : SettingKind::Real, Default, Min, Max,  \
+#define PSI_SETTING_ROW_NUMBER(Name, Type, Default, Min, Max, Where)                               \
+  { Setting::Name, #Name,                                                                          \
+    std::is_integral<Type>::value ? SettingKind::Integer : SettingKind::Real, Default, Min, Max,   \
     IsProperty(#Where), interaction },
-#define PSI_SETTING_ROW_BOOL(Name, Default, Where)                                                \
-  { Setting::Name, #Name, SettingKind::Boolean, AsNumber(Default), 0, 1, IsProperty(#Where),      \
+#define PSI_SETTING_ROW_BOOL(Name, Default, Where)                                                 \
+  { Setting::Name, #Name, SettingKind::Boolean, AsNumber(Default), 0, 1, IsProperty(#Where),       \
     interaction },
 
 const std::vector<SettingInfo>& SettingTable()
@@ -132,12 +132,12 @@ const SettingInfo& GetSettingInfo(Setting id)
   return SettingTable()[static_cast<size_t>(id)];
 }
 
-#define PSI_SETTING_GET(Name, ...)                                                                \
-  case Setting::Name:                                                                             \
+#define PSI_SETTING_GET(Name, ...)                                                                 \
+  case Setting::Name:                                                                              \
     return AsNumber(s.Name);
-#define PSI_SETTING_SET(Name, ...)                                                                \
-  case Setting::Name:                                                                             \
-    Assign(s.Name, value);                                                                        \
+#define PSI_SETTING_SET(Name, ...)                                                                 \
+  case Setting::Name:                                                                              \
+    Assign(s.Name, value);                                                                         \
     return;
 
 double ValueOf(const Settings& s, Setting id)

@@ -122,7 +122,7 @@ struct PSIVOLUMECORE_EXPORT Settings
 {
   PSI_RENDER_SETTINGS(PSI_SETTING_MEMBER_ENUM, PSI_SETTING_MEMBER_NUMBER, PSI_SETTING_MEMBER_BOOL)
 
-  std::vector<double> IsosurfaceValues; ///< as given: any order, duplicates allowed
+  std::vector<double> IsosurfaceValues;    ///< as given: any order, duplicates allowed
   std::vector<double> IsosurfaceOpacities; ///< entry i: opacity of IsosurfaceValues[i]
   double IsosurfaceColor[3] = { 1, 1, 1 }; ///< when IsosurfaceUseColorMap is off
 
@@ -143,8 +143,8 @@ struct PSIVOLUMECORE_EXPORT InteractionSettings
 enum class Setting
 {
   PSI_RENDER_SETTINGS(PSI_SETTING_ENUMERATOR, PSI_SETTING_ENUMERATOR, PSI_SETTING_ENUMERATOR)
-  PSI_INTERACTION_SETTINGS(PSI_SETTING_ENUMERATOR, PSI_SETTING_ENUMERATOR, PSI_SETTING_ENUMERATOR)
-  Count
+    PSI_INTERACTION_SETTINGS(PSI_SETTING_ENUMERATOR, PSI_SETTING_ENUMERATOR, PSI_SETTING_ENUMERATOR)
+      Count
 };
 
 /// The kind of a setting's values.

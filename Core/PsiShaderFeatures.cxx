@@ -19,7 +19,7 @@ int GeometryOutputVertices(const ShaderFeatures& f)
 {
   // PsiProjectionClassesGS.glsl: the fan of class 2, strips of 5 and 3; a silhouette quad
   const int projection = f.Silhouette ? 4 : 8;
-  const int surface = 4;    // PsiIsoTrianglesGS.glsl emitSurface: a strip of at most 4
+  const int surface = 4; // PsiIsoTrianglesGS.glsl emitSurface: a strip of at most 4
   if (f.IsoCount > 0 && f.IsoTriangles)
   {
     return projection * (f.IsoCount + 1) + surface * f.IsoCount;
@@ -31,7 +31,7 @@ int ProjectedTrianglesMax(const ShaderFeatures& f)
 {
   // class 2: four triangles (Shirley & Tuchman's largest split); a silhouette quad has two
   const int projection = f.Silhouette ? 2 : 4;
-  const int surface = 2;    // a marching-tetrahedra quad
+  const int surface = 2; // a marching-tetrahedra quad
   if (f.IsoCount > 0 && f.IsoTriangles)
   {
     return projection * (f.IsoCount + 1) + surface * f.IsoCount;
@@ -47,10 +47,9 @@ bool SeparateOpacityDrawn(const ShaderFeatures& f)
 bool ShaderFeatures::operator==(const ShaderFeatures& o) const
 {
   return Method == o.Method && ExactSegments == o.ExactSegments && Silhouette == o.Silhouette &&
-    NearClip == o.NearClip &&
-    OpaqueClip == o.OpaqueClip && EarlyDiscard == o.EarlyDiscard && IsoCount == o.IsoCount &&
-    IsoSmooth == o.IsoSmooth && IsoTriangles == o.IsoTriangles && Adaptive == o.Adaptive &&
-    SeparateOpacity == o.SeparateOpacity && DepthPeel == o.DepthPeel &&
+    NearClip == o.NearClip && OpaqueClip == o.OpaqueClip && EarlyDiscard == o.EarlyDiscard &&
+    IsoCount == o.IsoCount && IsoSmooth == o.IsoSmooth && IsoTriangles == o.IsoTriangles &&
+    Adaptive == o.Adaptive && SeparateOpacity == o.SeparateOpacity && DepthPeel == o.DepthPeel &&
     MaxAdaptiveNodes == o.MaxAdaptiveNodes && MaxLights == o.MaxLights &&
     RasterFloor == o.RasterFloor;
 }

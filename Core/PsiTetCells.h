@@ -14,7 +14,7 @@ namespace psi
 
 struct TetCells
 {
-  const uint32_t* U32 = nullptr; ///< 4 ids per tetrahedron, or
+  const uint32_t* U32 = nullptr;     ///< 4 ids per tetrahedron, or
   const vtkTypeInt64* I64 = nullptr; ///< 4 ids per tetrahedron (vtkCellArray's 64-bit storage)
 
   TetCells() = default;

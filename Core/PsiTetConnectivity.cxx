@@ -57,31 +57,34 @@ void ForEachSortedFace(TetCells tets, size_t numTets, Visit&& visit)
 // (`start`: bucket offsets by smallest id) with the (middle, largest) key, then per bucket (in
 // parallel) sorts by key and pairs equal runs. Every face belongs to exactly one bucket, so each
 // neighbour slot is written by one thread only.
-void PairFaces(TetCells tets, size_t numTets, const std::vector<uint32_t>& start,
-  size_t lo, size_t hi, std::vector<FaceEntry>& entries, std::vector<int32_t>& neighbors,
+void PairFaces(TetCells tets, size_t numTets, const std::vector<uint32_t>& start, size_t lo,
+  size_t hi, std::vector<FaceEntry>& entries, std::vector<int32_t>& neighbors,
   TetConnectivityResult& result)
 {
   const uint32_t base = start[lo];
   entries.resize(start[hi] - base);
   std::vector<uint32_t> fill(start.begin() + lo, start.begin() + hi);
-  ForEachSortedFace(tets, numTets, [&](size_t t, int f, const uint32_t* s) {
-    if (s[0] >= lo && s[0] < hi)
+  ForEachSortedFace(tets, numTets,
+    [&](size_t t, int f, const uint32_t* s)
     {
-      entries[fill[s[0] - lo]++ - base] = { (static_cast<uint64_t>(s[1]) << 32) | s[2],
-        static_cast<uint32_t>(4 * t + f) };
-    }
-  });
+      if (s[0] >= lo && s[0] < hi)
+      {
+        entries[fill[s[0] - lo]++ - base] = { (static_cast<uint64_t>(s[1]) << 32) | s[2],
+          static_cast<uint32_t>(4 * t + f) };
+      }
+    });
   vtkSMPThreadLocal<TetConnectivityResult> local;
   vtkSMPTools::For(static_cast<vtkIdType>(lo), static_cast<vtkIdType>(hi),
-    [&](vtkIdType begin, vtkIdType end) {
+    [&](vtkIdType begin, vtkIdType end)
+    {
       TetConnectivityResult& r = local.Local();
       for (vtkIdType p = begin; p < end; ++p)
       {
         FaceEntry* first = entries.data() + (start[p] - base);
         FaceEntry* last = entries.data() + (start[p + 1] - base);
-        std::sort(first, last, [](const FaceEntry& x, const FaceEntry& y) {
-          return x.Key < y.Key || (x.Key == y.Key && x.Face < y.Face);
-        });
+        std::sort(first, last,
+          [](const FaceEntry& x, const FaceEntry& y)
+          { return x.Key < y.Key || (x.Key == y.Key && x.Face < y.Face); });
         for (FaceEntry* run = first; run != last;)
         {
           FaceEntry* runEnd = run + 1;
@@ -117,8 +120,8 @@ void PairFaces(TetCells tets, size_t numTets, const std::vector<uint32_t>& start
 }
 } // namespace
 
-TetConnectivityResult ComputeTetNeighbors(TetCells tets, size_t numTets,
-  size_t numPoints, std::vector<int32_t>& neighbors, size_t facesPerPass)
+TetConnectivityResult ComputeTetNeighbors(TetCells tets, size_t numTets, size_t numPoints,
+  std::vector<int32_t>& neighbors, size_t facesPerPass)
 {
   TetConnectivityResult result;
   neighbors.assign(4 * numTets, -1);
@@ -140,8 +143,7 @@ TetConnectivityResult ComputeTetNeighbors(TetCells tets, size_t numTets,
 
   // Bucket offsets: faces per smallest point id.
   std::vector<uint32_t> start(numPoints + 1, 0);
-  ForEachSortedFace(
-    tets, numTets, [&](size_t, int, const uint32_t* s) { ++start[s[0] + 1]; });
+  ForEachSortedFace(tets, numTets, [&](size_t, int, const uint32_t* s) { ++start[s[0] + 1]; });
   for (size_t p = 0; p < numPoints; ++p)
   {
     start[p + 1] += start[p];
@@ -168,17 +170,19 @@ std::vector<uint8_t> BoundaryFaceFlags(const std::vector<int32_t>& neighbors)
 {
   const size_t n = neighbors.size() / 4;
   std::vector<uint8_t> flags(n, 0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType t = begin; t < end; ++t)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      uint8_t b = 0;
-      for (int f = 0; f < 4; ++f)
+      for (vtkIdType t = begin; t < end; ++t)
       {
-        b |= neighbors[4 * t + f] < 0 ? static_cast<uint8_t>(1u << f) : 0;
+        uint8_t b = 0;
+        for (int f = 0; f < 4; ++f)
+        {
+          b |= neighbors[4 * t + f] < 0 ? static_cast<uint8_t>(1u << f) : 0;
+        }
+        flags[t] = b;
       }
-      flags[t] = b;
-    }
-  });
+    });
   return flags;
 }
 

@@ -2,8 +2,8 @@
 //
 // The adjacency ("the face shared with which tetrahedron") is the first auxiliary structure of
 // MPVONC (Maximo, Marroquim & Farias 2010, HAPT §3.1: "the adjacency list and the precomputed
-// face normals"; Williams 1992, §3, the mesh's adjacency graph). Face i of a tetrahedron is the face opposite its vertex i;
-// its neighbour is -1 on the mesh boundary.
+// face normals"; Williams 1992, §3, the mesh's adjacency graph). Face i of a tetrahedron is the
+// face opposite its vertex i; its neighbour is -1 on the mesh boundary.
 //
 // Method: a counting sort of the 4 n faces by their smallest point id (one bucket per point),
 // then, per bucket, a sort by the two other (sorted) ids; equal keys are the same face. Linear
@@ -36,12 +36,11 @@ struct TetConnectivityResult
 /// numPoints may be 0 (then it is computed as 1 + the largest id). numTets must be < 2^31.
 /// The faces are paired in passes of at most `facesPerPass` faces (0: an eighth of them, at
 /// least 2^20), so that the working memory stays a fraction of the mesh's.
-PSIVOLUMECORE_EXPORT TetConnectivityResult ComputeTetNeighbors(TetCells tets,
-  size_t numTets, size_t numPoints, std::vector<int32_t>& neighbors, size_t facesPerPass = 0);
+PSIVOLUMECORE_EXPORT TetConnectivityResult ComputeTetNeighbors(TetCells tets, size_t numTets,
+  size_t numPoints, std::vector<int32_t>& neighbors, size_t facesPerPass = 0);
 
 /// Bit i set (1 << i) where face i of the tetrahedron is a boundary face (neighbour -1).
-PSIVOLUMECORE_EXPORT std::vector<uint8_t> BoundaryFaceFlags(
-  const std::vector<int32_t>& neighbors);
+PSIVOLUMECORE_EXPORT std::vector<uint8_t> BoundaryFaceFlags(const std::vector<int32_t>& neighbors);
 
 } // namespace psi
 

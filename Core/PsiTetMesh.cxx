@@ -81,8 +81,8 @@ void AppendPoint(
 }
 
 // Point data: every input point once, with its scalar (0 where it is not finite).
-void GatherPoints(vtkUnstructuredGridBase* input, vtkDataArray* scalars,
-  ScalarComponent component, TetMesh& m, RawScalars& raw, std::vector<char>& finite)
+void GatherPoints(vtkUnstructuredGridBase* input, vtkDataArray* scalars, ScalarComponent component,
+  TetMesh& m, RawScalars& raw, std::vector<char>& finite)
 {
   const vtkIdType np = input->GetNumberOfPoints();
   finite.resize(np);
@@ -99,8 +99,8 @@ void GatherPoints(vtkUnstructuredGridBase* input, vtkDataArray* scalars,
 }
 
 // Cell data: the tetrahedron's own four points, all carrying the cell's scalars.
-void AppendCellScalarTet(vtkUnstructuredGridBase* input, const vtkIdType pts[4], double s,
-  double o, ScalarComponent c, TetMesh& m, RawScalars& raw)
+void AppendCellScalarTet(vtkUnstructuredGridBase* input, const vtkIdType pts[4], double s, double o,
+  ScalarComponent c, TetMesh& m, RawScalars& raw)
 {
   const uint32_t base = static_cast<uint32_t>(m.NumberOfPoints());
   for (int v = 0; v < 4; ++v)
@@ -162,8 +162,7 @@ void GatherTets(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cell
 // Point data on cells that are all tetrahedra with finite scalars: the mesh's cells are the
 // input's own connectivity (tetrahedron i is cell i, its points the input's), which the mesh
 // then reads in place. False, borrowing nothing, otherwise.
-bool BorrowTets(
-  vtkUnstructuredGridBase* input, const std::vector<char>& pointFinite, TetMesh& m)
+bool BorrowTets(vtkUnstructuredGridBase* input, const std::vector<char>& pointFinite, TetMesh& m)
 {
   vtkUnstructuredGrid* ug = vtkUnstructuredGrid::SafeDownCast(input);
   vtkCellArray* cells = ug ? ug->GetCells() : nullptr;
@@ -371,8 +370,8 @@ bool UpdateTetMeshScalars(TetMesh& m, vtkDataArray* scalars, ScalarComponent com
   return true;
 }
 
-bool FaceNeighborsFromArray(const TetMesh& mesh, vtkDataArray* cellNeighbors,
-  int64_t numInputCells, std::vector<int32_t>& neighbors)
+bool FaceNeighborsFromArray(const TetMesh& mesh, vtkDataArray* cellNeighbors, int64_t numInputCells,
+  std::vector<int32_t>& neighbors)
 {
   neighbors.clear();
   if (!cellNeighbors || cellNeighbors->GetNumberOfComponents() != 4 ||
@@ -435,7 +434,8 @@ std::vector<float> PointGradients(const TetMesh& m)
 {
   const size_t np = m.NumberOfPoints();
   std::vector<double> acc(4 * np, 0.0);
-  auto cross = [](const double* a, const double* b, double* o) {
+  auto cross = [](const double* a, const double* b, double* o)
+  {
     o[0] = a[1] * b[2] - a[2] * b[1];
     o[1] = a[2] * b[0] - a[0] * b[2];
     o[2] = a[0] * b[1] - a[1] * b[0];

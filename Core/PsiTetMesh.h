@@ -126,9 +126,8 @@ PSIVOLUMECORE_EXPORT bool UpdateTetMeshScalars(
 /// the boundary) taken from a per-cell 4-component array of input cell ids, such as the
 /// `FaceNeighbors` array of vtkPsiConformingTetrahedralize; neighbours that were skipped become
 /// -1. Returns false (and leaves `neighbors` empty) when the array does not fit the mesh.
-PSIVOLUMECORE_EXPORT bool FaceNeighborsFromArray(
-  const TetMesh& mesh, vtkDataArray* cellNeighbors, int64_t numInputCells,
-  std::vector<int32_t>& neighbors);
+PSIVOLUMECORE_EXPORT bool FaceNeighborsFromArray(const TetMesh& mesh, vtkDataArray* cellNeighbors,
+  int64_t numInputCells, std::vector<int32_t>& neighbors);
 
 /// What was skipped and why, as a sentence for a warning ("" when nothing was skipped).
 PSIVOLUMECORE_EXPORT std::string DescribeSkippedCells(const TetMesh& mesh);

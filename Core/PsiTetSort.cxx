@@ -60,9 +60,11 @@ public:
     const size_t n = this->Mesh->NumberOfTets();
     if (this->Neighbors.size() != 4 * n)
     {
-      Parallel([&] {
-        ComputeTetNeighbors(this->Mesh->Cells(), n, this->Mesh->NumberOfPoints(), this->Neighbors);
-      });
+      Parallel(
+        [&] {
+          ComputeTetNeighbors(
+            this->Mesh->Cells(), n, this->Mesh->NumberOfPoints(), this->Neighbors);
+        });
     }
     const MPVONCResult r = SortMPVONC(this->Mesh->Points4.data(), this->Mesh->Cells(), n,
       this->Neighbors.data(), eye, parallel, order, emitted, direction);
@@ -124,17 +126,21 @@ bool FaceNeighborsMatch(const TetMesh& m, const std::vector<int32_t>& nb)
   const TetCells cells = m.Cells();
   std::atomic<bool> ok(true);
   // on threads even under ParaView's Sequential default (psi::Parallel)
-  Parallel([&] {
-    vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType t = begin; t < end && ok.load(std::memory_order_relaxed); ++t)
-      {
-        if (!NeighborsMatchAt(m, cells, nb, static_cast<uint32_t>(t)))
+  Parallel(
+    [&]
+    {
+      vtkSMPTools::For(0, static_cast<vtkIdType>(n),
+        [&](vtkIdType begin, vtkIdType end)
         {
-          ok = false;
-        }
-      }
+          for (vtkIdType t = begin; t < end && ok.load(std::memory_order_relaxed); ++t)
+          {
+            if (!NeighborsMatchAt(m, cells, nb, static_cast<uint32_t>(t)))
+            {
+              ok = false;
+            }
+          }
+        });
     });
-  });
   return ok;
 }
 

@@ -48,7 +48,7 @@ ScalarComponent ColorMapComponent(vtkVolumeProperty* property, int numberOfCompo
   else if (numberOfComponents > 1 && ctf)
   {
     c.Index = ctf->GetVectorMode() == vtkScalarsToColors::COMPONENT ? ctf->GetVectorComponent()
-                                                                   : ScalarComponent::Magnitude;
+                                                                    : ScalarComponent::Magnitude;
   }
   return c;
 }

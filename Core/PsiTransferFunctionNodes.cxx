@@ -46,7 +46,8 @@ double Distance(const Value& a, const Value& b)
 std::vector<double> ControlPoints(vtkVolumeProperty* property, const double range[2])
 {
   std::vector<double> x;
-  auto add = [&](double s) {
+  auto add = [&](double s)
+  {
     if (s > range[0] && s < range[1])
     {
       x.push_back(s);
@@ -131,7 +132,8 @@ std::vector<Node> Refine(vtkVolumeProperty* property, std::vector<Node> nodes, s
     bool operator<(const Gap& o) const { return this->Deviation < o.Deviation; }
   };
   std::priority_queue<Gap> gaps;
-  auto consider = [&](const Node& a, const Node& b) {
+  auto consider = [&](const Node& a, const Node& b)
+  {
     if (b.S - a.S > minWidth)
     {
       const double d = ChordDeviation(property, a, b);
@@ -173,8 +175,7 @@ void TransferFunctionNodes::Lookup(double s, double out[4]) const
     return;
   }
   const auto j = static_cast<int>(
-    std::upper_bound(this->Scalars.begin(), this->Scalars.end(), s) -
-    this->Scalars.begin());
+    std::upper_bound(this->Scalars.begin(), this->Scalars.end(), s) - this->Scalars.begin());
   const int a = std::max(j - 1, 0), b = std::min(j, n - 1);
   const double width = this->Scalars[b] - this->Scalars[a];
   const double w = width > 0 ? std::min(std::max((s - this->Scalars[a]) / width, 0.0), 1.0) : 0.0;
@@ -200,7 +201,8 @@ TransferFunctionNodes SampleTransferFunctionNodes(
     nodes.swap(thin);
   }
   TransferFunctionNodes out;
-  nodes = Refine(property, nodes, budget, tolerance, 1e-6 * (range[1] - range[0]), out.MaxDeviation);
+  nodes =
+    Refine(property, nodes, budget, tolerance, 1e-6 * (range[1] - range[0]), out.MaxDeviation);
   const double unit = OpacityUnitDistance(property);
   for (const Node& n : nodes)
   {

@@ -22,7 +22,7 @@ struct TransferFunctionTable;
 struct PSIVOLUMECORE_EXPORT TransferFunctionNodes
 {
   std::vector<double> Scalars; ///< ascending (equal at a step), first and last at the range ends
-  std::vector<float> Rgba;    ///< 4 per node: L.r, L.g, L.b, tau (the table's convention)
+  std::vector<float> Rgba;     ///< 4 per node: L.r, L.g, L.b, tau (the table's convention)
   /// The largest distance between the exact function and the nodes' interpolation (color, and
   /// opacity: tau times the unit distance; checked at three points per interval): at most the
   /// tolerance, unless the node budget ran out first.

@@ -28,8 +28,8 @@ double OpacityUnitDistance(vtkVolumeProperty* property)
   return std::max(property->GetScalarOpacityUnitDistance(0), 1e-30);
 }
 
-TransferFunctionTable SampleTransferFunction(vtkVolumeProperty* property,
-  const double range[2], int size, const double* opacityRange)
+TransferFunctionTable SampleTransferFunction(
+  vtkVolumeProperty* property, const double range[2], int size, const double* opacityRange)
 {
   TransferFunctionTable t;
   t.Size = std::max(size, 2);

@@ -26,8 +26,8 @@ PSIVOLUMECORE_EXPORT std::vector<float> ComputeCentroids(
 /// Fills `order` with the ids of all tetrahedra, farthest first.
 /// eye: camera position (perspective) or, with parallel = true, the view direction (from the eye
 /// into the scene), all in the same coordinates as the centroids.
-PSIVOLUMECORE_EXPORT void SortBackToFront(const std::vector<float>& centroids,
-  const double eye[3], bool parallel, std::vector<uint32_t>& order);
+PSIVOLUMECORE_EXPORT void SortBackToFront(const std::vector<float>& centroids, const double eye[3],
+  bool parallel, std::vector<uint32_t>& order);
 
 } // namespace psi
 

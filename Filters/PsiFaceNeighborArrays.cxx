@@ -22,11 +22,13 @@ size_t AddFaceNeighborArrays(
   psi::TetConnectivityResult conn;
   std::vector<uint8_t> flags;
   // on threads even under ParaView's Sequential default (psi::Parallel)
-  psi::Parallel([&] {
-    conn = psi::ComputeTetNeighbors(
-      tets32.data(), static_cast<size_t>(numTets), static_cast<size_t>(numPoints), neighbors);
-    flags = psi::BoundaryFaceFlags(neighbors);
-  });
+  psi::Parallel(
+    [&]
+    {
+      conn = psi::ComputeTetNeighbors(
+        tets32.data(), static_cast<size_t>(numTets), static_cast<size_t>(numPoints), neighbors);
+      flags = psi::BoundaryFaceFlags(neighbors);
+    });
 
   vtkNew<vtkIntArray> faceNeighbors;
   faceNeighbors->SetName("FaceNeighbors");

@@ -15,7 +15,8 @@ namespace psi
 void OrientedTetrahedra::Add(vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d, vtkIdType cellId)
 {
   ++this->Generated;
-  auto point = [this](vtkIdType i) {
+  auto point = [this](vtkIdType i)
+  {
     const double* x = this->Xyz + 3 * i;
     return Point3(x[0], x[1], x[2]);
   };

@@ -84,14 +84,18 @@ vtkSmartPointer<vtkPoints> InputPoints(vtkDataSet* input)
 std::vector<double> DoubleCoordinates(vtkPoints* points, vtkIdType numPoints)
 {
   std::vector<double> xyz(3 * static_cast<size_t>(numPoints));
-  psi::Parallel([&] {
-    vtkSMPTools::For(0, numPoints, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        points->GetPoint(i, xyz.data() + 3 * i);
-      }
+  psi::Parallel(
+    [&]
+    {
+      vtkSMPTools::For(0, numPoints,
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          for (vtkIdType i = begin; i < end; ++i)
+          {
+            points->GetPoint(i, xyz.data() + 3 * i);
+          }
+        });
     });
-  });
   return xyz;
 }
 

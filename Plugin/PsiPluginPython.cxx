@@ -10,7 +10,7 @@
 // Defined by Plugin/CMakeLists.txt: where the build tree puts this plugin, the checkout's folder
 // holding the package psivolume, and the installed package's folder relative to the installed
 // plugin's (or absolute).
-#if !defined(PSI_BUILD_PLUGIN_DIR) || !defined(PSI_SOURCE_PYTHON_DIR) ||                          \
+#if !defined(PSI_BUILD_PLUGIN_DIR) || !defined(PSI_SOURCE_PYTHON_DIR) ||                           \
   !defined(PSI_INSTALLED_PYTHON_DIR)
 #error "PSI_BUILD_PLUGIN_DIR, PSI_SOURCE_PYTHON_DIR and PSI_INSTALLED_PYTHON_DIR must be defined"
 #endif
@@ -25,8 +25,7 @@ std::string LoadedFromDirectory()
   {
     return std::string();
   }
-  return vtksys::SystemTools::GetFilenamePath(
-    vtksys::SystemTools::GetRealPath(info.dli_fname));
+  return vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::GetRealPath(info.dli_fname));
 }
 
 // The folder holding psivolume for a plugin loaded from `here` (empty when there is none).

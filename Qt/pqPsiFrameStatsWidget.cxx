@@ -55,9 +55,8 @@ QString tooltip(const pqPsiFrameStatsWidget::Readout& stats)
 }
 
 //-----------------------------------------------------------------------------
-pqPsiFrameStatsWidget::pqPsiFrameStatsWidget(vtkSMProxy* smproxy,
-                                             vtkSMPropertyGroup* vtkNotUsed(smgroup),
-                                             QWidget* parentObject)
+pqPsiFrameStatsWidget::pqPsiFrameStatsWidget(
+  vtkSMProxy* smproxy, vtkSMPropertyGroup* vtkNotUsed(smgroup), QWidget* parentObject)
   : Superclass(smproxy, parentObject)
   , Label(new QLabel(this))
   , RefreshTimer(new pqTimer(this))
@@ -161,7 +160,7 @@ pqPsiFrameStatsWidget::Readout pqPsiFrameStatsWidget::readStats()
     return stats;
   }
   if (smproxy->GetProperty("Visibility") &&
-      vtkSMPropertyHelper(smproxy, "Visibility").GetAsInt() == 0)
+    vtkSMPropertyHelper(smproxy, "Visibility").GetAsInt() == 0)
   {
     stats.Hidden = true;
     return stats;
@@ -190,10 +189,10 @@ QString pqPsiFrameStatsWidget::formatReadout(const Readout& stats)
   {
     return tr("last frame: not rendered yet");
   }
-  QString text = tr("last frame: %1 ms (sort %2 ms), %3 tetrahedra, %4 cells skipped")
-                   .arg(milliseconds(stats.Stats.LastRenderSeconds),
-                     milliseconds(stats.Stats.LastSortSeconds),
-                     count(stats.Stats.NumberOfTetrahedra), count(stats.Stats.NumberOfSkippedCells));
+  QString text =
+    tr("last frame: %1 ms (sort %2 ms), %3 tetrahedra, %4 cells skipped")
+      .arg(milliseconds(stats.Stats.LastRenderSeconds), milliseconds(stats.Stats.LastSortSeconds),
+        count(stats.Stats.NumberOfTetrahedra), count(stats.Stats.NumberOfSkippedCells));
   if (stats.Stats.LastSortCycles > 0)
   {
     text += tr(", %1 sort cycles").arg(count(stats.Stats.LastSortCycles));

@@ -39,8 +39,7 @@ class pqPsiVolumeOpacityWidget : public pqPropertyWidget
   typedef pqPropertyWidget Superclass;
 
 public:
-  pqPsiVolumeOpacityWidget(
-    vtkSMProxy* proxy, vtkSMPropertyGroup* group, QWidget* parent = nullptr);
+  pqPsiVolumeOpacityWidget(vtkSMProxy* proxy, vtkSMPropertyGroup* group, QWidget* parent = nullptr);
   ~pqPsiVolumeOpacityWidget() override;
 
   void apply() override;

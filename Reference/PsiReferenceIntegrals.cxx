@@ -26,7 +26,8 @@ Rgba IntegrateReference(const Segment& s)
   for (int k = 0; k < 3; ++k)
   {
     const R lf = s.Lf[k], lb = s.Lb[k];
-    auto g = [&](R u) {
+    auto g = [&](R u)
+    {
       const R tau = tf + (tb - tf) * u;
       const R L = lf + (lb - lf) * u;
       const R T = D * (tf * u + (tb - tf) * u * u / 2);
@@ -63,7 +64,8 @@ Rgba IntegrateReferenceMedia(const std::vector<Segment>& media)
   using GK = boost::math::quadrature::gauss_kronrod<R, 61>;
   for (int c = 0; c < 3; ++c)
   {
-    auto g = [&](R u) {
+    auto g = [&](R u)
+    {
       R emission = 0;
       for (const Segment& m : media)
       {
@@ -118,7 +120,8 @@ Rgba IntegrateReferenceLinearOpacity(const TFSegment& s)
   // form through F(w) = w ln w - w, w = 1 - alpha (no method under test uses this form).
   const R k = ab - af;
   auto F = [](R w) { return w > 0 ? w * std::log(w) - w : R(0); };
-  auto depth = [&](R u) {
+  auto depth = [&](R u)
+  {
     if (u <= 0)
     {
       return R(0);
@@ -128,7 +131,6 @@ Rgba IntegrateReferenceLinearOpacity(const TFSegment& s)
       return -D * u * std::log1p(-(af + 0.5L * k * u)); // error O(k^2)
     }
     return D / k * (F(1 - af - k * u) - F(1 - af)); // d/du F(w(u)) = -k ln w
-
   };
   // alpha = 1 at an end makes tau infinite only at that point: -ln(1 - alpha) is integrable, the
   // optical depth stays finite, and Gauss-Kronrod nodes never sit on the end points.
@@ -147,6 +149,5 @@ Rgba IntegrateReferenceFor(Method m, const TFSegment& s)
   return UsesLinearOpacity(m) ? IntegrateReferenceLinearOpacity(s)
                               : IntegrateReference(AttenuationSegment(s));
 }
-
 
 } // namespace psi

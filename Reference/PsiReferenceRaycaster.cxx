@@ -124,7 +124,8 @@ bool Clip(const TetGeometry& g, const PixelRay& ray, ReferencePiece& piece)
   {
     return false;
   }
-  auto scalarAt = [&](double tt) {
+  auto scalarAt = [&](double tt)
+  {
     const Vec3 p = { { o[0] + tt * d[0], o[1] + tt * d[1], o[2] + tt * d[2] } };
     return g.S0 + Dot(g.Gradient, Sub(p, g.Origin));
   };
@@ -213,7 +214,8 @@ Vec3 CompositePixel(const ReferenceScene& sc, const ReferenceCamera& cam,
   const PixelRay ray = RayOf(cam, i, j);
   const double tOpaque = OpaqueDistance(cam, ray, i, j);
   Rgba acc{ { 0, 0, 0, 0 } };
-  const std::vector<Layer> layers = SurfaceLayers(sc.Surfaces, ray.o, ray.d, std::min(ray.len, tOpaque));
+  const std::vector<Layer> layers =
+    SurfaceLayers(sc.Surfaces, ray.o, ray.d, std::min(ray.len, tOpaque));
   size_t nextLayer = 0;
   for (const ReferencePiece& p : list)
   {

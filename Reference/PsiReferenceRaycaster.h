@@ -5,9 +5,9 @@
 // intersected with every tetrahedron whose screen box covers the pixel (exact ray / face-plane
 // clipping in double precision). Within a tetrahedron the scalar is linear along the ray; the
 // segment is split at every transfer-function breakpoint, so color and attenuation are linear on
-// each piece and the piece is integrated exactly (Moreland & Angel 2004 Eq. 7 with Psi by quadrature,
-// psi::Psi). Pieces are composited front to back, then over the background. Translucent surface
-// layers are composited at their depths, the segments split there.
+// each piece and the piece is integrated exactly (Moreland & Angel 2004 Eq. 7 with Psi by
+// quadrature, psi::Psi). Pieces are composited front to back, then over the background. Translucent
+// surface layers are composited at their depths, the segments split there.
 #ifndef PsiReferenceRaycaster_h
 #define PsiReferenceRaycaster_h
 
@@ -33,7 +33,7 @@ struct ReferenceSurface
 struct ReferenceScene
 {
   std::vector<std::array<double, 3>> Points; ///< world coordinates
-  std::vector<double> Scalars;              ///< one per point
+  std::vector<double> Scalars;               ///< one per point
   std::vector<std::array<int, 4>> Tets;
   /// Transfer function: luminance rgb and attenuation tau at scalar s.
   std::function<void(double s, double rgbTau[4])> Transfer;
@@ -58,8 +58,7 @@ struct ReferenceCamera
 };
 
 /// Renders rgb (3 doubles per pixel, rows from the bottom) in [0, 1] (not clamped).
-std::vector<double> RenderReference(
-  const ReferenceScene& scene, const ReferenceCamera& camera);
+std::vector<double> RenderReference(const ReferenceScene& scene, const ReferenceCamera& camera);
 
 /// The segment [t0, t1] of a pixel's ray inside one tetrahedron and the scalar s0, s1 at its ends
 /// (linear in between). t is the distance along the ray from the near plane.

@@ -172,8 +172,8 @@ std::string GatherReferenceMesh(
     std::array<int, 4> tet;
     for (int v = 0; v < 4; ++v)
     {
-      tet[v] = ca ? AddPoint(grid, pts[v], ScalarOf(ca, c, s.Component), ref)
-                  : static_cast<int>(pts[v]);
+      tet[v] =
+        ca ? AddPoint(grid, pts[v], ScalarOf(ca, c, s.Component), ref) : static_cast<int>(pts[v]);
     }
     ref.Tets.push_back(tet);
   }

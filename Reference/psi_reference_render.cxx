@@ -35,7 +35,8 @@ void SetTransfer(const psi::ReferenceSceneFile& s, psi::ReferenceScene& ref)
 {
   const auto table = s.Table;
   const double unit = s.Unit;
-  ref.Transfer = [table, unit](double v, double out[4]) {
+  ref.Transfer = [table, unit](double v, double out[4])
+  {
     auto it = std::lower_bound(table.begin(), table.end(), v,
       [](const std::array<double, 5>& row, double x) { return row[0] < x; });
     std::array<double, 5> row;

@@ -28,8 +28,8 @@ void PsiAdaptiveNodes::Update(vtkOpenGLRenderWindow*, const PsiTableSources& in)
   const double tolerance = in.NodeTolerance;
   this->TableVersion = in.Transfer->GetVersion();
   this->Nodes = psi::SampleTransferFunctionNodes(property, range, maxNodes, tolerance);
-  this->TableDeviation = psi::TableDeviation(
-    in.Transfer->GetTable(), this->Nodes, psi::OpacityUnitDistance(property));
+  this->TableDeviation =
+    psi::TableDeviation(in.Transfer->GetTable(), this->Nodes, psi::OpacityUnitDistance(property));
   this->Faithful = this->Nodes.MaxDeviation <= tolerance;
   if (!this->Faithful)
   {

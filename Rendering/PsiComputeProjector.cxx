@@ -3,12 +3,12 @@
 #include "PsiComputeProjectorComposer.h"
 #include "PsiVisibilityOrder.h"
 
+#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
-#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 #include <algorithm>
 #include <string>
@@ -150,8 +150,8 @@ void PsiComputeProjector::ReserveBuffers(size_t tetsPerPass)
     glGenBuffers(1, &this->Vertices);
   }
   glBindBuffer(GL_ARRAY_BUFFER, this->Vertices);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vec4s * 4 * sizeof(GLuint)), nullptr,
-    GL_DYNAMIC_COPY);
+  glBufferData(
+    GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vec4s * 4 * sizeof(GLuint)), nullptr, GL_DYNAMIC_COPY);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   if (!this->Indices)
   {
@@ -159,8 +159,8 @@ void PsiComputeProjector::ReserveBuffers(size_t tetsPerPass)
     glGenVertexArrays(1, &this->VAO);
   }
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Indices);
-  glBufferData(GL_SHADER_STORAGE_BUFFER,
-    static_cast<GLsizeiptr>(indices * sizeof(GLuint)), nullptr, GL_DYNAMIC_COPY);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(indices * sizeof(GLuint)), nullptr,
+    GL_DYNAMIC_COPY);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   this->ReservedVec4s = vec4s;
   this->ReservedIndices = indices;
@@ -179,8 +179,10 @@ bool PsiComputeProjector::Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder
   if (blockTets < 64)
   {
     error = "the compute projector's storage blocks would need " +
-      std::to_string(64 * std::max(vertexBytes, indexBytes)) + " bytes per work group; this "
-      "OpenGL driver allows " + std::to_string(maxBlockBytes) +
+      std::to_string(64 * std::max(vertexBytes, indexBytes)) +
+      " bytes per work group; this "
+      "OpenGL driver allows " +
+      std::to_string(maxBlockBytes) +
       " (GL_MAX_SHADER_STORAGE_BLOCK_SIZE): choose the geometry-shader projector.";
     return false;
   }
@@ -216,7 +218,8 @@ bool PsiComputeProjector::Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder
   const GLint countLoc = glGetUniformLocation(compute, "tetCount");
   // each chunk of the order, as it is streamed, in passes that fit the buffers
   order.Draw(
-    [&](size_t chunkFirst, size_t chunkCount) {
+    [&](size_t chunkFirst, size_t chunkCount)
+    {
       for (size_t first = chunkFirst; first < chunkFirst + chunkCount; first += perPass)
       {
         const size_t n = std::min(perPass, chunkFirst + chunkCount - first);

@@ -63,9 +63,9 @@ private:
   void operator=(const PsiComputeProjector&) = delete;
   void ReserveBuffers(size_t tetsPerPass);
 
-  vtkShaderProgram* Compute = nullptr; // the last ready, one of Built
+  vtkShaderProgram* Compute = nullptr;                            // the last ready, one of Built
   std::map<std::string, vtkSmartPointer<vtkShaderProgram>> Built; // by compute shader source
-  vtkShaderProgram* DrawProgram = nullptr; // owned by VTK's shader cache
+  vtkShaderProgram* DrawProgram = nullptr;                        // owned by VTK's shader cache
   std::string DrawVertex, DrawFragment;
   std::string Key;
   int SlotVertices = 0, SlotTriangles = 0, Vec4sPerVertex = 0;

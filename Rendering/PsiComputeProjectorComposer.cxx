@@ -66,12 +66,12 @@ ComputeProjectorSources ComposeComputeProjector(
     for (int c = 0; c < p.Columns; ++c, ++texel)
     {
       const std::string value = p.Columns > 1 ? v.Name + "[" + std::to_string(c) + "]" : v.Name;
-      store += Line("  projectedVertices[base + " + std::to_string(texel) + "u] = " +
-        ToTexel(p, value) + ";");
+      store += Line(
+        "  projectedVertices[base + " + std::to_string(texel) + "u] = " + ToTexel(p, value) + ";");
       columns += std::string(c ? ", " : "") + FromTexel(p, "psiVertex" + std::to_string(texel));
     }
-    load += Line("  " + v.Name + " = " + (p.Columns > 1 ? v.Type + "(" + columns + ")" : columns) +
-      ";");
+    load +=
+      Line("  " + v.Name + " = " + (p.Columns > 1 ? v.Type + "(" + columns + ")" : columns) + ";");
   }
   out.Vec4sPerVertex = texel;
   for (int t = 0; t < texel; ++t)

@@ -20,11 +20,11 @@ namespace psi
 
 struct ComputeProjectorSources
 {
-  std::string Compute;  ///< complete, with its #version line (compiled by the mapper)
-  std::string Vertex;   ///< pass-through, //VTK::System::Dec left for VTK's shader cache
-  std::string Fragment; ///< psi::ComposeShaders(f).Fragment
-  int SlotVertices = 0;  ///< vertices one tetrahedron may write (GeometryOutputVertices)
-  int SlotTriangles = 0; ///< triangles one tetrahedron may write (ProjectedTrianglesMax)
+  std::string Compute;    ///< complete, with its #version line (compiled by the mapper)
+  std::string Vertex;     ///< pass-through, //VTK::System::Dec left for VTK's shader cache
+  std::string Fragment;   ///< psi::ComposeShaders(f).Fragment
+  int SlotVertices = 0;   ///< vertices one tetrahedron may write (GeometryOutputVertices)
+  int SlotTriangles = 0;  ///< triangles one tetrahedron may write (ProjectedTrianglesMax)
   int Vec4sPerVertex = 0; ///< clip position plus one vec4 per output vec4 (matrix column)
 };
 

@@ -63,8 +63,7 @@ PsiDepthPeelingCalls::Stage ReplacedStage(
 PsiDepthPeelingCalls::PsiDepthPeelingCalls() = default;
 PsiDepthPeelingCalls::~PsiDepthPeelingCalls() = default;
 
-PsiDepthPeelingCalls::Stage PsiDepthPeelingCalls::StageOf(
-  vtkAbstractMapper* mapper, vtkVolume* vol)
+PsiDepthPeelingCalls::Stage PsiDepthPeelingCalls::StageOf(vtkAbstractMapper* mapper, vtkVolume* vol)
 {
   vtkInformation* keys = vol->GetPropertyKeys();
   this->Pass = VolumePeelingPass(keys);
@@ -86,8 +85,7 @@ PsiDepthPeelingCalls::Stage PsiDepthPeelingCalls::StageOf(
 
 void PsiDepthPeelingCalls::NoteTranslucentGeometry(vtkAbstractMapper* mapper, vtkRenderer* ren)
 {
-  const bool translucent =
-    this->LastStage == Plain && psi::SceneHasTranslucentGeometry(ren);
+  const bool translucent = this->LastStage == Plain && psi::SceneHasTranslucentGeometry(ren);
   if (translucent && !this->NotedTranslucent)
   {
     vtkWarningWithObjectMacro(mapper,
@@ -99,8 +97,8 @@ void PsiDepthPeelingCalls::NoteTranslucentGeometry(vtkAbstractMapper* mapper, vt
   this->NotedTranslucent = translucent;
 }
 
-void PsiDepthPeelingCalls::SetShaderParameters(vtkShaderProgram* program,
-  vtkAbstractMapper* mapper, vtkVolume* vol, vtkOpenGLRenderWindow* renWin)
+void PsiDepthPeelingCalls::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper,
+  vtkVolume* vol, vtkOpenGLRenderWindow* renWin)
 {
   if (!this->Pass)
   {

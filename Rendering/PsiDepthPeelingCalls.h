@@ -34,11 +34,11 @@ public:
   /// What a call draws (peelStage in the shaders).
   enum Stage
   {
-    Skip = -1,        ///< nothing: a later call of a pass whose stages were not recognized
-    Plain = 0,        ///< the whole volume: not within depth peeling
+    Skip = -1,         ///< nothing: a later call of a pass whose stages were not recognized
+    Plain = 0,         ///< the whole volume: not within depth peeling
     OutsideLayers = 1, ///< before the peels: in front of and behind all translucent layers
-    Peel = 2,         ///< one peel's front and back intervals
-    AlphaBlend = 3    ///< the final blend of what lies between unpeeled layers
+    Peel = 2,          ///< one peel's front and back intervals
+    AlphaBlend = 3     ///< the final blend of what lies between unpeeled layers
   };
 
   /// The stage of this call of `mapper` for `vol`. A pass whose stages are not recognized gets

@@ -3,13 +3,13 @@
 #include "PsiShaderComposer.h"
 #include "PsiVisibilityOrder.h"
 
+#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkShaderProgram.h"
-#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
-vtkShaderProgram* PsiGeometryProjector::ReadyProgram(vtkOpenGLRenderWindow* renWin,
-  const psi::ShaderFeatures& f, const char* integrator, bool& built)
+vtkShaderProgram* PsiGeometryProjector::ReadyProgram(
+  vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& f, const char* integrator, bool& built)
 {
   vtkOpenGLShaderCache* cache = renWin->GetShaderCache();
   const std::string key = f.Key();
@@ -39,10 +39,8 @@ void PsiGeometryProjector::Draw(PsiVisibilityOrder& order, vtkShaderProgram* pro
   glEnableVertexAttribArray(static_cast<GLuint>(loc));
   glVertexAttribIPointer(static_cast<GLuint>(loc), 4, GL_UNSIGNED_INT, 0, nullptr);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
-  order.Draw(
-    [](size_t first, size_t count) {
-      glDrawArrays(GL_POINTS, static_cast<GLint>(first), static_cast<GLsizei>(count));
-    },
+  order.Draw([](size_t first, size_t count)
+    { glDrawArrays(GL_POINTS, static_cast<GLint>(first), static_cast<GLsizei>(count)); },
     targetPixels, betweenStrides, masksPerFrame);
 }
 

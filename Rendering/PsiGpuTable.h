@@ -10,8 +10,8 @@
 #define PsiGpuTable_h
 
 #include "PsiPreIntegrationTable.h"
-#include "PsiTransferFunctionTable.h"
 #include "PsiSettings.h" // the defaults of the table sizes
+#include "PsiTransferFunctionTable.h"
 
 #include <vector>
 
@@ -56,8 +56,8 @@ public:
 namespace psi
 {
 /// Updates each table of `tables` that needs it.
-void UpdateTables(
-  const std::vector<PsiGpuTable*>& tables, vtkOpenGLRenderWindow* renWin, const PsiTableSources& in);
+void UpdateTables(const std::vector<PsiGpuTable*>& tables, vtkOpenGLRenderWindow* renWin,
+  const PsiTableSources& in);
 void ActivateTables(const std::vector<PsiGpuTable*>& tables, vtkShaderProgram* program);
 void DeactivateTables(const std::vector<PsiGpuTable*>& tables);
 }

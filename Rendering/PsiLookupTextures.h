@@ -6,7 +6,8 @@
 //    color and attenuation over the scalar range (N x 1).
 //  - PsiOpacityPrefixTexture: prefix counts of non-zero opacity, for early discard (Maximo et
 //    al. 2010 §3.5).
-//  - PsiPartialPreIntegrationTexture: the Ψ table Psi(gamma_b, gamma_f) (psi::PartialPreIntegrationTable) of
+//  - PsiPartialPreIntegrationTexture: the Ψ table Psi(gamma_b, gamma_f)
+//  (psi::PartialPreIntegrationTable) of
 //    partial pre-integration (Moreland & Angel 2004 §4), built once per process.
 //  - PsiFullPreIntegrationTexture: the 3D pre-integration table of one transfer function
 //    (psi::PreIntegrationTable; Röttger, Kraus & Ertl 2000 §4), rebuilt when the sampled function

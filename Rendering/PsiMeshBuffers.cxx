@@ -2,15 +2,15 @@
 
 #include "PsiCellTypes.h"
 
+#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
+#include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkPoints.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtkCellArray.h"
-#include "vtkPoints.h"
 #include "vtkUnstructuredGrid.h"
-#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 #include <algorithm>
 #include <sstream>
@@ -30,8 +30,8 @@ vtkMTimeType GeometryTimeOf(vtkUnstructuredGridBase* input)
   {
     return input->GetMTime();
   }
-  return std::max({ ug->GetPoints()->GetMTime(), ug->GetCells()->GetMTime(),
-    psi::CellTypesOf(ug)->GetMTime() });
+  return std::max(
+    { ug->GetPoints()->GetMTime(), ug->GetCells()->GetMTime(), psi::CellTypesOf(ug)->GetMTime() });
 }
 
 // The objects that hold the points and cells. A new time step of the same mesh is often a new
@@ -82,8 +82,8 @@ void PsiMeshBuffers::Changed(bool geometry)
 void PsiMeshBuffers::UploadPoints(vtkOpenGLRenderWindow* renWin)
 {
   const std::vector<float>& points4 = this->Mesh.Points4;
-  this->PointsBuffer->Upload(points4.empty() ? std::vector<float>(4, 0.f) : points4,
-    vtkOpenGLBufferObject::TextureBuffer);
+  this->PointsBuffer->Upload(
+    points4.empty() ? std::vector<float>(4, 0.f) : points4, vtkOpenGLBufferObject::TextureBuffer);
   this->PointsTexture->SetContext(renWin);
   this->PointsTexture->CreateTextureBuffer(
     static_cast<unsigned int>(std::max<size_t>(this->Mesh.NumberOfPoints(), 1)), 4, VTK_FLOAT,
@@ -97,8 +97,8 @@ void PsiMeshBuffers::UploadPoints(vtkOpenGLRenderWindow* renWin)
   }
 }
 
-void PsiMeshBuffers::Update(vtkUnstructuredGridBase* input, vtkDataArray* scalars,
-  bool cellScalars, psi::ScalarComponent component, const std::string& arrayKey)
+void PsiMeshBuffers::Update(vtkUnstructuredGridBase* input, vtkDataArray* scalars, bool cellScalars,
+  psi::ScalarComponent component, const std::string& arrayKey)
 {
   this->Mesh = psi::GatherTetMesh(input, scalars, cellScalars, component);
   this->GeometryTime = GeometryTimeOf(input);

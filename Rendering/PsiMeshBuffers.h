@@ -40,8 +40,8 @@ public:
     Scalars,
     Mesh
   };
-  Change NeedsUpdate(vtkUnstructuredGridBase* input, vtkDataArray* scalars,
-    const std::string& arrayKey) const;
+  Change NeedsUpdate(
+    vtkUnstructuredGridBase* input, vtkDataArray* scalars, const std::string& arrayKey) const;
   /// Replaces the point scalars only (the points are uploaded again, not the tetrahedra); false
   /// when the mesh must be gathered again instead (see psi::UpdateTetMeshScalars).
   bool UpdateScalars(vtkDataArray* scalars, psi::ScalarComponent component);
@@ -94,7 +94,7 @@ private:
   bool GradientsOnGPU = false;
   bool GradientsActive = false;
   unsigned int VAO = 0;
-  bool Gathered = false; ///< the mesh is Update's of the geometry and time stamps below
+  bool Gathered = false;    ///< the mesh is Update's of the geometry and time stamps below
   bool PointsOnGPU = false; ///< the mesh's points are uploaded
 };
 

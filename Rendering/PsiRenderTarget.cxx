@@ -4,6 +4,7 @@
 #include "PsiFramePlan.h" // psi::SaturatedOpacity
 #include "PsiOpaqueMaskFS.h"
 
+#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -12,7 +13,6 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 PsiRenderTarget::PsiRenderTarget() = default;
 

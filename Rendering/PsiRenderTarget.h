@@ -78,7 +78,7 @@ private:
   vtkNew<vtkTextureObject> FrontImage; // the second image, within depth peeling
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
-  PsiSamplesPassed MaskSamples;  ///< the pixels the last mask found opaque
+  PsiSamplesPassed MaskSamples; ///< the pixels the last mask found opaque
   int Size[2] = { 0, 0 };
   int Origin[2] = { 0, 0 };
   bool SampleDepth = false;

@@ -32,8 +32,8 @@ bool AnyProp(vtkRenderer* ren, const double* box, bool opaque = true)
       continue;
     }
     if (!box ||
-      (b[0] <= box[1] && box[0] <= b[1] && b[2] <= box[3] && box[2] <= b[3] &&
-        b[4] <= box[5] && box[4] <= b[5]))
+      (b[0] <= box[1] && box[0] <= b[1] && b[2] <= box[3] && box[2] <= b[3] && b[4] <= box[5] &&
+        box[4] <= b[5]))
     {
       return true;
     }

@@ -12,8 +12,6 @@
 #include "PsiExactSegmentsGS.h"
 #include "PsiHAPTSegmentsFS.h"
 #include "PsiHAPTSegmentsGS.h"
-#include "PsiRaySegmentsFS.h"
-#include "PsiRaySegmentsGS.h"
 #include "PsiIntegratorInputsFS.h"
 #include "PsiIsoFlatNormalsGS.h"
 #include "PsiIsoPerFragmentFS.h"
@@ -27,6 +25,8 @@
 #include "PsiOpaqueClipFS.h"
 #include "PsiPointIdsVS.h"
 #include "PsiProjectionClassesGS.h"
+#include "PsiRaySegmentsFS.h"
+#include "PsiRaySegmentsGS.h"
 #include "PsiSceneDepthFS.h"
 #include "PsiSegmentSplitFS.h"
 #include "PsiSeparateOpacityFS.h"
@@ -61,8 +61,8 @@ bool Uses(const char* source, const char* name)
 
 // The segment feature's file: ray segments through the silhouette, or the fan's exact
 // perspective segments or screen-linear triple.
-const char* SegmentsSource(const ShaderFeatures& f, const char* ray, const char* exact,
-  const char* screenLinear)
+const char* SegmentsSource(
+  const ShaderFeatures& f, const char* ray, const char* exact, const char* screenLinear)
 {
   return f.Silhouette ? ray : f.ExactSegments ? exact : screenLinear;
 }
@@ -219,8 +219,8 @@ ShaderSources ComposeShaders(const ShaderFeatures& f, const char* integratorSour
   }
   if (split)
   {
-    counts += Define("PSI_MAX_SPLITS",
-      (isoPerFragment ? f.IsoCount : 0) + (f.Adaptive ? f.MaxAdaptiveNodes : 0));
+    counts += Define(
+      "PSI_MAX_SPLITS", (isoPerFragment ? f.IsoCount : 0) + (f.Adaptive ? f.MaxAdaptiveNodes : 0));
   }
   SubstituteTag(fs, "//PSI::Counts::Dec", counts);
   std::set<std::string> unusedInputs;
@@ -267,8 +267,9 @@ ShaderSources ComposeShaders(const ShaderFeatures& f, const char* integratorSour
   }
   if (DepthPeelDrawn(f))
   {
-    Apply(fs, PsiDepthPeelFS, isoTriangles ? std::set<std::string>{}
-                                           : std::set<std::string>{ "//PSI::DepthPeel::Surface" });
+    Apply(fs, PsiDepthPeelFS,
+      isoTriangles ? std::set<std::string>{}
+                   : std::set<std::string>{ "//PSI::DepthPeel::Surface" });
   }
   if (split)
   {

@@ -19,8 +19,7 @@
 #include <cmath>
 #include <vector>
 
-PsiFrameCamera PsiFrameCamera::FromRenderer(
-  vtkRenderer* ren, vtkVolume* vol, const double shift[3])
+PsiFrameCamera PsiFrameCamera::FromRenderer(vtkRenderer* ren, vtkVolume* vol, const double shift[3])
 {
   PsiFrameCamera c;
   vtkOpenGLCamera* cam = vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera());
@@ -48,8 +47,8 @@ bool PsiFrameCamera::NearPlaneCuts(const double b[6]) const
   for (int corner = 0; corner < 8; ++corner)
   {
     const double p[3] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)] };
-    const double z = this->MCVC[8] * p[0] + this->MCVC[9] * p[1] + this->MCVC[10] * p[2] +
-      this->MCVC[11];
+    const double z =
+      this->MCVC[8] * p[0] + this->MCVC[9] * p[1] + this->MCVC[10] * p[2] + this->MCVC[11];
     if (z > this->NearZ)
     {
       return true;
@@ -158,8 +157,7 @@ void SetPixelRayShaderParameters(
 void SetSilhouetteShaderParameters(vtkShaderProgram* program, const int size[2])
 {
   const double ndcPerPixel = 4.0 / (static_cast<double>(size[0]) * size[1]);
-  program->SetUniformf(
-    "coverExtraMax", static_cast<float>(PsiSilhouetteCoverPixels * ndcPerPixel));
+  program->SetUniformf("coverExtraMax", static_cast<float>(PsiSilhouetteCoverPixels * ndcPerPixel));
 }
 
 void SetIsosurfaceShaderParameters(vtkShaderProgram* program, const psi::IsosurfaceList& list,

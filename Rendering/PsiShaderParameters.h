@@ -18,12 +18,12 @@ class vtkVolumeProperty;
 
 struct PsiFrameCamera
 {
-  double MCVC[16];   ///< model (shifted mesh) -> view, row-major
-  double View[16];   ///< world -> view, row-major
-  double VCDC[16];   ///< view -> clip, row-major
-  double DCVC[16];   ///< its inverse
+  double MCVC[16]; ///< model (shifted mesh) -> view, row-major
+  double View[16]; ///< world -> view, row-major
+  double VCDC[16]; ///< view -> clip, row-major
+  double DCVC[16]; ///< its inverse
   bool Parallel = false;
-  double NearZ = 0;  ///< view-space z of the near plane (negative)
+  double NearZ = 0; ///< view-space z of the near plane (negative)
 
   /// The camera of `ren` for the mesh of `vol` shifted by `shift` (psi::TetMesh::Shift).
   static PsiFrameCamera FromRenderer(vtkRenderer* ren, vtkVolume* vol, const double shift[3]);
@@ -53,10 +53,10 @@ constexpr double PsiSilhouetteCoverPixels = 32.0;
 
 struct PsiIsosurfaceStyle
 {
-  bool UseColorMap = true;    ///< color each surface through the color map at its value
+  bool UseColorMap = true;       ///< color each surface through the color map at its value
   double Color[3] = { 1, 1, 1 }; ///< otherwise this solid color
   bool Lighting = true;
-  bool Smooth = true;         ///< interpolated point gradients (needs normalMatrix)
+  bool Smooth = true; ///< interpolated point gradients (needs normalMatrix)
   int MaxLights = 8;
   /// The color map's color of each isovalue, given (several volumes intermixed: each volume's
   /// own map, PsiIntermixedScene::IsoColors); nullptr: the property's color map at the value.

@@ -130,12 +130,15 @@ std::string VertexStageDeclarations(const ShaderFeatures& f, StageForm form)
   if (form == StageForm::Stages)
   {
     return "in uvec4 tetPointIds; // the tetrahedron's point ids, one point per tetrahedron\n"
-           "out " + Members(f, true) + " tetOut;\n";
+           "out " +
+      Members(f, true) + " tetOut;\n";
   }
   // Initialized, so that compilers that cannot see that main() sets it first do not warn.
   return "uvec4 tetPointIds = uvec4(0u); // set by main() from the visibility order\n"
-         "struct " + Members(f, false) + ";\n"
-         "PsiTetrahedron tetOut;\n";
+         "struct " +
+    Members(f, false) +
+    ";\n"
+    "PsiTetrahedron tetOut;\n";
 }
 
 std::string GeometryStageDeclarations(const ShaderFeatures& f, StageForm form)
@@ -145,7 +148,8 @@ std::string GeometryStageDeclarations(const ShaderFeatures& f, StageForm form)
   {
     d = "layout(points) in;\n"
         "layout(triangle_strip, max_vertices = PSI_GS_MAX_VERTICES) out;\n"
-        "in " + Members(f, true) + " tetIn[];\n";
+        "in " +
+      Members(f, true) + " tetIn[];\n";
   }
   else
   {

@@ -34,14 +34,13 @@ struct ShaderVariable
   std::string Qualifiers; ///< interpolation: "flat ", "smooth ", "noperspective " or empty
   std::string Type;
   std::string Name;
-  int Count = 1;         ///< array length; 1: not an array
-  std::string Comment;   ///< what it holds, and the feature file that writes it
+  int Count = 1;       ///< array length; 1: not an array
+  std::string Comment; ///< what it holds, and the feature file that writes it
 };
 
 /// The members of struct PsiTetrahedron for `f`: the four view-space points, and the point ids
 /// or the opacity scalars when a feature reads them.
-PSIVOLUMERENDERING_EXPORT std::vector<ShaderVariable> TetrahedronMembers(
-  const ShaderFeatures& f);
+PSIVOLUMERENDERING_EXPORT std::vector<ShaderVariable> TetrahedronMembers(const ShaderFeatures& f);
 /// The geometry code's per-vertex outputs for `f`, in declaration order. The fragment shader
 /// declares each as an input of the same name and qualifiers.
 PSIVOLUMERENDERING_EXPORT std::vector<ShaderVariable> GeometryOutputs(const ShaderFeatures& f);

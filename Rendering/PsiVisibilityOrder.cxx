@@ -3,8 +3,8 @@
 #include "PsiSettings.h"
 #include "PsiStopwatch.h"
 
-#include "vtkMatrix4x4.h"
 #include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
+#include "vtkMatrix4x4.h"
 
 #include <algorithm>
 #include <array>
@@ -38,8 +38,8 @@ bool PsiVisibilityOrder::NeedsUpdate(int meshVersion, psi::Sorts method, const d
   bool parallel, psi::SortDirection direction) const
 {
   return !this->OnGPU || meshVersion != this->MeshVersion || method != this->Method ||
-    direction != this->Direction ||
-    parallel != this->Parallel || !std::equal(mcvc, mcvc + 16, this->View.begin());
+    direction != this->Direction || parallel != this->Parallel ||
+    !std::equal(mcvc, mcvc + 16, this->View.begin());
 }
 
 void PsiVisibilityOrder::Update(const psi::TetMesh& mesh, int meshVersion,
@@ -58,22 +58,24 @@ void PsiVisibilityOrder::Update(const psi::TetMesh& mesh, int meshVersion,
   {
     glGenBuffers(1, &this->StreamBuffer);
     glBindBuffer(GL_ARRAY_BUFFER, this->StreamBuffer);
-    glBufferData(GL_ARRAY_BUFFER, InFlight * MaxChunkTets * 4 * sizeof(uint32_t), nullptr,
-      GL_STREAM_DRAW);
+    glBufferData(
+      GL_ARRAY_BUFFER, InFlight * MaxChunkTets * 4 * sizeof(uint32_t), nullptr, GL_STREAM_DRAW);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
   }
   this->Final = 0;
   std::array<double, 3> eye;
   EyeInModel(mcvc, parallel, eye.data());
-  this->Worker = std::thread([this, eye, parallel, direction]() {
-    const psi::Stopwatch clock;
-    const size_t cycles = this->Sort->Sort(
-      eye.data(), parallel, this->Order, [this](size_t n) { this->Emitted(n); }, direction);
-    const double seconds = clock.Seconds();
-    std::lock_guard<std::mutex> guard(this->Lock);
-    this->LastCycles = cycles;
-    this->LastSortSeconds = seconds;
-  });
+  this->Worker = std::thread(
+    [this, eye, parallel, direction]()
+    {
+      const psi::Stopwatch clock;
+      const size_t cycles = this->Sort->Sort(
+        eye.data(), parallel, this->Order, [this](size_t n) { this->Emitted(n); }, direction);
+      const double seconds = clock.Seconds();
+      std::lock_guard<std::mutex> guard(this->Lock);
+      this->LastCycles = cycles;
+      this->LastSortSeconds = seconds;
+    });
   this->Method = method;
   this->Direction = direction;
   this->MeshVersion = meshVersion;
@@ -109,8 +111,8 @@ void PsiVisibilityOrder::StreamChunk(size_t first, size_t count, size_t at)
     }
   }
   glBindBuffer(GL_ARRAY_BUFFER, this->StreamBuffer);
-  glBufferSubData(GL_ARRAY_BUFFER, at * 4 * sizeof(uint32_t), count * 4 * sizeof(uint32_t),
-    this->Staging.data());
+  glBufferSubData(
+    GL_ARRAY_BUFFER, at * 4 * sizeof(uint32_t), count * 4 * sizeof(uint32_t), this->Staging.data());
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 

@@ -13,7 +13,7 @@
 #define PsiVisibilityOrder_h
 
 #include "PsiMeasuredChoice.h" // psi::DefaultMasksPerFrame
-#include "PsiSettings.h"      // psi::Sorts
+#include "PsiSettings.h"       // psi::Sorts
 #include "PsiSortDirection.h"
 #include "PsiTetSort.h"
 
@@ -56,8 +56,8 @@ public:
   /// called between chunks after StrideTets(GetSize(), chunk, masksPerFrame) tetrahedra, not
   /// after the last chunk (front to back, the opaque pixels are masked there); when it returns
   /// false (its last mask found no opaque pixel) the stride to its next call doubles.
-  void Draw(const std::function<void(size_t first, size_t count)>& drawChunk,
-    size_t targetPixels, const std::function<bool()>& betweenStrides = {},
+  void Draw(const std::function<void(size_t first, size_t count)>& drawChunk, size_t targetPixels,
+    const std::function<bool()>& betweenStrides = {},
     int masksPerFrame = psi::DefaultMasksPerFrame);
   /// Tetrahedra between two calls of Draw's betweenStrides at first: whole chunks, at most
   /// `masksPerFrame` strides a frame (psi::DrawWay::MasksPerFrame). Each call is a full-screen
@@ -112,7 +112,7 @@ private:
   std::thread Worker;
   std::mutex Lock;
   std::condition_variable Progress;
-  size_t Final = 0;    ///< entries of Order the sort has emitted (guarded by Lock)
+  size_t Final = 0; ///< entries of Order the sort has emitted (guarded by Lock)
   psi::Sorts Method = psi::Sorts::MPVONC; ///< the sort's, once there is one
   psi::SortDirection Direction = psi::SortDirection::FarthestFirst;
   int MeshVersion = -1;

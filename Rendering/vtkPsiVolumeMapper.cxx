@@ -8,6 +8,7 @@
 #include "PsiFramePlan.h"
 #include "PsiGeometryProjector.h"
 #include "PsiIntegrationMethods.h"
+#include "PsiLookupTextures.h"
 #include "PsiMeshBuffers.h"
 #include "PsiProjectionClasses.h"
 #include "PsiRenderTarget.h"
@@ -17,9 +18,9 @@
 #include "PsiStopwatch.h"
 #include "PsiTransferFunctionAnalysis.h"
 #include "PsiTransferFunctionTable.h"
-#include "PsiLookupTextures.h"
 #include "PsiVisibilityOrder.h"
 
+#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkObjectFactory.h"
@@ -30,14 +31,12 @@
 #include "vtkUnstructuredGridBase.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
-#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 #include <algorithm>
 #include <array>
 #include <functional>
 #include <string>
 #include <vector>
-
 
 vtkStandardNewMacro(vtkPsiVolumeMapper);
 
@@ -228,9 +227,8 @@ bool vtkPsiVolumeMapper::UpdateVisibilityOrder(
 
 // Projects and draws the volume with the chosen projector: the geometry-shader program, or the
 // compute projector's projection pass and draw program.
-void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren,
-  vtkVolume* vol, const PsiFrameCamera& cam, const PsiFramePlan& plan,
-  const std::vector<PsiGpuTable*>& tables)
+void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren, vtkVolume* vol,
+  const PsiFrameCamera& cam, const PsiFramePlan& plan, const std::vector<PsiGpuTable*>& tables)
 {
   vtkVLogScopeF(this->LogVerbosity, "Psi Volume: draw");
   Internals& I = *this->Impl;
@@ -239,8 +237,8 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   const psi::Stopwatch ready; // building programs is not the way's cost (TimeWay)
   I.ProgramSeconds = -1;      // nothing drawn
   const bool compute = PsiComputeProjector::Chosen(plan.Way.ComputeProjector, renWin);
-  this->LastUsedProjector = static_cast<int>(
-    compute ? psi::Projectors::ComputeShader : psi::Projectors::GeometryShader);
+  this->LastUsedProjector =
+    static_cast<int>(compute ? psi::Projectors::ComputeShader : psi::Projectors::GeometryShader);
   vtkShaderProgram* program = this->ReadyProjection(renWin, features, compute);
   if (!program)
   {
@@ -259,13 +257,12 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   {
     std::string drawError;
     I.SamplesPassed = 0;
-    auto drawImage = [&](int image) {
-      this->DrawImage(renWin, vol, plan, draw, compute, image, drawError);
-    };
-    I.Target.DrawAndComposite(renWin, drawImage, I.Peeling.GetStage(),
-      [&](vtkShaderProgram* composite) {
-        I.Peeling.SetShaderParameters(composite, this, vol, renWin);
-      },
+    auto drawImage = [&](int image)
+    { this->DrawImage(renWin, vol, plan, draw, compute, image, drawError); };
+    I.Target.DrawAndComposite(
+      renWin, drawImage, I.Peeling.GetStage(),
+      [&](vtkShaderProgram* composite)
+      { I.Peeling.SetShaderParameters(composite, this, vol, renWin); },
       plan.Way.FrontToBack);
     I.Peeling.Deactivate();
     if (!drawError.empty() && drawError != I.LastDrawError && !plan.Trial)
@@ -293,20 +290,23 @@ void vtkPsiVolumeMapper::DrawImage(vtkOpenGLRenderWindow* renWin, vtkVolume* vol
     I.Peeling.SetShaderParameters(draw, this, vol, renWin);
   }
   // the volume's samples that pass the depth test, when counted (not the masks')
-  const auto startCount = [&]() {
+  const auto startCount = [&]()
+  {
     if (I.CountSamples)
     {
       I.Samples.Begin();
     }
   };
-  const auto stopCount = [&]() {
+  const auto stopCount = [&]()
+  {
     I.Samples.End();
     I.SamplesPassed += I.Samples.Take();
   };
   std::function<bool()> mask;
   if (plan.Way.FrontToBack)
   {
-    mask = [&]() {
+    mask = [&]()
+    {
       stopCount();
       const bool found = I.Target.MaskOpaquePixels(renWin, compute ? nullptr : draw);
       startCount();
@@ -398,9 +398,10 @@ vtkShaderProgram* vtkPsiVolumeMapper::ReadyProjection(
               : I.Geometry.ReadyProgram(renWin, features, integrator, built);
   if (!program)
   {
-    vtkErrorMacro("Psi Volume: " << (integrator ? error
-                                                : std::string("no GLSL integrator ") +
-                         psi::GetIntegrationMethodInfo(features.Method).GlslName + ".glsl embedded."));
+    vtkErrorMacro(
+      "Psi Volume: " << (integrator ? error
+                                    : std::string("no GLSL integrator ") +
+            psi::GetIntegrationMethodInfo(features.Method).GlslName + ".glsl embedded."));
   }
   return program;
 }

@@ -79,19 +79,40 @@ public:
 #ifdef __VTK_WRAP__
 #define PSI_MAPPER_TYPED_SETTER(Name, Type)
 #else
-#define PSI_MAPPER_TYPED_SETTER(Name, Type)                                                       \
-  void Set##Name(psi::Type value) { this->Set##Name(static_cast<int>(value)); }
+#define PSI_MAPPER_TYPED_SETTER(Name, Type)                                                        \
+  void Set##Name(psi::Type value)                                                                  \
+  {                                                                                                \
+    this->Set##Name(static_cast<int>(value));                                                      \
+  }
 #endif
-#define PSI_MAPPER_ENUM(Name, Type, Default, Last)                                                \
-  void Set##Name(int value) { this->SetRanged(psi::Setting::Name, value); }                       \
-  PSI_MAPPER_TYPED_SETTER(Name, Type)                                                             \
-  int Get##Name() const { return static_cast<int>(this->Settings.Name); }
-#define PSI_MAPPER_NUMBER(Name, Type, Default, Min, Max, Where)                                   \
-  void Set##Name(Type value) { this->SetRanged(psi::Setting::Name, value); }                      \
-  Type Get##Name() const { return this->Settings.Name; }
-#define PSI_MAPPER_BOOL(Name, Default, Where)                                                     \
-  void Set##Name(bool on) { this->SetRanged(psi::Setting::Name, on); }                            \
-  bool Get##Name() const { return this->Settings.Name; }                                          \
+#define PSI_MAPPER_ENUM(Name, Type, Default, Last)                                                 \
+  void Set##Name(int value)                                                                        \
+  {                                                                                                \
+    this->SetRanged(psi::Setting::Name, value);                                                    \
+  }                                                                                                \
+  PSI_MAPPER_TYPED_SETTER(Name, Type)                                                              \
+  int Get##Name() const                                                                            \
+  {                                                                                                \
+    return static_cast<int>(this->Settings.Name);                                                  \
+  }
+#define PSI_MAPPER_NUMBER(Name, Type, Default, Min, Max, Where)                                    \
+  void Set##Name(Type value)                                                                       \
+  {                                                                                                \
+    this->SetRanged(psi::Setting::Name, value);                                                    \
+  }                                                                                                \
+  Type Get##Name() const                                                                           \
+  {                                                                                                \
+    return this->Settings.Name;                                                                    \
+  }
+#define PSI_MAPPER_BOOL(Name, Default, Where)                                                      \
+  void Set##Name(bool on)                                                                          \
+  {                                                                                                \
+    this->SetRanged(psi::Setting::Name, on);                                                       \
+  }                                                                                                \
+  bool Get##Name() const                                                                           \
+  {                                                                                                \
+    return this->Settings.Name;                                                                    \
+  }                                                                                                \
   vtkBooleanMacro(Name, bool);
   PSI_RENDER_SETTINGS(PSI_MAPPER_ENUM, PSI_MAPPER_NUMBER, PSI_MAPPER_BOOL)
 #undef PSI_MAPPER_ENUM
@@ -113,7 +134,10 @@ public:
   /// The last frame's way in words, and how it was chosen: "back to front, geometry shader,
   /// silhouettes (chosen by measurement of 4 ways)"; "(measuring (way 2))" while the first
   /// frames time the ways open under 'Auto'; "(as set)" when none is (psi::MeasuredChoice).
-  const std::string& GetLastDrawWay() const { return this->Stats.DrawWay; }
+  const std::string& GetLastDrawWay() const
+  {
+    return this->Stats.DrawWay;
+  }
   ///@}
 
   ///@{
@@ -122,7 +146,10 @@ public:
   /// values dropped (psi::IsosurfaceList); at most psi::IsosurfaceList::MaxCount (32) are drawn,
   /// with a warning. With none, the program is the plain volume's: no cost at all.
   void SetNumberOfIsosurfaces(int n);
-  int GetNumberOfIsosurfaces() const { return static_cast<int>(this->Settings.IsosurfaceValues.size()); }
+  int GetNumberOfIsosurfaces() const
+  {
+    return static_cast<int>(this->Settings.IsosurfaceValues.size());
+  }
   void SetIsosurfaceValue(int i, double value);
   double GetIsosurfaceValue(int i) const;
   void SetIsosurfaceValues(const std::vector<double>& values);
@@ -131,10 +158,16 @@ public:
   void SetNumberOfIsosurfaceOpacities(int n);
   void SetIsosurfaceOpacityValue(int i, double opacity);
   void SetIsosurfaceOpacities(const std::vector<double>& opacities);
-  const std::vector<double>& GetIsosurfaceOpacities() const { return this->Settings.IsosurfaceOpacities; }
+  const std::vector<double>& GetIsosurfaceOpacities() const
+  {
+    return this->Settings.IsosurfaceOpacities;
+  }
   /// Solid color of the isosurfaces, used when IsosurfaceUseColorMap is off.
   void SetIsosurfaceColor(double r, double g, double b);
-  const double* GetIsosurfaceColor() const { return this->Settings.IsosurfaceColor; }
+  const double* GetIsosurfaceColor() const
+  {
+    return this->Settings.IsosurfaceColor;
+  }
   /// Method the last frame used for its isosurfaces, -1 when it drew none.
   vtkGetMacro(LastUsedIsosurfaceMethod, int);
   ///@}
@@ -151,22 +184,52 @@ public:
   /// What the last Render did: tetrahedra drawn, cells skipped (non-tetrahedra, non-finite
   /// scalars), CPU seconds spent sorting and in the whole call (GL work is asynchronous: call
   /// vtkRenderWindow::WaitForCompletion() before reading a wall-clock frame time).
-  const psi::FrameStats& GetFrameStats() const { return this->Stats; }
-  vtkIdType GetNumberOfTetrahedra() const { return this->Stats.NumberOfTetrahedra; }
-  vtkIdType GetNumberOfSkippedCells() const { return this->Stats.NumberOfSkippedCells; }
-  double GetLastSortSeconds() const { return this->Stats.LastSortSeconds; }
+  const psi::FrameStats& GetFrameStats() const
+  {
+    return this->Stats;
+  }
+  vtkIdType GetNumberOfTetrahedra() const
+  {
+    return this->Stats.NumberOfTetrahedra;
+  }
+  vtkIdType GetNumberOfSkippedCells() const
+  {
+    return this->Stats.NumberOfSkippedCells;
+  }
+  double GetLastSortSeconds() const
+  {
+    return this->Stats.LastSortSeconds;
+  }
   /// Seconds spent rebuilding the full pre-integration table (last rebuild).
-  double GetLastPreIntegrationSeconds() const { return this->Stats.LastPreIntegrationSeconds; }
+  double GetLastPreIntegrationSeconds() const
+  {
+    return this->Stats.LastPreIntegrationSeconds;
+  }
   /// Cycles MPVONC had to break in the last sort.
-  vtkIdType GetLastSortCycles() const { return this->Stats.LastSortCycles; }
+  vtkIdType GetLastSortCycles() const
+  {
+    return this->Stats.LastSortCycles;
+  }
   /// Seconds of the last frame's Render calls (under dual depth peeling, one call per stage).
-  double GetLastRenderSeconds() const { return this->Stats.LastRenderSeconds; }
+  double GetLastRenderSeconds() const
+  {
+    return this->Stats.LastRenderSeconds;
+  }
   /// The Render calls that made the last frame (1, or its depth-peeling stages).
-  int GetLastFrameCalls() const { return this->Frame.Calls; }
+  int GetLastFrameCalls() const
+  {
+    return this->Frame.Calls;
+  }
   /// Several volumes intermixed: the volumes drawn in one pass with this one (0: drawn alone),
   /// and that draw's tetrahedra (the times above are that draw's too).
-  vtkIdType GetNumberOfIntermixedVolumes() const { return this->Stats.IntermixedVolumes; }
-  vtkIdType GetNumberOfIntermixedTetrahedra() const { return this->Stats.IntermixedTetrahedra; }
+  vtkIdType GetNumberOfIntermixedVolumes() const
+  {
+    return this->Stats.IntermixedVolumes;
+  }
+  vtkIdType GetNumberOfIntermixedTetrahedra() const
+  {
+    return this->Stats.IntermixedTetrahedra;
+  }
   /// Seconds of the last still (not interactive, psi::IsInteractiveRender) frame: what 'Auto'
   /// interaction weighs against the budget (psi::UsesVolumeLOD).
   vtkGetMacro(LastStillSeconds, double);
@@ -200,7 +263,10 @@ public:
   vtkGetMacro(LastUsedAdaptiveSampling, bool);
   vtkGetMacro(LastNumberOfAdaptiveNodes, int);
   /// The feature defines the last frame's program was composed from (one "#define" a line).
-  const std::string& GetLastFeatureDefines() const { return this->LastFeatureDefines; }
+  const std::string& GetLastFeatureDefines() const
+  {
+    return this->LastFeatureDefines;
+  }
   ///@}
 
   /// The verbosity at which each frame logs its stages' scopes and times (vtkLogger; TRACE by

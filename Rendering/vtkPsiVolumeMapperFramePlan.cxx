@@ -13,11 +13,11 @@
 #include "PsiStopwatch.h"
 #include "PsiTransferFunctionAnalysis.h"
 
+#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
-#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 #include <cmath>
 #include <limits>
@@ -111,10 +111,10 @@ void vtkPsiVolumeMapper::NotePlan(const PsiFramePlan& plan)
   vtkVLogF(this->LogVerbosity, "Psi Volume: plan %s", OneLine(f.Key()).c_str());
   this->LastUsedNearPlaneClipping = f.NearClip;
   this->LastUsedOpaqueClipping = f.OpaqueClip;
-  this->LastUsedIsosurfaceMethod =
-    f.IsoCount == 0 ? -1
-                    : static_cast<int>(f.IsoTriangles ? psi::IsosurfaceMethods::MarchingTetrahedra
-                                                      : psi::IsosurfaceMethods::PerFragment);
+  this->LastUsedIsosurfaceMethod = f.IsoCount == 0
+    ? -1
+    : static_cast<int>(f.IsoTriangles ? psi::IsosurfaceMethods::MarchingTetrahedra
+                                      : psi::IsosurfaceMethods::PerFragment);
   this->LastUsedEarlyDiscard = f.EarlyDiscard;
   this->LastUsedEarlyRayTermination = plan.Way.FrontToBack;
   this->LastUsedDecomposition = static_cast<int>(
@@ -145,8 +145,8 @@ PsiFramePlan vtkPsiVolumeMapper::ChooseWay(
   const int* size = ren->GetSize();
   const std::string decides = std::to_string(I.Mesh.GetVersion()) + " " +
     std::to_string(I.Mesh.GetScalarsVersion()) + " " +
-    std::to_string(I.Tables.Transfer.GetVersion()) + " " + std::to_string(this->GetMTime()) +
-    " " + std::to_string(size[0]) + "x" + std::to_string(size[1]) + " " + plan.Features.Key();
+    std::to_string(I.Tables.Transfer.GetVersion()) + " " + std::to_string(this->GetMTime()) + " " +
+    std::to_string(size[0]) + "x" + std::to_string(size[1]) + " " + plan.Features.Key();
   const double pixels = double(size[0]) * double(size[1]) *
     psi::ProjectedFraction(I.Mesh.GetMesh().Bounds, cam.MCVC, cam.VCDC);
   PsiFramePlan chosen = UseWay(plan, I.Choice.Next(decides, pixels, plan.Way, plan.Open));

@@ -49,9 +49,8 @@ void IntermixIsosurfaces(const std::vector<PsiIntermixedMember>& drawn,
       if (u >= 0 && u <= 1)
       {
         s.IsosurfaceValues.push_back(psi::SlotScalar(k, n, samples, u));
-        s.IsosurfaceOpacities.push_back(i < own.IsosurfaceOpacities.size()
-            ? own.IsosurfaceOpacities[i]
-            : own.IsosurfaceOpacity);
+        s.IsosurfaceOpacities.push_back(
+          i < own.IsosurfaceOpacities.size() ? own.IsosurfaceOpacities[i] : own.IsosurfaceOpacity);
         double rgba[4];
         psi::EvaluateTransferFunction(
           drawn[k].Volume->GetProperty(), own.IsosurfaceValues[i], rgba);

@@ -11,11 +11,11 @@
 #include "PsiDriverLimits.h"
 #include "PsiGeometryProjector.h"
 #include "PsiIntermixedScene.h"
+#include "PsiLookupTextures.h"
+#include "PsiMeasuredChoice.h"
 #include "PsiMeshBuffers.h"
 #include "PsiRenderTarget.h"
 #include "PsiSamplesPassed.h"
-#include "PsiLookupTextures.h"
-#include "PsiMeasuredChoice.h"
 #include "PsiVisibilityOrder.h"
 
 #include "vtkSmartPointer.h"
@@ -37,9 +37,9 @@ struct vtkPsiVolumeMapper::Internals
   // The input and its modification time that vtkPsiVolumeMapper::GetBounds last measured.
   vtkDataSet* BoundsInput = nullptr;
   vtkMTimeType BoundsTime = 0;
-  PsiSamplesPassed Samples;     // the volume's samples that pass the depth test (testing aid)
+  PsiSamplesPassed Samples; // the volume's samples that pass the depth test (testing aid)
   bool CountSamples = false;
-  uint64_t SamplesPassed = 0;   // counted over the last frame's draws
+  uint64_t SamplesPassed = 0; // counted over the last frame's draws
   // The way each frame draws, timed on the first frames under 'Auto' (PsiMeasuredChoice.h), and
   // the seconds the last frame spent making its programs ready (not the way's cost; -1: nothing
   // drawn).
@@ -61,7 +61,7 @@ struct vtkPsiVolumeMapper::Internals
   /// The current context's buffer limits, lowered for tests.
   PsiDriverLimits Limits() const { return PsiDriverLimits::Query().LoweredTo(this->TestingLimits); }
   std::string LastWarning;
-  std::string LastDrawError; // said once per new text
+  std::string LastDrawError;   // said once per new text
   std::string LastFeatureNote; // what a separate opacity array changed, said once
   vtkWindow* Context = nullptr;
 

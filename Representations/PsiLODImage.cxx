@@ -173,10 +173,10 @@ LODScalars LODScalarsOf(
 {
   LODScalars s;
   int cellFlag = -1;
-  vtkDataArray* a = piece ? vtkAbstractMapper::GetScalars(piece, mapper->GetScalarMode(),
-                              mapper->GetArrayAccessMode(), mapper->GetArrayId(),
-                              mapper->GetArrayName(), cellFlag)
-                          : nullptr;
+  vtkDataArray* a = piece
+    ? vtkAbstractMapper::GetScalars(piece, mapper->GetScalarMode(), mapper->GetArrayAccessMode(),
+        mapper->GetArrayId(), mapper->GetArrayName(), cellFlag)
+    : nullptr;
   if (a && a->GetName() && (cellFlag == 0 || cellFlag == 1))
   {
     s.Array = a->GetName();
@@ -226,8 +226,8 @@ void LODVolumeProperty(vtkVolumeProperty* property, vtkVolumeProperty* out)
 
 double LODSampleDistance(const double spacing[3], const double direction[3])
 {
-  const double length = std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] +
-    direction[2] * direction[2]);
+  const double length = std::sqrt(
+    direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
   double cells = 0; // lattice cells per unit of length along the ray, squared
   for (int k = 0; k < 3; ++k)
   {
@@ -244,8 +244,8 @@ LODImage ResampleForLOD(vtkDataSet* piece, const LODScalars& scalars, const LODR
   vtkDataSetAttributes* data = !grid ? nullptr
     : scalars.Cells                  ? static_cast<vtkDataSetAttributes*>(grid->GetCellData())
                                      : grid->GetPointData();
-  vtkDataArray* array = data && !scalars.Array.empty() ? data->GetArray(scalars.Array.c_str())
-                                                       : nullptr;
+  vtkDataArray* array =
+    data && !scalars.Array.empty() ? data->GetArray(scalars.Array.c_str()) : nullptr;
   LODImage lod;
   if (!array || grid->GetNumberOfCells() == 0)
   {

@@ -8,7 +8,7 @@
 #ifndef PsiLODVolume_h
 #define PsiLODVolume_h
 
-#include "vtkNew.h"            // for vtkNew
+#include "vtkNew.h" // for vtkNew
 #include "vtkPVLODVolume.h"
 #include "vtkVolumeProperty.h" // for vtkNew
 

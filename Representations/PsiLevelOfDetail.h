@@ -79,8 +79,7 @@ private:
     int Resolution = 0;
     bool operator==(const Key& o) const;
   };
-  static Key KeyOf(
-    vtkDataSet* piece, const Scalars& scalars, const Region& region, int resolution);
+  static Key KeyOf(vtkDataSet* piece, const Scalars& scalars, const Region& region, int resolution);
   static bool Drawable(vtkDataSet* piece, const Scalars& scalars);
   void Install(const psi::LODImage& lod, const Key& key, double seconds);
   void Crop(const Region& region);

@@ -41,8 +41,8 @@ void vtkPsiFrameStatsInformation::CopyToStream(vtkClientServerStream* stream)
           << static_cast<long long>(this->Stats.LastSortCycles) << this->Stats.LastRenderSeconds
           << this->Stats.LastSortSeconds << this->Stats.LastPreIntegrationSeconds
           << static_cast<long long>(this->Stats.IntermixedVolumes)
-          << static_cast<long long>(this->Stats.IntermixedTetrahedra)
-          << this->Stats.DrawWay.c_str() << vtkClientServerStream::End;
+          << static_cast<long long>(this->Stats.IntermixedTetrahedra) << this->Stats.DrawWay.c_str()
+          << vtkClientServerStream::End;
 }
 
 void vtkPsiFrameStatsInformation::CopyFromStream(const vtkClientServerStream* stream)

@@ -38,7 +38,10 @@ public:
 #ifndef __VTK_WRAP__
   /// The frame gathered over the processes: counts summed, times the largest (the panel's
   /// read-out shows it).
-  const psi::FrameStats& GetFrameStats() const { return this->Stats; }
+  const psi::FrameStats& GetFrameStats() const
+  {
+    return this->Stats;
+  }
 #endif
 
 protected:

@@ -7,14 +7,13 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
+#include "vtkPVLogger.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPsiConformingTetrahedralize.h"
-#include "vtkPVLogger.h"
 #include "vtkPsiVolumeMapper.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolumeRepresentationPreprocessor.h"
-
 
 namespace
 {
@@ -107,39 +106,39 @@ void vtkPsiVolumeRepresentation::Forward(Setter set, Values... values)
 }
 
 // The setters of PSI_RENDER_SETTINGS forward to the mapper, whose clamp warns once.
-#define PSI_FORWARD_ENUM(Name, Type, Default, Last)                                               \
-  void vtkPsiVolumeRepresentation::Set##Name(int value)                                           \
-  {                                                                                               \
-    using NumberSetter = void (vtkPsiVolumeMapper::*)(int);                                       \
-    this->Forward(static_cast<NumberSetter>(&vtkPsiVolumeMapper::Set##Name), value);              \
+#define PSI_FORWARD_ENUM(Name, Type, Default, Last)                                                \
+  void vtkPsiVolumeRepresentation::Set##Name(int value)                                            \
+  {                                                                                                \
+    using NumberSetter = void (vtkPsiVolumeMapper::*)(int);                                        \
+    this->Forward(static_cast<NumberSetter>(&vtkPsiVolumeMapper::Set##Name), value);               \
   }
-#define PSI_FORWARD_NUMBER(Name, Type, Default, Min, Max, Where)                                  \
-  void vtkPsiVolumeRepresentation::Set##Name(Type value)                                          \
-  {                                                                                               \
-    this->Forward(&vtkPsiVolumeMapper::Set##Name, value);                                         \
+#define PSI_FORWARD_NUMBER(Name, Type, Default, Min, Max, Where)                                   \
+  void vtkPsiVolumeRepresentation::Set##Name(Type value)                                           \
+  {                                                                                                \
+    this->Forward(&vtkPsiVolumeMapper::Set##Name, value);                                          \
   }
-#define PSI_FORWARD_BOOL(Name, Default, Where)                                                    \
-  void vtkPsiVolumeRepresentation::Set##Name(int on)                                              \
-  {                                                                                               \
-    this->Forward(&vtkPsiVolumeMapper::Set##Name, on != 0);                                       \
+#define PSI_FORWARD_BOOL(Name, Default, Where)                                                     \
+  void vtkPsiVolumeRepresentation::Set##Name(int on)                                               \
+  {                                                                                                \
+    this->Forward(&vtkPsiVolumeMapper::Set##Name, on != 0);                                        \
   }
 PSI_RENDER_SETTINGS(PSI_FORWARD_ENUM, PSI_FORWARD_NUMBER, PSI_FORWARD_BOOL)
 
 // The setters of PSI_INTERACTION_SETTINGS set the representation's own.
-#define PSI_INTERACTION_ENUM(Name, Type, Default, Last)                                           \
-  void vtkPsiVolumeRepresentation::Set##Name(int value)                                           \
-  {                                                                                               \
-    this->SetInteraction(psi::Setting::Name, value);                                              \
+#define PSI_INTERACTION_ENUM(Name, Type, Default, Last)                                            \
+  void vtkPsiVolumeRepresentation::Set##Name(int value)                                            \
+  {                                                                                                \
+    this->SetInteraction(psi::Setting::Name, value);                                               \
   }
-#define PSI_INTERACTION_NUMBER(Name, Type, Default, Min, Max, Where)                              \
-  void vtkPsiVolumeRepresentation::Set##Name(Type value)                                          \
-  {                                                                                               \
-    this->SetInteraction(psi::Setting::Name, value);                                              \
+#define PSI_INTERACTION_NUMBER(Name, Type, Default, Min, Max, Where)                               \
+  void vtkPsiVolumeRepresentation::Set##Name(Type value)                                           \
+  {                                                                                                \
+    this->SetInteraction(psi::Setting::Name, value);                                               \
   }
-#define PSI_INTERACTION_BOOL(Name, Default, Where)                                                \
-  void vtkPsiVolumeRepresentation::Set##Name(int on)                                              \
-  {                                                                                               \
-    this->SetInteraction(psi::Setting::Name, on);                                                 \
+#define PSI_INTERACTION_BOOL(Name, Default, Where)                                                 \
+  void vtkPsiVolumeRepresentation::Set##Name(int on)                                               \
+  {                                                                                                \
+    this->SetInteraction(psi::Setting::Name, on);                                                  \
   }
 PSI_INTERACTION_SETTINGS(PSI_INTERACTION_ENUM, PSI_INTERACTION_NUMBER, PSI_INTERACTION_BOOL)
 

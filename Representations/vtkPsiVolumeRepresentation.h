@@ -14,10 +14,10 @@
 #ifndef vtkPsiVolumeRepresentation_h
 #define vtkPsiVolumeRepresentation_h
 
-#include "PsiVolumeRepresentationsModule.h"
 #include "PsiFrameStats.h"
 #include "PsiSettingList.h" // PSI_RENDER_SETTINGS, PSI_INTERACTION_SETTINGS: the setters below
 #include "PsiSettings.h"
+#include "PsiVolumeRepresentationsModule.h"
 #include "vtkNew.h"
 #include "vtkUnstructuredGridVolumeRepresentation.h"
 

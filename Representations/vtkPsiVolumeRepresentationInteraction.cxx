@@ -6,16 +6,16 @@
 
 #include "PsiCellPointBounds.h"
 #include "PsiLODVolume.h"
+#include "PsiLevelOfDetail.h"
 #include "PsiSceneQueries.h"
 #include "PsiSettings.h"
-#include "PsiLevelOfDetail.h"
 #include "vtkPsiVolumeMapper.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkAlgorithmOutput.h"
-#include "vtkDataSet.h"
 #include "vtkBoundingBox.h"
 #include "vtkCamera.h"
+#include "vtkDataSet.h"
 #include "vtkInformation.h"
 #include "vtkMultiProcessController.h"
 #include "vtkPVLODVolume.h"
@@ -39,9 +39,8 @@ namespace
 PsiLevelOfDetail::Region LatticeRegion(vtkPVRenderView* view, vtkDataSet* piece)
 {
   PsiLevelOfDetail::Region region;
-  auto* manager = view
-    ? vtkPVRenderViewDataDeliveryManager::SafeDownCast(view->GetDeliveryManager())
-    : nullptr;
+  auto* manager =
+    view ? vtkPVRenderViewDataDeliveryManager::SafeDownCast(view->GetDeliveryManager()) : nullptr;
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
   if (!manager || ranks < 2 || static_cast<int>(manager->GetCuts().size()) != ranks)
@@ -88,11 +87,13 @@ int vtkPsiVolumeRepresentation::ProcessViewRequest(
 // (the GUI's default is 20 MB): the surface of the whole mesh, which 'Psi Volume' draws only in
 // 'ParaView surface' mode. Otherwise the superclass makes an outline instead (its bounds, at no
 // cost), where the surface of a 2.56M-tetrahedron mesh took 4.7 s and 228 MB.
-int vtkPsiVolumeRepresentation::UpdateUnusedSurfaceLOD(vtkInformation* inInfo, vtkInformation* outInfo)
+int vtkPsiVolumeRepresentation::UpdateUnusedSurfaceLOD(
+  vtkInformation* inInfo, vtkInformation* outInfo)
 {
   const bool outline = inInfo->Has(vtkPVRenderView::USE_OUTLINE_FOR_LOD()) != 0;
   inInfo->Set(vtkPVRenderView::USE_OUTLINE_FOR_LOD(), 1);
-  const int ok = this->Superclass::ProcessViewRequest(vtkPVView::REQUEST_UPDATE_LOD(), inInfo, outInfo);
+  const int ok =
+    this->Superclass::ProcessViewRequest(vtkPVView::REQUEST_UPDATE_LOD(), inInfo, outInfo);
   if (!outline)
   {
     inInfo->Remove(vtkPVRenderView::USE_OUTLINE_FOR_LOD());
@@ -172,7 +173,8 @@ bool vtkPsiVolumeRepresentation::UpdateVolumeLOD(vtkInformation* inInfo, vtkPVRe
   vtkDataSet* piece = port && port->GetProducer()
     ? vtkDataSet::SafeDownCast(port->GetProducer()->GetOutputDataObject(port->GetIndex()))
     : nullptr;
-  const PsiLevelOfDetail::Scalars scalars = psi::LODScalarsOf(this->PsiMapper, this->Property, piece);
+  const PsiLevelOfDetail::Scalars scalars =
+    psi::LODScalarsOf(this->PsiMapper, this->Property, piece);
   const PsiLevelOfDetail::Region region = LatticeRegion(view, piece);
   if (this->LOD->NeedsUpdate(piece, scalars, region))
   {

@@ -83,8 +83,8 @@ inline MeshStats Check(vtkUnstructuredGrid* ug)
     else if (e.second.size() == 1)
     {
       ++s.BoundaryTriangles;
-      s.BoundaryArea += std::sqrt(CGAL::to_double(
-        CGAL::squared_area(P[e.first[0]], P[e.first[1]], P[e.first[2]])));
+      s.BoundaryArea +=
+        std::sqrt(CGAL::to_double(CGAL::squared_area(P[e.first[0]], P[e.first[1]], P[e.first[2]])));
     }
     else
     {
@@ -104,8 +104,7 @@ inline MeshStats Check(vtkUnstructuredGrid* ug)
     for (int f = 0; f < 4; ++f)
     {
       s.NeighborMismatches += nb->GetTypedComponent(t, f) != expected[4 * t + f];
-      s.FlagMismatches +=
-        ((flags->GetValue(t) >> f) & 1) != (expected[4 * t + f] < 0 ? 1 : 0);
+      s.FlagMismatches += ((flags->GetValue(t) >> f) & 1) != (expected[4 * t + f] < 0 ? 1 : 0);
     }
   }
   return s;

@@ -34,8 +34,9 @@ inline double FullyOpaqueBound(psi::Method m, const psi::TFSegment& s)
     case psi::Method::LinearOpacityImproved:
       return 0.0;
     case psi::Method::AverageOpacity:
-      return 0.5 * std::max({ std::abs(s.Lb[0] - s.Lf[0]), std::abs(s.Lb[1] - s.Lf[1]),
-                              std::abs(s.Lb[2] - s.Lf[2]) });
+      return 0.5 *
+        std::max({ std::abs(s.Lb[0] - s.Lf[0]), std::abs(s.Lb[1] - s.Lf[1]),
+          std::abs(s.Lb[2] - s.Lf[2]) });
     default:
       return -1.0;
   }
@@ -45,7 +46,8 @@ inline double FullyOpaqueBound(psi::Method m, const psi::TFSegment& s)
 inline std::vector<HardCase> HardCases(bool floatInputs)
 {
   const double eps = floatInputs ? 1e-7 : 1e-12;
-  auto seg = [](double af, double ab, double D, double lf = 0.2, double lb = 0.9) {
+  auto seg = [](double af, double ab, double D, double lf = 0.2, double lb = 0.9)
+  {
     psi::TFSegment s;
     s.af = af;
     s.ab = ab;

@@ -34,7 +34,8 @@ inline RequestedSettings& Requested()
 }
 
 /// Reads `[IMAGE_FOLDER] [--projector geometry|compute] [--decomposition silhouette|fan]
-/// [--part NAME]` into Requested() and returns the image folder ("" when none: no images are written).
+/// [--part NAME]` into Requested() and returns the image folder ("" when none: no images are
+/// written).
 inline std::string ParseArguments(int argc, char* argv[])
 {
   std::string folder;
@@ -98,7 +99,7 @@ inline int RequestedProjector()
     if (!(cond))                                                                                   \
     {                                                                                              \
       ++psitest::Failures();                                                                       \
-      std::printf("FAILED %s:%d: %s: ", __FILE__, __LINE__, #cond);                              \
+      std::printf("FAILED %s:%d: %s: ", __FILE__, __LINE__, #cond);                                \
       std::printf(__VA_ARGS__);                                                                    \
       std::printf("\n");                                                                           \
     }                                                                                              \

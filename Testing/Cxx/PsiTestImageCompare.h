@@ -114,8 +114,8 @@ inline double CheckFrontToBack(
 /// max absolute error of 8-bit channels in [0, 1], covered pixels). `opaque` geometry is captured
 /// (depth and color) without the volume and the `translucent` props. With `outDir`, writes the
 /// GPU image, the reference and 8x their difference as PNG.
-inline Result Compare(const std::string& name, vtkRenderWindow* win, vtkRenderer* ren, vtkVolume* vol,
-  const psi::ReferenceScene& refScene, vtkActor* opaque, const std::string& outDir,
+inline Result Compare(const std::string& name, vtkRenderWindow* win, vtkRenderer* ren,
+  vtkVolume* vol, const psi::ReferenceScene& refScene, vtkActor* opaque, const std::string& outDir,
   const std::vector<vtkProp*>& translucent = {})
 {
   const int W = win->GetSize()[0], H = win->GetSize()[1];
@@ -189,10 +189,11 @@ inline Result Compare(const std::string& name, vtkRenderWindow* win, vtkRenderer
   char order[64] = "  back to front";
   if (againstBack >= 0)
   {
-    std::snprintf(order, sizeof(order), "  front to back: %.0f/255 off back to front",
-      255 * againstBack);
+    std::snprintf(
+      order, sizeof(order), "  front to back: %.0f/255 off back to front", 255 * againstBack);
   }
-  std::printf("%-28s mean error %.5f  max %.4f  covered pixels %d  over 0.05: %.4f%%  99.9%%: %.4f%s\n",
+  std::printf(
+    "%-28s mean error %.5f  max %.4f  covered pixels %d  over 0.05: %.4f%%  99.9%%: %.4f%s\n",
     name.c_str(), r.Mean, r.Max, r.Covered, 100 * r.Outliers, r.P999, order);
   std::fflush(stdout);
   return r;

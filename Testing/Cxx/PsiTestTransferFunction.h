@@ -79,7 +79,8 @@ inline psi::ReferenceScene MakeReferenceScene(vtkUnstructuredGrid* grid,
     grid->GetCellPoints(c, n, pts);
     ref.Tets.push_back({ { int(pts[0]), int(pts[1]), int(pts[2]), int(pts[3]) } });
   }
-  ref.Transfer = [color, opacity, unit](double v, double out[4]) {
+  ref.Transfer = [color, opacity, unit](double v, double out[4])
+  {
     color->GetColor(v, out);
     out[3] = opacity->GetValue(v) / unit;
   };

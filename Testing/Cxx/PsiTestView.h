@@ -49,8 +49,8 @@ struct VolumeView
   }
 };
 
-/// A perspective camera at (x, y, z) looking at the origin (the centre of the Wavelet meshes), y up,
-/// view angle 30 degrees, the clipping range reset to what the renderer shows.
+/// A perspective camera at (x, y, z) looking at the origin (the centre of the Wavelet meshes), y
+/// up, view angle 30 degrees, the clipping range reset to what the renderer shows.
 inline void LookAtCentre(vtkRenderer* ren, double x, double y, double z)
 {
   vtkCamera* cam = ren->GetActiveCamera();

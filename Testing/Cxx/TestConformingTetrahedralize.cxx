@@ -123,15 +123,16 @@ void TestCountsAndAttributes()
   {
     Run r(image, mode);
     const vtkIdType per = mode == 0 ? 6 : 5;
-    PSI_CHECK(r.Output->GetNumberOfCells() == per * cells, "image mode %d: %lld tets, expected %lld",
-      mode, (long long)r.Output->GetNumberOfCells(), (long long)(per * cells));
+    PSI_CHECK(r.Output->GetNumberOfCells() == per * cells,
+      "image mode %d: %lld tets, expected %lld", mode, (long long)r.Output->GetNumberOfCells(),
+      (long long)(per * cells));
     PSI_CHECK(r.Filter->GetNumberOfGeneratedTets() == per * cells, "generated %lld",
       (long long)r.Filter->GetNumberOfGeneratedTets());
     PSI_CHECK(r.Filter->GetNumberOfRemovedDegenerateTets() == 0, "removed %lld on a regular grid",
       (long long)r.Filter->GetNumberOfRemovedDegenerateTets());
     PSI_CHECK(r.Events->LastProgress == 1.0, "progress ended at %g", r.Events->LastProgress);
-    ExpectConformingBox(mode ? "image 4x3x5, five per hex" : "image 4x3x5, conforming",
-      r.Output, bounds);
+    ExpectConformingBox(
+      mode ? "image 4x3x5, five per hex" : "image 4x3x5, conforming", r.Output, bounds);
 
     // Cell data: every child's centroid lies inside its parent cell; point data unchanged.
     auto* ids = vtkIntArray::SafeDownCast(r.Output->GetCellData()->GetArray("CellId"));
@@ -185,8 +186,8 @@ void TestCountsAndAttributes()
     Run r(rg, mode);
     PSI_CHECK(r.Output->GetNumberOfCells() == (mode ? 5 : 6) * rg->GetNumberOfCells(),
       "rectilinear mode %d: %lld tets", mode, (long long)r.Output->GetNumberOfCells());
-    ExpectConformingBox(mode ? "rectilinear, five per hex" : "rectilinear, conforming", r.Output,
-      bounds);
+    ExpectConformingBox(
+      mode ? "rectilinear, five per hex" : "rectilinear, conforming", r.Output, bounds);
   }
 }
 
@@ -242,8 +243,8 @@ vtkSmartPointer<vtkUnstructuredGrid> MakeMixed(int n, bool degenerateHexes = fal
               c[a] += pts[p][a] / 8;
           const vtkIdType apex = static_cast<vtkIdType>(pts.size());
           pts.push_back(c);
-          const int quads[6][4] = { { 0, 1, 2, 3 }, { 4, 7, 6, 5 }, { 0, 4, 5, 1 },
-            { 1, 5, 6, 2 }, { 2, 6, 7, 3 }, { 3, 7, 4, 0 } };
+          const int quads[6][4] = { { 0, 1, 2, 3 }, { 4, 7, 6, 5 }, { 0, 4, 5, 1 }, { 1, 5, 6, 2 },
+            { 2, 6, 7, 3 }, { 3, 7, 4, 0 } };
           for (const auto& q : quads)
           {
             // Faces on the box boundary (region 3 only): two tetrahedra instead of the pyramid.
@@ -269,8 +270,8 @@ vtkSmartPointer<vtkUnstructuredGrid> MakeMixed(int n, bool degenerateHexes = fal
         }
         else // the hexahedron as a VTK_POLYHEDRON face stream
         {
-          const int quads[6][4] = { { 0, 3, 2, 1 }, { 4, 5, 6, 7 }, { 0, 1, 5, 4 },
-            { 1, 2, 6, 5 }, { 2, 3, 7, 6 }, { 3, 0, 4, 7 } };
+          const int quads[6][4] = { { 0, 3, 2, 1 }, { 4, 5, 6, 7 }, { 0, 1, 5, 4 }, { 1, 2, 6, 5 },
+            { 2, 3, 7, 6 }, { 3, 0, 4, 7 } };
           Cell c{ VTK_POLYHEDRON, { 6 } };
           for (const auto& q : quads)
           {
@@ -379,8 +380,8 @@ void TestDegenerate()
     PSI_CHECK(removed > 0, "collapsed: no degenerate tetrahedron removed");
     PSI_CHECK(r.Output->GetNumberOfCells() + removed == gen, "collapsed: %lld + %lld != %lld",
       (long long)r.Output->GetNumberOfCells(), (long long)removed, (long long)gen);
-    auto* fd = vtkIdTypeArray::SafeDownCast(
-      r.Output->GetFieldData()->GetArray("RemovedDegenerateTets"));
+    auto* fd =
+      vtkIdTypeArray::SafeDownCast(r.Output->GetFieldData()->GetArray("RemovedDegenerateTets"));
     PSI_CHECK(fd && fd->GetValue(0) == removed, "field-data count missing or wrong");
     const MeshStats s = Check(r.Output);
     PSI_CHECK(s.NonPositive == 0 && s.OverShared == 0, "collapsed: %lld non-positive, %lld over",
@@ -447,8 +448,8 @@ int TestBluntFin(const std::string& dir)
   int dims[3];
   grid->GetDimensions(dims);
   const vtkIdType hexes = grid->GetNumberOfCells();
-  std::printf("Blunt Fin: %dx%dx%d points, %lld hexahedra\n", dims[0], dims[1], dims[2],
-    (long long)hexes);
+  std::printf(
+    "Blunt Fin: %dx%dx%d points, %lld hexahedra\n", dims[0], dims[1], dims[2], (long long)hexes);
   PSI_CHECK(hexes == 37479, "Blunt Fin hexahedra %lld (MANIFEST: 37,479)", (long long)hexes);
   for (int mode : { 1, 0 })
   {
@@ -468,8 +469,7 @@ int TestBluntFin(const std::string& dir)
     std::printf("Blunt Fin %-10s: %lld tets before removal, %lld degenerate removed, %lld left, "
                 "%lld boundary triangles, volume %.6g, filter %.3f s\n",
       mode ? "five" : "conforming", (long long)gen, (long long)removed,
-      (long long)r.Output->GetNumberOfCells(), (long long)s.BoundaryTriangles, s.Volume,
-      r.Seconds);
+      (long long)r.Output->GetNumberOfCells(), (long long)s.BoundaryTriangles, s.Volume, r.Seconds);
   }
   return psitest::Failures() ? 1 : 0;
 }
@@ -514,6 +514,7 @@ int main(int argc, char* argv[])
     rc = psitest::Failures() ? 1 : 0;
   }
   if (rc != 77)
-    std::printf("%s\n", rc ? "TestConformingTetrahedralize FAILED" : "TestConformingTetrahedralize passed");
+    std::printf(
+      "%s\n", rc ? "TestConformingTetrahedralize FAILED" : "TestConformingTetrahedralize passed");
   return rc;
 }

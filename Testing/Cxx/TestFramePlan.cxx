@@ -52,8 +52,10 @@ void TestMethodTables()
     const PsiFramePlan plan = PlanFrame(s, Facts());
     const psi::IntegrationMethodInfo& info = psi::GetIntegrationMethodInfo(psi::Method(m));
     PSI_CHECK(plan.Features.Method == m, "method %d drawn as %d", m, plan.Features.Method);
-    PSI_CHECK(plan.Tables.PartialPreIntegrationTable == info.NeedsPsiTable, "method %d: Psi table", m);
-    PSI_CHECK(plan.Tables.PreIntegration == info.NeedsPreIntegrationTable, "method %d: 3D table", m);
+    PSI_CHECK(
+      plan.Tables.PartialPreIntegrationTable == info.NeedsPsiTable, "method %d: Psi table", m);
+    PSI_CHECK(
+      plan.Tables.PreIntegration == info.NeedsPreIntegrationTable, "method %d: 3D table", m);
     PSI_CHECK(!plan.Tables.OpacityPrefix && !plan.Tables.AdaptiveNodes && !plan.Tables.Gradients,
       "method %d: a table no feature reads", m);
     PSI_CHECK(!plan.MethodReplaced && !plan.SceneDepth, "method %d: plain scene", m);
@@ -141,7 +143,8 @@ void TestSeparateOpacityAndPeeling()
   plan = PlanFrame(s, facts);
   PSI_CHECK(plan.Features.Silhouette && !plan.Features.Adaptive && !plan.Tables.AdaptiveNodes,
     "a separate opacity array: silhouettes, no nodes");
-  PSI_CHECK(plan.MethodReplaced && !plan.Tables.PreIntegration && plan.Tables.PartialPreIntegrationTable &&
+  PSI_CHECK(plan.MethodReplaced && !plan.Tables.PreIntegration &&
+      plan.Tables.PartialPreIntegrationTable &&
       plan.Features.Method == static_cast<int>(psi::Method::PartialPreIntegration),
     "full pre-integration with a separate opacity array draws as partial");
   // With isosurfaces and zero opacity, 'Auto' draws marching tetrahedra; early discard would
@@ -150,8 +153,7 @@ void TestSeparateOpacityAndPeeling()
   s.IsosurfaceValues = { 0.2, 0.6 };
   facts.ZeroOpacity = true;
   plan = PlanFrame(s, facts);
-  PSI_CHECK(plan.Features.IsoTriangles && !plan.Features.EarlyDiscard &&
-      !plan.Tables.OpacityPrefix,
+  PSI_CHECK(plan.Features.IsoTriangles && !plan.Features.EarlyDiscard && !plan.Tables.OpacityPrefix,
     "separate opacity, zero opacity, 'Auto' isosurfaces: marching tetrahedra, no early discard");
   facts = Facts();
   facts.DepthPeeled = true;

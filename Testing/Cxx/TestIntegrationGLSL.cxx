@@ -8,10 +8,11 @@
 #include "PsiIntegrationMethods.h"
 #include "PsiIntegratorInputsFS.h"
 #include "PsiIntegratorSources.h"
-#include "PsiReferenceIntegrals.h"
 #include "PsiPartialPreIntegrationTable.h"
+#include "PsiReferenceIntegrals.h"
 #include "PsiTestCheck.h"
 
+#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 #include "vtkNew.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -21,7 +22,6 @@
 #include "vtkRenderWindow.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 #include <algorithm>
 #include <cmath>
@@ -167,8 +167,10 @@ void CompareWithCpp(const psi::IntegrationMethodInfo& info, const std::vector<Ca
   }
   std::printf("%-34s %12.2e %12.2e %12.2e\n", info.Name, gpuCpu, gpuRef, cpuRef);
   PSI_CHECK(nonFinite == 0, "%s: %d non-finite GLSL outputs", info.Name, nonFinite);
-  PSI_CHECK(outOfBound == 0, "%s: %d GLSL outputs of hard cases beyond the case's bound of the "
-    "reference", info.Name, outOfBound);
+  PSI_CHECK(outOfBound == 0,
+    "%s: %d GLSL outputs of hard cases beyond the case's bound of the "
+    "reference",
+    info.Name, outOfBound);
   PSI_CHECK(gpuCpu < GpuVsCpuBound(info.Id), "%s: GLSL differs from C++ by %g", info.Name, gpuCpu);
 }
 } // namespace
@@ -201,13 +203,15 @@ int main()
     back[4 * i + 3] = static_cast<float>(s.ab / s.unit);
     len[4 * i] = static_cast<float>(s.D);
   }
-  auto texture = [&](std::vector<float>& data, int comps) {
+  auto texture = [&](std::vector<float>& data, int comps)
+  {
     vtkNew<vtkTextureObject> t;
     t->SetContext(win);
     t->Create2DFromRaw(W, 1, comps, VTK_FLOAT, data.data());
     return t;
   };
-  vtkSmartPointer<vtkTextureObject> tf = texture(front, 4), tb = texture(back, 4), tl = texture(len, 4);
+  vtkSmartPointer<vtkTextureObject> tf = texture(front, 4), tb = texture(back, 4),
+                                    tl = texture(len, 4);
   const psi::PartialPreIntegrationTable& table = psi::GetDefaultPsiTable();
   vtkNew<vtkTextureObject> psiTex;
   psiTex->SetContext(win);
@@ -223,8 +227,10 @@ int main()
   fbo->PopulateFramebuffer(W, 1, true, 1, VTK_FLOAT, false, 0, 0);
 
   CheckEmbeddedIntegrators();
-  std::printf("%-34s %12s %12s %12s   (over %d segments, %d hard cases)\n", "method",
-    "GLSL-C++", "GLSL-ref", "C++-ref", W, static_cast<int>(std::count_if(cases.begin(), cases.end(), [](const Case& c) { return c.Hard; })));
+  std::printf("%-34s %12s %12s %12s   (over %d segments, %d hard cases)\n", "method", "GLSL-C++",
+    "GLSL-ref", "C++-ref", W,
+    static_cast<int>(
+      std::count_if(cases.begin(), cases.end(), [](const Case& c) { return c.Hard; })));
   for (const psi::IntegrationMethodInfo& info : psi::IntegrationMethodTable())
   {
     if (info.NeedsPreIntegrationTable)

@@ -8,8 +8,8 @@
 // tree's) in (value, text), which is what the properties panel and Python see.
 #include "PsiHardCases.h"
 #include "PsiIntegrationMethods.h"
-#include "PsiReferenceIntegrals.h"
 #include "PsiPartialPreIntegrationTable.h"
+#include "PsiReferenceIntegrals.h"
 #include "PsiSettings.h"
 #include "PsiTestCheck.h"
 
@@ -243,25 +243,26 @@ void CheckTable(const char* xmlPath)
   {
     std::printf("  %s\n", p.c_str());
   }
-  PSI_CHECK(problems.empty(), "%s: IntegrationMethod enumeration differs from the table (above)",
-    xmlPath);
+  PSI_CHECK(
+    problems.empty(), "%s: IntegrationMethod enumeration differs from the table (above)", xmlPath);
   PSI_CHECK(xmlDefault == settingsDefault, "XML default_values %d, settings default %d", xmlDefault,
     settingsDefault);
   // ... and the comparison does see a missing, extra or misnamed entry.
   const std::string first = std::string("text=\"") + table[0].Name + "\"";
-  const std::string lastEntry = "<Entry value=\"" + std::to_string(last) + "\" text=\"" +
-    table[last].Name + "\" />";
-  for (const std::string& bad : { Edited(xml, lastEntry, ""), Edited(xml, first, "text=\"Avg\""),
-         Edited(xml, lastEntry, lastEntry + "<Entry value=\"" + std::to_string(last + 1) +
-             "\" text=\"New Method\" />") })
+  const std::string lastEntry =
+    "<Entry value=\"" + std::to_string(last) + "\" text=\"" + table[last].Name + "\" />";
+  for (const std::string& bad :
+    { Edited(xml, lastEntry, ""), Edited(xml, first, "text=\"Avg\""),
+      Edited(xml, lastEntry,
+        lastEntry + "<Entry value=\"" + std::to_string(last + 1) + "\" text=\"New Method\" />") })
   {
     PSI_CHECK(!bad.empty() && !CompareXmlWithTable(bad).empty(),
       "an edited enumeration must differ from the table");
   }
   if (problems.empty())
   {
-    std::printf("IntegrationMethod enumeration of %s matches the %d rows of the table\n",
-      xmlPath, psi::NumberOfIntegrationMethods());
+    std::printf("IntegrationMethod enumeration of %s matches the %d rows of the table\n", xmlPath,
+      psi::NumberOfIntegrationMethods());
   }
 }
 
@@ -307,7 +308,8 @@ void CheckClosedFormPsi()
   }
   // The erfc fit behind erfcx has 1.2e-7 relative error; Rybicki's Dawson ~2e-7.
   PSI_CHECK(worstClosed < 1e-10, "closed-form Psi vs quadrature: %g", worstClosed);
-  std::printf("closed-form Psi (WMS) within %.2g of quadrature for tau D in [1e-9, 1e6]\n", worstClosed);
+  std::printf(
+    "closed-form Psi (WMS) within %.2g of quadrature for tau D in [1e-9, 1e6]\n", worstClosed);
 }
 
 // The linear-opacity reference against brute force: 10^6 homogeneous slabs, each composited
@@ -315,9 +317,9 @@ void CheckClosedFormPsi()
 // first slab is opaque and gives the front luminance, which the reference must return too.
 void CheckLinearOpacityReference()
 {
-  for (const auto& c : { std::array<double, 3>{ { 0.2, 0.7, 1.0 } }, std::array<double, 3>{ { 0.9, 0.1, 3.0 } },
-         std::array<double, 3>{ { 1.0, 0.3, 1.0 } }, std::array<double, 3>{ { 0.3, 1.0, 0.5 } },
-         std::array<double, 3>{ { 1.0, 1.0, 1.0 } } })
+  for (const auto& c : { std::array<double, 3>{ { 0.2, 0.7, 1.0 } },
+         std::array<double, 3>{ { 0.9, 0.1, 3.0 } }, std::array<double, 3>{ { 1.0, 0.3, 1.0 } },
+         std::array<double, 3>{ { 0.3, 1.0, 0.5 } }, std::array<double, 3>{ { 1.0, 1.0, 1.0 } } })
   {
     psi::TFSegment s;
     s.af = c[0];
@@ -369,8 +371,8 @@ std::vector<double> CheckSweeps(const psi::PartialPreIntegrationTable& table)
       sweepMax[mi][di++] = e.Max;
     }
     std::printf("\n");
-    PSI_CHECK(worst < bounds[mi], "%s: sweep error %g above its bound %g", psi::MethodName(m), worst,
-      bounds[mi]);
+    PSI_CHECK(worst < bounds[mi], "%s: sweep error %g above its bound %g", psi::MethodName(m),
+      worst, bounds[mi]);
   }
   // Ordering the papers report (Moreland 2004 dissertation Table 6.4 and Figs. 6.9-6.11): the
   // improved linear opacity approximation beats averaging opacity; partial pre-integration beats

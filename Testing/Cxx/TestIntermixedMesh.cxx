@@ -106,8 +106,8 @@ void TestNodes(int samples)
   b.Scalars = { -3, -3, 1 }; // a step at -3
   b.Rgba = { 0, 0, 0, 4, 1, 1, 1, 5, 0.5f, 0.5f, 0.5f, 6 };
   b.MaxDeviation = 0.01;
-  const psi::TransferFunctionNodes all = psi::IntermixNodes(
-    { a, b }, { { { 10.0, 15.0 } }, { { -3.0, 1.0 } } }, samples);
+  const psi::TransferFunctionNodes all =
+    psi::IntermixNodes({ a, b }, { { { 10.0, 15.0 } }, { { -3.0, 1.0 } } }, samples);
   const double expect[6] = { psi::SlotScalar(0, 2, samples, 0.0),
     psi::SlotScalar(0, 2, samples, 0.4), psi::SlotScalar(0, 2, samples, 1.0),
     psi::SlotScalar(1, 2, samples, 0.0), psi::SlotScalar(1, 2, samples, 0.0),
@@ -139,8 +139,8 @@ int main()
   TestNodes(samples);
 
   // --- geometry
-  PSI_CHECK(all.NumberOfPoints() == 10 && all.NumberOfTets() == 4,
-    "points and cells of both volumes");
+  PSI_CHECK(
+    all.NumberOfPoints() == 10 && all.NumberOfTets() == 4, "points and cells of both volumes");
   const double expectShift[3] = { 6.0, 1.0, -1.5 }; // the centre of [0, 12] x [0, 2] x [-4, 1]
   double worst = 0;
   for (int k = 0; k < 3; ++k)
@@ -216,8 +216,10 @@ int main()
   const double corner[5][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 1, 1 } };
   auto lowerTet = OneTet(corner[0], corner[1], corner[2], corner[3]);
   auto upperTet = OneTet(corner[1], corner[2], corner[3], corner[4]); // shares face 1, 2, 3
-  const psi::TetMesh ml = psi::GatherTetMesh(lowerTet, lowerTet->GetPointData()->GetScalars(), false);
-  const psi::TetMesh mu = psi::GatherTetMesh(upperTet, upperTet->GetPointData()->GetScalars(), false);
+  const psi::TetMesh ml =
+    psi::GatherTetMesh(lowerTet, lowerTet->GetPointData()->GetScalars(), false);
+  const psi::TetMesh mu =
+    psi::GatherTetMesh(upperTet, upperTet->GetPointData()->GetScalars(), false);
   std::vector<psi::IntermixedVolume> touching(2);
   touching[0].Mesh = &ml;
   touching[1].Mesh = &mu;

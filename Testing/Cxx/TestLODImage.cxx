@@ -27,10 +27,10 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkDelaunay3D.h"
 #include "vtkDoubleArray.h"
-#include "vtkMinimalStandardRandomSequence.h"
-#include "vtkPiecewiseFunction.h"
 #include "vtkImageData.h"
+#include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkProbeFilter.h"
@@ -61,8 +61,9 @@ void MakeBoxMesh(vtkUnstructuredGrid* grid, const double bounds[6], int n, Skip 
         double p[3];
         for (int a = 0; a < 3; ++a)
         {
-          p[a] = idx[a] == n - 1 ? bounds[2 * a + 1]
-                                 : bounds[2 * a] + (bounds[2 * a + 1] - bounds[2 * a]) * idx[a] / (n - 1);
+          p[a] = idx[a] == n - 1
+            ? bounds[2 * a + 1]
+            : bounds[2 * a] + (bounds[2 * a + 1] - bounds[2 * a]) * idx[a] / (n - 1);
         }
         points->InsertNextPoint(p);
         s->InsertNextValue(p[0] + 2 * p[1] + 3 * p[2]);
@@ -78,7 +79,8 @@ void MakeBoxMesh(vtkUnstructuredGrid* grid, const double bounds[6], int n, Skip 
   for (vtkIdType c = 0; c < all->GetNumberOfCells(); ++c)
   {
     const vtkIdType cube = c / 6; // AddKuhnTets: 6 tetrahedra per cube, cubes in i, j, k order
-    const int i = static_cast<int>(cube % (n - 1)), j = static_cast<int>((cube / (n - 1)) % (n - 1));
+    const int i = static_cast<int>(cube % (n - 1)),
+              j = static_cast<int>((cube / (n - 1)) % (n - 1));
     const int k = static_cast<int>(cube / ((n - 1) * (n - 1)));
     if (!skip(i, j, k))
     {
@@ -145,9 +147,10 @@ void CheckLShapeHidesTheMissingCube()
     hidden += Hidden(lod.Image, i) ? 1 : 0;
     wrong += (outside && !Hidden(lod.Image, i)) || (inside && Hidden(lod.Image, i)) ? 1 : 0;
   }
-  PSI_CHECK(wrong == 0 && hidden > 0, "an L shape: the points of the missing cube hidden, the "
-    "others not (%lld wrong of %lld hidden)", static_cast<long long>(wrong),
-    static_cast<long long>(hidden));
+  PSI_CHECK(wrong == 0 && hidden > 0,
+    "an L shape: the points of the missing cube hidden, the "
+    "others not (%lld wrong of %lld hidden)",
+    static_cast<long long>(wrong), static_cast<long long>(hidden));
   PSI_CHECK(!lod.Image->GetCellGhostArray(), "an L shape: no lattice cell hidden");
 }
 
@@ -215,7 +218,8 @@ void CheckAgainstProbeFilter()
   probe->SetInputData(lattice);
   probe->SetSourceData(grid);
   probe->Update();
-  vtkDataArray* valid = probe->GetOutput()->GetPointData()->GetArray(probe->GetValidPointMaskArrayName());
+  vtkDataArray* valid =
+    probe->GetOutput()->GetPointData()->GetArray(probe->GetValidPointMaskArrayName());
   vtkDataArray* expected = probe->GetOutput()->GetPointData()->GetArray("s");
   vtkDataArray* got = Samples(lod);
   vtkIdType both = 0, disagree = 0;
@@ -266,7 +270,8 @@ void CheckAssociationOfOneName()
   const double p = Samples(points)->GetTuple1(far), c = Samples(cells)->GetTuple1(far);
   PSI_CHECK(std::abs(p - 1) < 1e-3 && c < -0.8 && c > -1,
     "one name, two associations: the point array sampled as points (%g, want 1), the cell array "
-    "as cells (%g, want the last cell's -0.875)", p, c);
+    "as cells (%g, want the last cell's -0.875)",
+    p, c);
 }
 
 void CheckThinSlabSampling()
@@ -280,7 +285,8 @@ void CheckThinSlabSampling()
   const double z = psi::LODSampleDistance(h, alongZ), x = psi::LODSampleDistance(h, alongX);
   PSI_CHECK(std::abs(z - h[2]) < 1e-9 * h[2] && std::abs(x - h[0]) < 1e-9 * h[0],
     "a slab 50 times thinner than wide: one sample per spacing along the thin axis (%g; %g) and "
-    "along a wide one (%g; %g)", z, h[2], x, h[0]);
+    "along a wide one (%g; %g)",
+    z, h[2], x, h[0]);
   const double cube[3] = { 0.5, 0.5, 0.5 }, diagonal[3] = { 1, -1, 1 };
   const double d = psi::LODSampleDistance(cube, diagonal);
   PSI_CHECK(std::abs(d - 0.5) < 1e-12, "a cubic lattice: its spacing along a diagonal (%g)", d);

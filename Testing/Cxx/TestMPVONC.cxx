@@ -90,9 +90,8 @@ size_t Violations(const Mesh& m, const std::vector<uint32_t>& order, const doubl
   std::vector<size_t> pos(m.NumTets());
   for (size_t i = 0; i < order.size(); ++i)
     pos[order[i]] = i;
-  auto P = [&](uint32_t id) {
-    return Point3(m.Points4[4 * id], m.Points4[4 * id + 1], m.Points4[4 * id + 2]);
-  };
+  auto P = [&](uint32_t id)
+  { return Point3(m.Points4[4 * id], m.Points4[4 * id + 1], m.Points4[4 * id + 2]); };
   const Point3 E(eye[0], eye[1], eye[2]);
   size_t bad = 0, count = 0;
   for (size_t t = 0; t < m.NumTets(); ++t)
@@ -148,7 +147,8 @@ void TestConvex()
   {
     const Mesh m = Tetrahedralize(9, 8, 7, mode, origin);
     const double center[3] = { origin[0] + 4, origin[1] + 3.5 * 0.75, origin[2] + 3 * 1.25 };
-    size_t worstCentroid = 0, sumCentroid = 0, totalConstraints = 0, cycles = 0, bad = 0, badPerm = 0;
+    size_t worstCentroid = 0, sumCentroid = 0, totalConstraints = 0, cycles = 0, bad = 0,
+           badPerm = 0;
     size_t badNearest = 0;
     double sortTime = 0;
     for (int view = 0; view < 80; ++view)
@@ -165,9 +165,8 @@ void TestConvex()
       }
       std::vector<uint32_t> order;
       const auto t0 = std::chrono::steady_clock::now();
-      const psi::MPVONCResult r =
-        psi::SortMPVONC(m.Points4.data(), m.Tets.data(), m.NumTets(), m.Neighbors.data(), eye,
-          parallel, order);
+      const psi::MPVONCResult r = psi::SortMPVONC(
+        m.Points4.data(), m.Tets.data(), m.NumTets(), m.Neighbors.data(), eye, parallel, order);
       sortTime += Seconds(t0);
       badPerm += !IsPermutation(order, m.NumTets());
       size_t constraints = 0;
@@ -177,7 +176,8 @@ void TestConvex()
       // nearest first (front-to-back compositing): reversed, a back-to-front order as exact
       std::vector<uint32_t> nearest;
       cycles += psi::SortMPVONC(m.Points4.data(), m.Tets.data(), m.NumTets(), m.Neighbors.data(),
-        eye, parallel, nearest, {}, psi::SortDirection::NearestFirst).CyclesBroken;
+        eye, parallel, nearest, {}, psi::SortDirection::NearestFirst)
+                  .CyclesBroken;
       std::reverse(nearest.begin(), nearest.end());
       badPerm += !IsPermutation(nearest, m.NumTets());
       badNearest += Violations(m, nearest, eye, parallel);
@@ -190,15 +190,16 @@ void TestConvex()
     }
     PSI_CHECK(badPerm == 0, "%zu orders are not permutations", badPerm);
     PSI_CHECK(bad == 0, "mode %d: MPVONC violates %zu adjacency constraints", mode, bad);
-    PSI_CHECK(badNearest == 0,
-      "mode %d: nearest first, MPVONC violates %zu constraints", mode, badNearest);
+    PSI_CHECK(
+      badNearest == 0, "mode %d: nearest first, MPVONC violates %zu constraints", mode, badNearest);
     PSI_CHECK(cycles == 0, "mode %d: %zu cycles broken in a convex regular mesh", mode, cycles);
-    PSI_CHECK(totalConstraints > 80 * m.NumTets(), "too few constraints checked: %zu",
-      totalConstraints);
+    PSI_CHECK(
+      totalConstraints > 80 * m.NumTets(), "too few constraints checked: %zu", totalConstraints);
     std::printf("convex box (%s, %zu tets), 40 perspective + 40 parallel views: MPVONC violates "
-                "%zu of %zu constraints (%.2f ms per sort); the centroid sort violates %zu (%.1f%%), at worst %zu in a view\n",
-      mode ? "five per hex" : "conforming", m.NumTets(), bad, totalConstraints,
-      1e3 * sortTime / 80, sumCentroid, 100.0 * sumCentroid / totalConstraints, worstCentroid);
+                "%zu of %zu constraints (%.2f ms per sort); the centroid sort violates %zu "
+                "(%.1f%%), at worst %zu in a view\n",
+      mode ? "five per hex" : "conforming", m.NumTets(), bad, totalConstraints, 1e3 * sortTime / 80,
+      sumCentroid, 100.0 * sumCentroid / totalConstraints, worstCentroid);
   }
 }
 
@@ -225,32 +226,32 @@ void TestDisconnected()
   const View views[4] = { { { 1, 0.1, 0.05 }, true, false }, { { -1, 0.2, 0 }, true, true },
     { { -30, 1, 2 }, false, false }, { { 40, 2, -1 }, false, true } };
   for (const View& v : views)
-  for (psi::SortDirection direction :
-    { psi::SortDirection::FarthestFirst, psi::SortDirection::NearestFirst })
-  {
-    std::vector<uint32_t> order;
-    const psi::MPVONCResult r = psi::SortMPVONC(a.Points4.data(), a.Tets.data(), a.NumTets(),
-      a.Neighbors.data(), v.Eye, v.Parallel, order, {}, direction);
-    if (direction == psi::SortDirection::NearestFirst)
+    for (psi::SortDirection direction :
+      { psi::SortDirection::FarthestFirst, psi::SortDirection::NearestFirst })
     {
-      std::reverse(order.begin(), order.end()); // reversed, the far component must come first
+      std::vector<uint32_t> order;
+      const psi::MPVONCResult r = psi::SortMPVONC(a.Points4.data(), a.Tets.data(), a.NumTets(),
+        a.Neighbors.data(), v.Eye, v.Parallel, order, {}, direction);
+      if (direction == psi::SortDirection::NearestFirst)
+      {
+        std::reverse(order.begin(), order.end()); // reversed, the far component must come first
+      }
+      PSI_CHECK(IsPermutation(order, a.NumTets()), "not a permutation");
+      // Position of the last far-box tetrahedron and the first near-box one.
+      size_t lastFar = 0, firstNear = order.size();
+      for (size_t i = 0; i < order.size(); ++i)
+      {
+        const bool inA = order[i] < na;
+        if (inA == v.AFar)
+          lastFar = i;
+        else
+          firstNear = std::min(firstNear, i);
+      }
+      PSI_CHECK(lastFar < firstNear, "components interleaved: last far at %zu, first near at %zu",
+        lastFar, firstNear);
+      PSI_CHECK(Violations(a, order, v.Eye, v.Parallel) == 0 && r.CyclesBroken == 0,
+        "two boxes: violations or cycles");
     }
-    PSI_CHECK(IsPermutation(order, a.NumTets()), "not a permutation");
-    // Position of the last far-box tetrahedron and the first near-box one.
-    size_t lastFar = 0, firstNear = order.size();
-    for (size_t i = 0; i < order.size(); ++i)
-    {
-      const bool inA = order[i] < na;
-      if (inA == v.AFar)
-        lastFar = i;
-      else
-        firstNear = std::min(firstNear, i);
-    }
-    PSI_CHECK(lastFar < firstNear, "components interleaved: last far at %zu, first near at %zu",
-      lastFar, firstNear);
-    PSI_CHECK(Violations(a, order, v.Eye, v.Parallel) == 0 && r.CyclesBroken == 0,
-      "two boxes: violations or cycles");
-  }
   std::printf("two disjoint boxes, 4 views, both directions: the far component always entirely "
               "first (last, nearest first)\n");
 }
@@ -286,7 +287,8 @@ void TestCycles()
   // face 3 (apex, v1, v2; plane y + z + 3 = 0) has the eye on t0's side: t2 is behind t0.
   // Hence t0 -> t1 -> t2 -> t0: one break needed, violating exactly one constraint.
   Mesh m;
-  auto addTet = [&](float z, float apexDz, float shift) {
+  auto addTet = [&](float z, float apexDz, float shift)
+  {
     const uint32_t base = uint32_t(m.Points4.size() / 4);
     const float p[4][3] = { { shift, 0, z + apexDz }, { shift - 1, -1, z }, { shift + 1, -1, z },
       { shift, 1, z } };
@@ -294,15 +296,16 @@ void TestCycles()
       m.Points4.insert(m.Points4.end(), { q[0], q[1], q[2], 0.f });
     m.Tets.insert(m.Tets.end(), { base, base + 1, base + 2, base + 3 });
   };
-  addTet(-2, -1, 0); // t0: base at z = -2 faces the eye (apex farther)
-  addTet(-3, -1, 5); // t1: base faces the eye
+  addTet(-2, -1, 0);  // t0: base at z = -2 faces the eye (apex farther)
+  addTet(-3, -1, 5);  // t1: base faces the eye
   addTet(-4, -1, -5); // t2
   m.Neighbors.assign(12, -1);
   m.Neighbors[4 * 0 + 0] = 1; // t0 face 0 = base (z = -2), a front face -> t0 behind t1
   m.Neighbors[4 * 1 + 1] = 0;
   m.Neighbors[4 * 1 + 0] = 2; // t1 face 0 = base, a front face -> t1 behind t2
   m.Neighbors[4 * 2 + 1] = 1;
-  m.Neighbors[4 * 0 + 3] = 2; // t0 face 3 = (apex, 1, 2): a back face seen from above -> t2 behind t0
+  m.Neighbors[4 * 0 + 3] =
+    2; // t0 face 3 = (apex, 1, 2): a back face seen from above -> t2 behind t0
   m.Neighbors[4 * 2 + 2] = 0;
   const double eye[3] = { 0, -0.5, 10 };
   std::vector<uint32_t> order;

@@ -40,32 +40,34 @@ void TestKeepsTheFastest()
   first.FrontToBack = true;
   psi::DrawWayOptions all{ true, true, true, true };
   // back to front, the compute projector and the fan each faster: the choice has all three
-  auto cost = [](const psi::DrawWay& w) {
+  auto cost = [](const psi::DrawWay& w)
+  {
     return 1.0 - (w.FrontToBack ? 0 : 0.2) - (w.ComputeProjector ? 0.1 : 0) -
       (w.Silhouette ? 0 : 0.05);
   };
   psi::MeasuredChoice choice;
   const int frames = Measure(choice, first, all, cost);
   const psi::DrawWay best = choice.Next("a", 1000, first, all);
-  PSI_CHECK(!best.FrontToBack && best.ComputeProjector && !best.Silhouette,
-    "kept the fastest: %s", best.Describe().c_str());
+  PSI_CHECK(!best.FrontToBack && best.ComputeProjector && !best.Silhouette, "kept the fastest: %s",
+    best.Describe().c_str());
   // back to front draws no mask: that alternative is skipped
   PSI_CHECK(choice.GetWaysTimed() == 4 && frames == 4 * psi::MeasuredChoice::FramesPerWay,
     "%d ways in %d frames", choice.GetWaysTimed(), frames);
-  PSI_CHECK(choice.Describe() == "chosen by measurement of 4 ways", "%s", choice.Describe().c_str());
+  PSI_CHECK(
+    choice.Describe() == "chosen by measurement of 4 ways", "%s", choice.Describe().c_str());
   // fewer masks tried where front to back stays the faster
-  auto frontFaster = [](const psi::DrawWay& w) {
-    return (w.FrontToBack ? 1.0 : 2.0) - (w.MasksPerFrame == psi::FewerMasksPerFrame ? 0.1 : 0);
-  };
+  auto frontFaster = [](const psi::DrawWay& w)
+  { return (w.FrontToBack ? 1.0 : 2.0) - (w.MasksPerFrame == psi::FewerMasksPerFrame ? 0.1 : 0); };
   psi::MeasuredChoice masks;
   Measure(masks, first, all, frontFaster);
-  PSI_CHECK(masks.GetBest().FrontToBack && masks.GetBest().MasksPerFrame == psi::FewerMasksPerFrame &&
-      masks.GetWaysTimed() == 5,
+  PSI_CHECK(masks.GetBest().FrontToBack &&
+      masks.GetBest().MasksPerFrame == psi::FewerMasksPerFrame && masks.GetWaysTimed() == 5,
     "front to back with fewer masks: %s, %d ways", masks.GetBest().Describe().c_str(),
     masks.GetWaysTimed());
   // the first way the fastest: kept; each way's time is its shortest frame
   int calls = 0;
-  auto noisy = [&](const psi::DrawWay& w) { return (w == first ? 1.0 : 1.5) + (calls++ % 2 ? 0 : 5); };
+  auto noisy = [&](const psi::DrawWay& w)
+  { return (w == first ? 1.0 : 1.5) + (calls++ % 2 ? 0 : 5); };
   psi::MeasuredChoice kept;
   Measure(kept, first, all, noisy);
   PSI_CHECK(kept.GetBest() == first, "the first way kept: %s", kept.GetBest().Describe().c_str());
@@ -108,8 +110,8 @@ void TestMeasuresAgain()
   // a setting forces a way: no measurement, that way
   psi::DrawWay forced = first;
   forced.Silhouette = false;
-  PSI_CHECK(choice.Next("b", 4750, forced, psi::DrawWayOptions()) == forced &&
-      !choice.IsMeasuring(),
+  PSI_CHECK(
+    choice.Next("b", 4750, forced, psi::DrawWayOptions()) == forced && !choice.IsMeasuring(),
     "a forced setting is drawn as set");
 }
 

@@ -27,8 +27,8 @@
 #include <random>
 #include <sstream>
 #include <string>
-#include <vector>
 #include <unistd.h>
+#include <vector>
 
 namespace
 {
@@ -186,7 +186,9 @@ void TestValid(Fixture& f)
     "OFF\n5 2\n" + body + "\n",
     "off 5 2\n" + body,
     "\n\n  \n# c\nOFF\n\n# counts follow\n  5\t2  \n\n" + body + "\n\n# end\n",
-    "\xEF\xBB\xBF" "5 2\n" + body + "\n",
+    "\xEF\xBB\xBF"
+    "5 2\n" +
+      body + "\n",
     "5 2\r\n0 0 0 0.5\r\n1 0 0 +1.5\r\n0 1 0 2.5\r\n0 0 1 3.5\r\n1 1 1 -4.25e1\r\n0 1 2 3\r\n"
     "1\t2\t3\t4\r\n",
     "5 2\n0 0 0 0.5\n1 0 0 1.5\n# a comment between vertices\n0 1 0 2.5\n0 0 1 3.5\n"
@@ -197,8 +199,8 @@ void TestValid(Fixture& f)
   {
     const std::string what = "lenient form " + std::to_string(k++);
     CheckValidMesh(f.ReadString(v), what.c_str());
-    PSI_CHECK(f.Events->Errors == 0, "%s: no error (%s)", what.c_str(),
-      f.Events->LastError.c_str());
+    PSI_CHECK(
+      f.Events->Errors == 0, "%s: no error (%s)", what.c_str(), f.Events->LastError.c_str());
   }
 
   // NaN/Inf coordinates and scalars are accepted, counted and reported.
@@ -347,10 +349,11 @@ void TestCompact(Fixture& f, const std::string& dir)
     int k = 0;
     for (const std::string& text : forms)
     {
-      const std::string what =
-        std::string(single ? "compact tetrahedron" : "compact cube") + ", form " + std::to_string(k++);
+      const std::string what = std::string(single ? "compact tetrahedron" : "compact cube") +
+        ", form " + std::to_string(k++);
       CheckMesh(f.ReadString(text), m, (what + " (memory)").c_str());
-      PSI_CHECK(f.Events->Errors == 0, "%s: no error (%s)", what.c_str(), f.Events->LastError.c_str());
+      PSI_CHECK(
+        f.Events->Errors == 0, "%s: no error (%s)", what.c_str(), f.Events->LastError.c_str());
       std::ofstream(path, std::ios::binary) << text;
       CheckMesh(f.ReadFile(path), m, (what + " (file)").c_str());
       PSI_CHECK(f.Events->Errors == 0 && f.Reader->CanReadFile(path.c_str()) == 1,
@@ -383,8 +386,10 @@ void TestMalformed(Fixture& f)
     { "only comments and blank lines", "# nothing\n\n   \n# here\n", "empty" },
     { "OFF keyword only", "OFF\n", "OFF" },
     { "one count", "5\n" + v5, "nverts ntets" },
-    { "polygonal OFF surface", "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n"
-                               "3 0 2 3\n3 1 2 3\n", "polygonal OFF surface" },
+    { "polygonal OFF surface",
+      "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n"
+      "3 0 2 3\n3 1 2 3\n",
+      "polygonal OFF surface" },
     { "non-integer count", "5 x\n" + v5 + "0 1 2 3\n", "not a non-negative integer" },
     { "negative count", "-5 1\n" + v5 + "0 1 2 3\n", "not a non-negative integer" },
     { "fractional count", "5.0 1\n" + v5 + "0 1 2 3\n", "not a non-negative integer" },
@@ -395,8 +400,10 @@ void TestMalformed(Fixture& f)
       "bytes follow the header" },
     { "vertex count larger than the file", "1000 1\n" + v5 + "0 1 2 3\n",
       "bytes follow the header" },
-    { "file too short for its counts", "5 2\n0 0 0 0\n1 0 0 1\n0 1 0 2\n0 0 1 3\n1 1 1 4\n"
-                                        "0 1 2 3\n", "bytes follow the header" },
+    { "file too short for its counts",
+      "5 2\n0 0 0 0\n1 0 0 1\n0 1 0 2\n0 0 1 3\n1 1 1 4\n"
+      "0 1 2 3\n",
+      "bytes follow the header" },
     { "fewer vertices than declared", "7 1\n" + v5 + "0 1 2 3\n", "6 of the 7 vertices" },
     { "truncated in the tetrahedra", "5 1\n" + v5, "0 of the 1 tetrahedra" },
     { "truncated after a tetrahedron", "5 2\n" + v5 + "0 1 2 3\n", "1 of the 2 tetrahedra" },
@@ -422,7 +429,11 @@ void TestMalformed(Fixture& f)
       "found more" },
     { "NUL bytes", "5 1\n" + v4 + std::string("1.0 1.0\0 1.0 4.0\n", 17) + "0 1 2 3\n",
       "is not a number" },
-    { "binary junk", std::string("\x7f" "ELF\x02\x01\x01\0\0\0\0\xff\xfe", 14), "'\\x7fELF" },
+    { "binary junk",
+      std::string("\x7f"
+                  "ELF\x02\x01\x01\0\0\0\0\xff\xfe",
+        14),
+      "'\\x7fELF" },
   };
   for (const BadCase& c : cases)
   {
@@ -485,10 +496,9 @@ void TestFiles(Fixture& f, const std::string& dir)
     vtkUnstructuredGrid* ug = f.ReadFile(c.Path);
     std::printf("%-52s -> %s\n", c.Name, f.Reader->GetLastError());
     PSI_CHECK(f.Events->Errors == 1 && f.Events->LastError.find(c.Expect) != std::string::npos,
-      "%s: error naming the problem ('%s' in '%s')", c.Name, c.Expect,
-      f.Events->LastError.c_str());
-    PSI_CHECK(ug->GetNumberOfPoints() == 0 && ug->GetNumberOfCells() == 0, "%s: empty output",
-      c.Name);
+      "%s: error naming the problem ('%s' in '%s')", c.Name, c.Expect, f.Events->LastError.c_str());
+    PSI_CHECK(
+      ug->GetNumberOfPoints() == 0 && ug->GetNumberOfCells() == 0, "%s: empty output", c.Name);
   }
   f.Events->Reset();
   f.Reader->ReadFromInputStringOff();

@@ -43,8 +43,8 @@ void InverseProjection(const CameraCase& k, double dcvc[16])
 }
 
 // The view-space point of window position (x, y) at device depth z.
-void Unproject(const double dcvc[16], const CameraCase& k, double x, double y, double z,
-  double p[3])
+void Unproject(
+  const double dcvc[16], const CameraCase& k, double x, double y, double z, double p[3])
 {
   const double ndc[4] = { 2 * x / k.Width - 1, 2 * y / k.Height - 1, z, 1 };
   double h[4];
@@ -94,19 +94,19 @@ void TestCamera(const CameraCase& k)
     // With VTK's frusta (no shear), t is the view depth.
     if (k.Shear[0] == 0 && k.Shear[1] == 0)
     {
-      worstDepth = std::max({ worstDepth, std::abs(tn + pn[2]) / -pn[2],
-        std::abs(tf + pf[2]) / -pf[2] });
+      worstDepth =
+        std::max({ worstDepth, std::abs(tn + pn[2]) / -pn[2], std::abs(tf + pf[2]) / -pf[2] });
     }
     if (!k.Parallel && k.Shear[0] == 0 && k.Shear[1] == 0)
     {
-      PSI_CHECK(o[0] == 0 && o[1] == 0 && o[2] == 0, "%s: perspective rays start at the eye",
-        k.Name);
+      PSI_CHECK(
+        o[0] == 0 && o[1] == 0 && o[2] == 0, "%s: perspective rays start at the eye", k.Name);
     }
   }
   if (k.Parallel)
   {
-    PSI_CHECK(rays.Step[1][0] == 0 && rays.Step[2][2] == 0, "%s: parallel rays share one step",
-      k.Name);
+    PSI_CHECK(
+      rays.Step[1][0] == 0 && rays.Step[2][2] == 0, "%s: parallel rays share one step", k.Name);
   }
   else
   {

@@ -17,10 +17,10 @@
 //
 // Usage: TestPreIntegrationGraded [output-dir]   (PNG images of GPU, reference and 8x difference)
 #include "PsiIntegrationMethods.h"
-#include "PsiPreIntegrationTable.h"
-#include "PsiReferenceIntegrals.h"
 #include "PsiPartialPreIntegrationTable.h"
+#include "PsiPreIntegrationTable.h"
 #include "PsiRampTable.h"
+#include "PsiReferenceIntegrals.h"
 #include "PsiTestCheck.h"
 #include "PsiTestImageCompare.h"
 #include "PsiTestTransferFunction.h"
@@ -46,8 +46,8 @@ void TestLengthAxis()
   PSI_CHECK(a.Index(0) == 0 && a.Length(0) == 0, "l = 0 is sample 0 exactly");
   PSI_CHECK(a.Index(-1) == 0 && a.Index(std::numeric_limits<double>::quiet_NaN()) == 0,
     "negative and NaN lengths give sample 0");
-  PSI_CHECK(std::abs(a.MinLength - 5.2e-4) < 1e-12, "l_min %g: a tenth of the shortest edge",
-    a.MinLength);
+  PSI_CHECK(
+    std::abs(a.MinLength - 5.2e-4) < 1e-12, "l_min %g: a tenth of the shortest edge", a.MinLength);
   PSI_CHECK(a.Index(1e9) == a.Samples - 1 && a.Length(a.Samples - 1) == a.MaxLength,
     "longer than the longest edge clamps to the last sample");
   double worst = 0, last = -1;
@@ -64,7 +64,8 @@ void TestLengthAxis()
   PSI_CHECK(worst < 1e-9, "Index(Length(k)) = k within %g", worst);
   PSI_CHECK(monotone, "Index is monotone in l");
   // Geometric spacing: the same ratio between neighbouring samples.
-  const double r1 = a.Length(2) / a.Length(1), r2 = a.Length(a.Samples - 1) / a.Length(a.Samples - 2);
+  const double r1 = a.Length(2) / a.Length(1),
+               r2 = a.Length(a.Samples - 1) / a.Length(a.Samples - 2);
   PSI_CHECK(std::abs(r1 - r2) < 1e-9 * r1, "geometric samples: ratio %g vs %g", r1, r2);
   // The shader form of the same function.
   float u[4];
@@ -201,8 +202,8 @@ void TestGradedSlabImage(const std::string& outDir)
   mapper->SetIntegrationMethod(static_cast<int>(psi::Method::FullPreIntegration));
   const psitest::Result full = psitest::Compare("graded_full", win, ren, vol, ref, nullptr, outDir);
   PSI_CHECK(partial.Covered > W * H / 3, "graded slab: image nearly empty (%d)", partial.Covered);
-  PSI_CHECK(partial.Mean < 0.004, "graded slab, partial pre-integration: mean error %g",
-    partial.Mean);
+  PSI_CHECK(
+    partial.Mean < 0.004, "graded slab, partial pre-integration: mean error %g", partial.Mean);
   PSI_CHECK(full.Mean < 0.003 && full.Max < 0.05,
     "graded slab, full pre-integration: mean error %g, max %g", full.Mean, full.Max);
 }

@@ -132,8 +132,8 @@ struct Fixture
 void CheckTwistedMesh(Fixture& f)
 {
   const vtkIdType n = f.Grid->GetNumberOfCells();
-  std::printf("%lld tetrahedra, %d turned over by the twist\n", static_cast<long long>(n),
-    f.TurnedOver);
+  std::printf(
+    "%lld tetrahedra, %d turned over by the twist\n", static_cast<long long>(n), f.TurnedOver);
   PSI_CHECK(n > 2000 && f.TurnedOver > 0 && f.TurnedOver < n / 20,
     "twisted Delaunay mesh: %lld tetrahedra, %d turned over", static_cast<long long>(n),
     f.TurnedOver);
@@ -151,30 +151,31 @@ void CheckViews(Fixture& f)
   long long allBreaks = 0;
   int v = 0;
   for (const auto& eye : eyes)
-  for (const bool frontToBack : { false, true })
-  {
-    psitest::LookAtCentre(f.View.Renderer, eye[0], eye[1], eye[2]);
-    f.Mapper->SetEarlyRayTermination(
-      frontToBack ? psi::EarlyRayTerminations::On : psi::EarlyRayTerminations::Off);
-    const std::string name =
-      "cyclic_view" + std::to_string(v / 2) + (frontToBack ? "_front_to_back" : "");
-    ++v;
-    const psitest::Result r = psitest::Compare(
-      name, f.View.Window, f.View.Renderer, f.View.Volume, f.Ref, nullptr, f.OutDir);
-    const long long breaks = f.Mapper->GetLastSortCycles();
-    allBreaks += breaks;
-    std::printf("%-28s %lld cycle breaks\n", name.c_str(), breaks);
-    PSI_CHECK(f.Mapper->GetLastUsedEarlyRayTermination() == frontToBack, "%s: direction",
-      name.c_str());
-    // front to back each break emits the nearest remaining tetrahedron instead: other cells
-    // are misordered, as few (the mean error is the same), one pixel of view 0 reaching 0.080
-    const double maxBound = frontToBack ? 0.1 : 0.08;
-    PSI_CHECK(r.Mean < 0.004 && r.Max < maxBound, "%s: mean error %g, max %g", name.c_str(),
-      r.Mean, r.Max);
-    PSI_CHECK(r.Covered > W * H / 4, "%s: image nearly empty (%d pixels)", name.c_str(), r.Covered);
-    PSI_CHECK(breaks <= n / 50, "%s: %lld cycle breaks of %lld tetrahedra", name.c_str(), breaks,
-      static_cast<long long>(n));
-  }
+    for (const bool frontToBack : { false, true })
+    {
+      psitest::LookAtCentre(f.View.Renderer, eye[0], eye[1], eye[2]);
+      f.Mapper->SetEarlyRayTermination(
+        frontToBack ? psi::EarlyRayTerminations::On : psi::EarlyRayTerminations::Off);
+      const std::string name =
+        "cyclic_view" + std::to_string(v / 2) + (frontToBack ? "_front_to_back" : "");
+      ++v;
+      const psitest::Result r = psitest::Compare(
+        name, f.View.Window, f.View.Renderer, f.View.Volume, f.Ref, nullptr, f.OutDir);
+      const long long breaks = f.Mapper->GetLastSortCycles();
+      allBreaks += breaks;
+      std::printf("%-28s %lld cycle breaks\n", name.c_str(), breaks);
+      PSI_CHECK(
+        f.Mapper->GetLastUsedEarlyRayTermination() == frontToBack, "%s: direction", name.c_str());
+      // front to back each break emits the nearest remaining tetrahedron instead: other cells
+      // are misordered, as few (the mean error is the same), one pixel of view 0 reaching 0.080
+      const double maxBound = frontToBack ? 0.1 : 0.08;
+      PSI_CHECK(r.Mean < 0.004 && r.Max < maxBound, "%s: mean error %g, max %g", name.c_str(),
+        r.Mean, r.Max);
+      PSI_CHECK(
+        r.Covered > W * H / 4, "%s: image nearly empty (%d pixels)", name.c_str(), r.Covered);
+      PSI_CHECK(breaks <= n / 50, "%s: %lld cycle breaks of %lld tetrahedra", name.c_str(), breaks,
+        static_cast<long long>(n));
+    }
   PSI_CHECK(allBreaks > 0, "the twisted mesh has cycles (%lld breaks in all)", allBreaks);
 }
 } // namespace
@@ -182,7 +183,8 @@ void CheckViews(Fixture& f)
 int main(int argc, char* argv[])
 {
   Fixture f(psitest::ParseArguments(argc, argv));
-  PSI_CHECK(f.Mapper->GetSortMethod() == static_cast<int>(psi::Sorts::MPVONC), "MPVONC is the default sort");
+  PSI_CHECK(f.Mapper->GetSortMethod() == static_cast<int>(psi::Sorts::MPVONC),
+    "MPVONC is the default sort");
   CheckTwistedMesh(f);
   CheckViews(f);
   psitest::CheckRequestedProjector(f.Mapper->GetLastUsedProjector());

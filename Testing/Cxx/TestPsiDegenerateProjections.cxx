@@ -17,9 +17,9 @@
 #include "PsiProjectionClasses.h"
 #include "PsiReferenceRaycaster.h"
 #include "PsiTestCheck.h"
+#include "PsiTestImageCompare.h"
 #include "PsiTestMeshes.h"
 #include "PsiTestTransferFunction.h"
-#include "PsiTestImageCompare.h"
 #include "PsiTestView.h"
 #include "vtkPsiVolumeMapper.h"
 
@@ -166,8 +166,8 @@ std::vector<int> MakeDegenerateTiles(vtkUnstructuredGrid* grid)
     for (int m = 0; m < 4; ++m)
     {
       const int a = (m + 1) % 4, b = (m + 2) % 4, c3 = (m + 3) % 4;
-      area = std::max(area,
-        std::abs((x[b] - x[a]) * (y[c3] - y[a]) - (y[b] - y[a]) * (x[c3] - x[a])));
+      area =
+        std::max(area, std::abs((x[b] - x[a]) * (y[c3] - y[a]) - (y[b] - y[a]) * (x[c3] - x[a])));
     }
     if ((cls == 3 || cls == 4) && area > best[idx])
     {
@@ -268,7 +268,8 @@ int main(int argc, char* argv[])
   vol->SetProperty(tf.Property);
   ren->AddVolume(vol);
   vtkCamera* cam = ren->GetActiveCamera();
-  auto look = [&](double eyeX, double eyeY, double eyeZ, bool parallel) {
+  auto look = [&](double eyeX, double eyeY, double eyeZ, bool parallel)
+  {
     cam->SetFocalPoint(eyeX, eyeY, 0);
     cam->SetPosition(eyeX, eyeY, eyeZ);
     cam->SetViewUp(0, 1, 0);
@@ -317,8 +318,10 @@ int main(int argc, char* argv[])
     look(0, 0, 20, false);
     const Errors e = Compare("perspective_single", win, ren, single, color, opacity, unit, outDir);
     PSI_CHECK(e.Covered > W * H / 20, "single tetrahedra: image nearly empty (%d)", e.Covered);
-    PSI_CHECK(e.Bad <= 12 && e.Mean < 0.003, "single tetrahedra in perspective: %d pixels off, "
-      "mean %g", e.Bad, e.Mean);
+    PSI_CHECK(e.Bad <= 12 && e.Mean < 0.003,
+      "single tetrahedra in perspective: %d pixels off, "
+      "mean %g",
+      e.Bad, e.Mean);
   }
 
   // 3. Tetrahedralized grids seen along an axis, parallel and with the eye on the grid's centre
@@ -337,8 +340,8 @@ int main(int argc, char* argv[])
         std::string(kuhn ? "kuhn" : "five") + (parallel ? "_parallel" : "_perspective");
       const Errors e = Compare(name, win, ren, grid, color, opacity, unit, outDir);
       PSI_CHECK(e.Covered > W * H / 4, "%s: image nearly empty (%d)", name.c_str(), e.Covered);
-      PSI_CHECK(e.Bad <= W * H / 500 && e.Mean < 0.003, "%s: %d pixels off, mean %g",
-        name.c_str(), e.Bad, e.Mean);
+      PSI_CHECK(e.Bad <= W * H / 500 && e.Mean < 0.003, "%s: %d pixels off, mean %g", name.c_str(),
+        e.Bad, e.Mean);
     }
   }
 

@@ -108,7 +108,8 @@ void CheckStorageBlocks()
 void CheckTextureBuffers()
 {
   Scene s;
-  const std::vector<double> background = [&] {
+  const std::vector<double> background = [&]
+  {
     s.View.Volume->VisibilityOff();
     std::vector<double> img = s.Draw();
     s.View.Volume->VisibilityOn();
@@ -121,10 +122,10 @@ void CheckTextureBuffers()
               "%.6f\n",
     static_cast<long long>(s.Grid->GetNumberOfPoints() - 1), s.Errors->Count,
     MeanDifference(img, background));
-  PSI_CHECK(s.Errors->Count == 1 &&
-      s.Errors->Last.find("GL_MAX_TEXTURE_BUFFER_SIZE") != std::string::npos,
-    "more points than a texture buffer holds: one error naming the limit (%d: %s)",
-    s.Errors->Count, s.Errors->Last.c_str());
+  PSI_CHECK(
+    s.Errors->Count == 1 && s.Errors->Last.find("GL_MAX_TEXTURE_BUFFER_SIZE") != std::string::npos,
+    "more points than a texture buffer holds: one error naming the limit (%d: %s)", s.Errors->Count,
+    s.Errors->Last.c_str());
   PSI_CHECK(MeanDifference(img, background) < 1e-6 && s.Mapper->GetNumberOfTetrahedra() == 0,
     "nothing drawn, no garbage");
 }

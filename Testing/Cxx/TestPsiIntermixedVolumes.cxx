@@ -24,10 +24,10 @@
 #include "vtkCamera.h"
 #include "vtkExtractCells.h"
 #include "vtkIdList.h"
+#include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
-#include "vtkNew.h"
 #include "vtkTransform.h"
 #include "vtkTransformFilter.h"
 #include "vtkUnstructuredGrid.h"
@@ -41,7 +41,8 @@
 namespace
 {
 const int W = 160, H = 160;
-const double Offset[3] = { 3, 2, 12 }; // the second Wavelet's place: apart in z, overlapping in x, y
+const double Offset[3] = { 3, 2,
+  12 }; // the second Wavelet's place: apart in z, overlapping in x, y
 
 struct Scene
 {
@@ -76,8 +77,9 @@ void SetView(vtkRenderer* ren, int view)
 {
   const double c[3] = { 2, 1, 6 };
   const double dir[3][3] = { { 0.15, 0.1, 1 }, { -0.1, 0.2, -1 }, { 1, 0.4, 0.3 } };
-  const double d = 48 / std::sqrt(dir[view][0] * dir[view][0] + dir[view][1] * dir[view][1] +
-                         dir[view][2] * dir[view][2]);
+  const double d = 48 /
+    std::sqrt(
+      dir[view][0] * dir[view][0] + dir[view][1] * dir[view][1] + dir[view][2] * dir[view][2]);
   vtkCamera* cam = ren->GetActiveCamera();
   cam->SetFocalPoint(c[0], c[1], c[2]);
   cam->SetPosition(c[0] + d * dir[view][0], c[1] + d * dir[view][1], c[2] + d * dir[view][2]);
@@ -266,8 +268,8 @@ void TestOwnTransferFunctions(Fixture& f)
 void TestIsosurfaces(Fixture& f)
 {
   // --- isosurfaces: each volume's, in its own slot; the union's image with the same isovalue
-  for (vtkPsiVolumeMapper* m : { f.UnionMapper.GetPointer(), f.AB->MapperA.GetPointer(),
-         f.AB->MapperB.GetPointer() })
+  for (vtkPsiVolumeMapper* m :
+    { f.UnionMapper.GetPointer(), f.AB->MapperA.GetPointer(), f.AB->MapperB.GetPointer() })
   {
     m->SetIsosurfaceValues({ 150.0 });
     m->SetIsosurfaceOpacity(0.6);
@@ -282,7 +284,8 @@ void TestIsosurfaces(Fixture& f)
       view, 255 * psitest::LargestDifference(img, ref));
     if (!f.Out.empty())
     {
-      psitest::WritePng(f.Out + "/intermixed_iso_union_" + std::to_string(view) + ".png", ref, W, H);
+      psitest::WritePng(
+        f.Out + "/intermixed_iso_union_" + std::to_string(view) + ".png", ref, W, H);
       psitest::WritePng(f.Out + "/intermixed_iso_ab_" + std::to_string(view) + ".png", img, W, H);
     }
     PSI_CHECK(psitest::LargestDifference(img, ref) <= 2.0 / 255 + 1e-9 &&
@@ -290,8 +293,8 @@ void TestIsosurfaces(Fixture& f)
       "view %d: two volumes with an isosurface each are their union with it (largest %.1f/255)",
       view, 255 * psitest::LargestDifference(img, ref));
   }
-  for (vtkPsiVolumeMapper* m : { f.UnionMapper.GetPointer(), f.AB->MapperA.GetPointer(),
-         f.AB->MapperB.GetPointer() })
+  for (vtkPsiVolumeMapper* m :
+    { f.UnionMapper.GetPointer(), f.AB->MapperA.GetPointer(), f.AB->MapperB.GetPointer() })
   {
     m->SetIsosurfaceValues({});
   }
@@ -314,8 +317,8 @@ void TestInterface(Fixture& f)
   upperVolume->SetMapper(upperMapper);
   upperVolume->SetProperty(f.TF.Property);
   split.Renderer->AddVolume(upperVolume);
-  for (vtkPsiVolumeMapper* m : { wholeMapper.GetPointer(), lowerMapper.GetPointer(),
-         upperMapper.GetPointer() })
+  for (vtkPsiVolumeMapper* m :
+    { wholeMapper.GetPointer(), lowerMapper.GetPointer(), upperMapper.GetPointer() })
   {
     psitest::ApplyRequested(m);
   }
@@ -327,11 +330,13 @@ void TestInterface(Fixture& f)
     SetView(split.Renderer, view);
     const std::vector<double> b = psitest::GrabRGB(split.Window);
     std::printf("view %d: a mesh split into two volumes at an interface against the whole mesh: "
-                "largest %.1f/255\n", view, 255 * psitest::LargestDifference(a, b));
+                "largest %.1f/255\n",
+      view, 255 * psitest::LargestDifference(a, b));
     PSI_CHECK(lower->GetNumberOfCells() > 0 && upper->GetNumberOfCells() > 0 &&
         psitest::LargestDifference(a, b) <= 1.0 / 255 + 1e-9,
       "view %d: a mesh split into two volumes at an interface draws as the whole mesh (largest "
-      "%.1f/255)", view, 255 * psitest::LargestDifference(a, b));
+      "%.1f/255)",
+      view, 255 * psitest::LargestDifference(a, b));
   }
 }
 
@@ -347,7 +352,8 @@ void TestInsideAndOpaque(Fixture& f)
     const std::vector<double> ref = psitest::GrabRGB(f.One->Window);
     const std::vector<double> img = psitest::GrabRGB(f.AB->Window);
     std::printf("camera inside the first volume, against the union: largest %.1f/255 (near-plane "
-                "path %d)\n", 255 * psitest::LargestDifference(img, ref),
+                "path %d)\n",
+      255 * psitest::LargestDifference(img, ref),
       static_cast<int>(f.AB->MapperA->GetLastUsedNearPlaneClipping()));
     PSI_CHECK(psitest::LargestDifference(img, ref) <= 1.0 / 255 + 1e-9 &&
         f.AB->MapperA->GetLastUsedNearPlaneClipping() && Covered(ref) > W * H / 4,
@@ -381,10 +387,12 @@ void TestTranslucent(Fixture& f)
     const std::vector<double> ref = Draw(f.One->Window, f.One->Renderer, view);
     const std::vector<double> img = Draw(f.AB->Window, f.AB->Renderer, view);
     std::printf("view %d: with a translucent plane through both (depth peeling) against their "
-                "union: largest %.1f/255\n", view, 255 * psitest::LargestDifference(img, ref));
+                "union: largest %.1f/255\n",
+      view, 255 * psitest::LargestDifference(img, ref));
     PSI_CHECK(psitest::LargestDifference(img, ref) <= 1.0 / 255 + 1e-9,
       "view %d: a translucent plane through two volumes within depth peeling: the union's image "
-      "(largest %.1f/255)", view, 255 * psitest::LargestDifference(img, ref));
+      "(largest %.1f/255)",
+      view, 255 * psitest::LargestDifference(img, ref));
     if (!f.Out.empty())
     {
       psitest::WritePng(f.Out + "/intermixed_peel_" + std::to_string(view) + ".png", img, W, H);
@@ -411,8 +419,8 @@ void TestAdaptive(Fixture& f)
   vtkNew<vtkPsiVolumeMapper> unionMapper;
   unionMapper->SetInputData(f.United);
   psitest::VolumeView one(W, H, unionMapper, spike.Property);
-  for (vtkPsiVolumeMapper* m : { unionMapper.GetPointer(), two.MapperA.GetPointer(),
-         two.MapperB.GetPointer() })
+  for (vtkPsiVolumeMapper* m :
+    { unionMapper.GetPointer(), two.MapperA.GetPointer(), two.MapperB.GetPointer() })
   {
     psitest::ApplyRequested(m);
     m->SetTransferFunctionSamples(64);

@@ -55,7 +55,8 @@ double BoundMean(double cell)
 // A smooth field of world position, so that every level meshes the same function.
 double Field(const double p[3])
 {
-  return 160 + 100 * std::sin(0.35 * p[0] + 0.2) * std::cos(0.3 * p[1]) + 40 * std::cos(0.25 * p[2]);
+  return 160 + 100 * std::sin(0.35 * p[0] + 0.2) * std::cos(0.3 * p[1]) +
+    40 * std::cos(0.25 * p[2]);
 }
 
 // The field at the points of `data`, as its point scalars.
@@ -119,9 +120,8 @@ psi::ReferenceScene PieceOrderScene(const psi::ReferenceScene& a, const psi::Ref
     both.Breakpoints.push_back(v + shift);
   }
   const auto fa = a.Transfer, fb = b.Transfer;
-  both.Transfer = [fa, fb, shift](double v, double out[4]) {
-    v < shift / 2 ? fa(v, out) : fb(v - shift, out);
-  };
+  both.Transfer = [fa, fb, shift](double v, double out[4])
+  { v < shift / 2 ? fa(v, out) : fb(v - shift, out); };
   return both;
 }
 
@@ -191,14 +191,15 @@ Level MeasureLevel(double cell, const std::string& out)
     level.Alone.Max = std::max(level.Alone.Max, e.Max);
     level.Alone.Mean = std::max(level.Alone.Mean, e.Mean);
   }
-  std::printf("cells of %.2f (%lld tetrahedra each): intermixed against two media: largest "
-              "%.1f/255, mean %.3f/255; each alone against its reference: largest %.1f/255, mean "
-              "%.3f/255; cells composited whole in exact arithmetic: largest %.1f/255, mean %.3f/255\n",
+  std::printf(
+    "cells of %.2f (%lld tetrahedra each): intermixed against two media: largest "
+    "%.1f/255, mean %.3f/255; each alone against its reference: largest %.1f/255, mean "
+    "%.3f/255; cells composited whole in exact arithmetic: largest %.1f/255, mean %.3f/255\n",
     cell, static_cast<long long>(grid->GetNumberOfCells()), 255 * level.Mixed.Max,
     255 * level.Mixed.Mean, 255 * level.Alone.Max, 255 * level.Alone.Mean, 255 * level.Order.Max,
     255 * level.Order.Mean);
-  std::printf("  %.1f s\n",
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  std::printf(
+    "  %.1f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return level;
 }
 // Slabs z0..z0+0.5 of [-6, 6]^2 (one cell thick in z), one per z0, as one mesh with the field.
@@ -257,15 +258,15 @@ void TestInterleaved(const std::string& out)
       cam->SetViewAngle(30);
       view.Renderer->ResetCameraClippingRange();
       const std::vector<double> gpu = psitest::GrabRGB(view.Window);
-      const std::vector<double> ref = psi::RenderReferenceMedia(
-        { &sa, &sb }, psitest::ReferenceCameraOf(view.Renderer, W, H));
+      const std::vector<double> ref =
+        psi::RenderReferenceMedia({ &sa, &sb }, psitest::ReferenceCameraOf(view.Renderer, W, H));
       const psitest::Difference e = psitest::DifferenceFrom(gpu, ref);
       std::printf("interleaved in depth, view %d, %s: largest %.1f/255, mean %.3f/255\n", v,
         sort == psi::Sorts::MPVONC ? "MPVONC" : "centroid", 255 * e.Max, 255 * e.Mean);
       PSI_CHECK(e.Max <= 6.0 / 255 && e.Mean <= 0.5 / 255,
         "interleaved in depth, view %d, sort %d: the exact image within the renderer's own error "
-        "(largest %.1f/255 <= 6, mean %.3f/255 <= 0.5)", v, static_cast<int>(sort),
-        255 * e.Max, 255 * e.Mean);
+        "(largest %.1f/255 <= 6, mean %.3f/255 <= 0.5)",
+        v, static_cast<int>(sort), 255 * e.Max, 255 * e.Mean);
       if (!out.empty() && sort == psi::Sorts::MPVONC)
       {
         psitest::WritePng(out + "/interleaved_" + std::to_string(v) + ".png", gpu, W, H);
@@ -294,8 +295,8 @@ int main(int argc, char* argv[])
       "cells of %.2f: two interpenetrating volumes drawn intermixed within the renderer's own "
       "error plus that of cells composited whole (largest %.1f/255 <= %.1f + %.1f + 1, mean "
       "%.3f/255 <= %.3f + %.3f + 0.1)",
-      cells[k], 255 * l.Mixed.Max, 255 * l.Alone.Max, 255 * l.Order.Max,
-      255 * l.Mixed.Mean, 255 * l.Alone.Mean, 255 * l.Order.Mean);
+      cells[k], 255 * l.Mixed.Max, 255 * l.Alone.Max, 255 * l.Order.Max, 255 * l.Mixed.Mean,
+      255 * l.Alone.Mean, 255 * l.Order.Mean);
   }
   for (int k = 1; k < 3; ++k)
   {

@@ -146,8 +146,8 @@ void CheckVariantsDrawThePlainVolume(Scene& s)
           const std::string defs = mapper->GetLastFeatureDefines();
           const psitest::Difference d = psitest::DifferenceFrom(img, plain);
           ++variants;
-          const bool hasIso = defs.find(iso == 1 ? "PSI_ISO_COUNT 1\n" : "PSI_ISO_COUNT 3\n") !=
-            std::string::npos;
+          const bool hasIso =
+            defs.find(iso == 1 ? "PSI_ISO_COUNT 1\n" : "PSI_ISO_COUNT 3\n") != std::string::npos;
           PSI_CHECK((iso == 0) == (defs.find("PSI_ISO_COUNT") == std::string::npos) &&
               (iso == 0 || hasIso) &&
               (adaptive == 1) == (defs.find("PSI_ADAPTIVE") != std::string::npos),
@@ -168,8 +168,8 @@ void CheckVariantsDrawThePlainVolume(Scene& s)
     PSI_CHECK((view == 3) == mapper->GetLastUsedOpaqueClipping(), "view %d opaque clip", view);
     s.View.Renderer->RemoveActor(s.Plane);
   }
-  std::printf("%d program variants rendered the plain image where they had nothing to add\n",
-    variants);
+  std::printf(
+    "%d program variants rendered the plain image where they had nothing to add\n", variants);
   mapper->SetIntegrationMethod(static_cast<int>(psi::Method::PartialPreIntegration));
   Outside(s);
 }
@@ -223,8 +223,8 @@ void CheckAdaptiveSamplingCatchesASpike(Scene& s)
     dOn.Mean, dOn.Max);
   PSI_CHECK(dOff.Mean > 4 * dOn.Mean, "without adaptive sampling the spike is missed: %g vs %g",
     dOff.Mean, dOn.Mean);
-  PSI_CHECK(std::abs(sOn / sRef - 1) < 0.05 && sOff < 0.9 * sRef, "spike energy: on %g off %g ref %g", sOn,
-    sOff, sRef);
+  PSI_CHECK(std::abs(sOn / sRef - 1) < 0.05 && sOff < 0.9 * sRef,
+    "spike energy: on %g off %g ref %g", sOn, sOff, sRef);
   PSI_CHECK(dAuto.Max <= 1.5 / 255, "Auto draws what On draws (%g)", dAuto.Max);
   if (!s.OutDir.empty())
   {
@@ -288,8 +288,8 @@ void CheckIsosurfaceOcclusion(Scene& s)
     gVol, gOpaque, gHalf, red);
   PSI_CHECK(gVol > 50 && red > W * H / 10, "scene not empty (%g, %d)", gVol, red);
   PSI_CHECK(gOpaque < 1e-2 * gVol, "an opaque isosurface hides the volume behind it (%g)", gOpaque);
-  PSI_CHECK(gHalf > 0.3 * gVol && gHalf < 0.7 * gVol, "a translucent one lets half through (%g)",
-    gHalf);
+  PSI_CHECK(
+    gHalf > 0.3 * gVol && gHalf < 0.7 * gVol, "a translucent one lets half through (%g)", gHalf);
   if (!s.OutDir.empty())
   {
     psitest::WritePng(s.OutDir + "/occlusion_volume.png", volumeOnly, W, H);
@@ -311,8 +311,8 @@ void CheckIsovaluesAtAVertex(Scene& s)
   vtkDataArray* sc = s.Grid->GetPointData()->GetScalars();
   const double v = sc->GetComponent(sc->GetNumberOfTuples() / 2 + 3, 0);
   for (const std::vector<double>& values :
-    { std::vector<double>{ v }, std::vector<double>{ v - 0.02 * span, v, v + 0.01 * span,
-                                   v + 0.03 * span, v + 0.2 * span } })
+    { std::vector<double>{ v },
+      std::vector<double>{ v - 0.02 * span, v, v + 0.01 * span, v + 0.03 * span, v + 0.2 * span } })
   {
     mapper->SetIsosurfaceValues(values);
     for (int view = 0; view < 3; ++view)
@@ -356,12 +356,12 @@ void CheckIsosurfaceMethodsAgreeInView(Scene& s, const IsoCase& k, int index, in
   SetView(s, view);
   mapper->SetIsosurfaceMethod(psi::IsosurfaceMethods::PerFragment);
   const std::vector<double> perFragment = Grab(win);
-  PSI_CHECK(mapper->GetLastUsedIsosurfaceMethod() == static_cast<int>(psi::IsosurfaceMethods::PerFragment),
+  PSI_CHECK(
+    mapper->GetLastUsedIsosurfaceMethod() == static_cast<int>(psi::IsosurfaceMethods::PerFragment),
     "per-fragment method used");
   mapper->SetIsosurfaceMethod(psi::IsosurfaceMethods::MarchingTetrahedra);
   const std::vector<double> mt = Grab(win);
-  const bool usedMT =
-    mapper->GetLastUsedIsosurfaceMethod() ==
+  const bool usedMT = mapper->GetLastUsedIsosurfaceMethod() ==
     static_cast<int>(psi::IsosurfaceMethods::MarchingTetrahedra);
   const bool discarded = mapper->GetLastUsedEarlyDiscard();
   // front to back (early ray termination, chosen where a surface can hide what is behind it)
@@ -391,7 +391,8 @@ void CheckIsosurfaceMethodsAgreeInView(Scene& s, const IsoCase& k, int index, in
   for (size_t i = 0; i < mt.size(); i += 3)
   {
     differ += std::abs(mt[i] - perFragment[i]) + std::abs(mt[i + 1] - perFragment[i + 1]) +
-        std::abs(mt[i + 2] - perFragment[i + 2]) > 6.0 / 255;
+        std::abs(mt[i + 2] - perFragment[i + 2]) >
+      6.0 / 255;
   }
   std::printf("isosurfaces %-18s view %d: marching tetrahedra%s vs per fragment: mean %.5f "
               "max %.3f, %.2f%% of pixels differ by > 2/255 a channel; vs back to front %.0f/255\n",
@@ -401,8 +402,8 @@ void CheckIsosurfaceMethodsAgreeInView(Scene& s, const IsoCase& k, int index, in
     "%s view %d: marching tetrahedra used where they fit the geometry shader's output, "
     "per fragment beyond",
     k.Name, view);
-  PSI_CHECK(discarded == (k.Gap && usedMT), "%s view %d: early discard with isosurfaces", k.Name,
-    view);
+  PSI_CHECK(
+    discarded == (k.Gap && usedMT), "%s view %d: early discard with isosurfaces", k.Name, view);
   PSI_CHECK(Finite(mt) && d.Mean < 5e-4 && differ < W * H / 100,
     "%s view %d: the methods agree (mean %g, %d pixels differ)", k.Name, view, d.Mean, differ);
   if (!s.OutDir.empty())
@@ -474,7 +475,8 @@ void MakeTiltedStep(vtkUnstructuredGrid* grid, double span, vtkUnstructuredGrid*
   {
     double x[3];
     grid->GetPoint(i, x);
-    tilted->SetValue(i, grid->GetPointData()->GetScalars()->GetComponent(i, 0) + 0.08 * span * x[0]);
+    tilted->SetValue(
+      i, grid->GetPointData()->GetScalars()->GetComponent(i, 0) + 0.08 * span * x[0]);
   }
   tilted->SetName(grid->GetPointData()->GetScalars()->GetName()); // the same array, a new step
   step->GetPointData()->SetScalars(tilted);
@@ -492,8 +494,8 @@ void CheckTimeStepGradients(Scene& s)
   const double iso = s.R[0] + 0.6 * s.Span;
   mapper->SetIsosurfaceValues({ iso });
   mapper->SetIsosurfaceShading(psi::IsosurfaceShadings::Smooth);
-  for (psi::IsosurfaceMethods method : { psi::IsosurfaceMethods::MarchingTetrahedra,
-         psi::IsosurfaceMethods::PerFragment })
+  for (psi::IsosurfaceMethods method :
+    { psi::IsosurfaceMethods::MarchingTetrahedra, psi::IsosurfaceMethods::PerFragment })
   {
     mapper->SetIsosurfaceMethod(method);
     mapper->SetInputData(s.Grid);
@@ -510,14 +512,15 @@ void CheckTimeStepGradients(Scene& s)
     const std::vector<double> fresh = Grab(win);
     const psitest::Difference d = psitest::DifferenceFrom(next, fresh);
     std::printf("time step, smooth isosurfaces (%s): vs the step drawn first: mean %.5f max "
-                "%.3f\n", method == psi::IsosurfaceMethods::PerFragment ? "per fragment"
-                                                                : "marching tetrahedra",
+                "%.3f\n",
+      method == psi::IsosurfaceMethods::PerFragment ? "per fragment" : "marching tetrahedra",
       d.Mean, d.Max);
     PSI_CHECK(sameMesh && mapper->GetMeshVersion() != version,
       "time step: the same mesh took the new scalars, the copy was gathered anew");
-    PSI_CHECK(d.Mean < 1e-4 && d.Max <= 1.5 / 255, "time step, smooth isosurfaces (method %d): "
-      "the image of the step drawn first (mean %g, max %g)", static_cast<int>(method), d.Mean,
-      d.Max);
+    PSI_CHECK(d.Mean < 1e-4 && d.Max <= 1.5 / 255,
+      "time step, smooth isosurfaces (method %d): "
+      "the image of the step drawn first (mean %g, max %g)",
+      static_cast<int>(method), d.Mean, d.Max);
   }
   mapper->SetInputData(s.Grid);
   mapper->SetIsosurfaceValues({});
@@ -545,6 +548,7 @@ int main(int argc, char* argv[])
 
   vtkPsiVolumeMapper* mapper = s.Mapper;
   psitest::CheckRequestedProjector(mapper->GetLastUsedProjector());
-  std::printf("projector: %s\n", mapper->GetLastUsedProjector() ? "compute shader" : "geometry shader");
+  std::printf(
+    "projector: %s\n", mapper->GetLastUsedProjector() ? "compute shader" : "geometry shader");
   return psitest::Report("TestPsiIsosurfaces");
 }

@@ -1,9 +1,9 @@
 // GL-free tests of the math behind 'Psi Volume': the PTINT truth table and the fan it implies,
 // Psi and the segment integrals against an independent quadrature, and the Psi table.
-#include "PsiReferenceIntegrals.h"
 #include "PsiIntegration.h"
-#include "PsiProjectionClasses.h"
 #include "PsiPartialPreIntegrationTable.h"
+#include "PsiProjectionClasses.h"
+#include "PsiReferenceIntegrals.h"
 #include "PsiTestCheck.h"
 
 #include <algorithm>
@@ -30,8 +30,10 @@ double HullArea(const double x[4], const double y[4])
   std::sort(p.begin(), p.end());
   std::vector<std::pair<double, double>> h(8);
   int k = 0;
-  auto cross = [](const auto& o, const auto& a, const auto& b) {
-    return (a.first - o.first) * (b.second - o.second) - (a.second - o.second) * (b.first - o.first);
+  auto cross = [](const auto& o, const auto& a, const auto& b)
+  {
+    return (a.first - o.first) * (b.second - o.second) -
+      (a.second - o.second) * (b.first - o.first);
   };
   for (int i = 0; i < 4; ++i)
   {
@@ -131,7 +133,8 @@ void TestTruthTable()
     }
     const psi::ProjectionClass direct = psi::ClassifyProjection(x, y);
     const psi::ProjectionClass& looked = table[psi::TruthTableIndex(x, y)];
-    PSI_CHECK(direct.cls == looked.cls, "config %d: class %d vs table %d", n, direct.cls, looked.cls);
+    PSI_CHECK(
+      direct.cls == looked.cls, "config %d: class %d vs table %d", n, direct.cls, looked.cls);
     if (looked.cls == 0)
     {
       continue;
@@ -147,7 +150,8 @@ void TestTruthTable()
 
 void TestPsi()
 {
-  // Homogeneous attenuation: Psi = (1 - e^-x) / x (Moreland & Angel 2004, constant-tau limit), over 15 decades.
+  // Homogeneous attenuation: Psi = (1 - e^-x) / x (Moreland & Angel 2004, constant-tau limit), over
+  // 15 decades.
   double worst = 0;
   for (double x = 1e-9; x <= 1e6; x *= 3.7)
   {

@@ -115,7 +115,8 @@ void CheckEqualImages(Scene& s, const char* name)
   // front to back (16 masks) and back to front; 4 masks when front to back stayed the faster;
   // the compute projector; the fan in perspective
   const bool parallel = s.View.Renderer->GetActiveCamera()->GetParallelProjection();
-  PSI_CHECK(ways.size() >= (parallel ? 3u : 4u) && ways.count("back to front, geometry shader, silhouettes") &&
+  PSI_CHECK(ways.size() >= (parallel ? 3u : 4u) &&
+      ways.count("back to front, geometry shader, silhouettes") &&
       ways.count("front to back (16 masks), geometry shader, silhouettes"),
     "%s: %zu ways timed", name, ways.size());
   const std::string chosen = s.Way();
@@ -146,8 +147,8 @@ void CheckForced(Scene& s)
 }
 
 // Runs frames until the choice is made; then `change` must start a new measurement (or not).
-void CheckMeasuresAgain(Scene& s, const char* what, const std::function<void()>& change,
-  bool again = true)
+void CheckMeasuresAgain(
+  Scene& s, const char* what, const std::function<void()>& change, bool again = true)
 {
   for (int frame = 0; frame < MaxFrames && (frame == 0 || s.Measuring()); ++frame)
   {
@@ -179,6 +180,7 @@ int main()
   CheckMeasuresAgain(s, "new mesh", [&] { s.Mapper->SetInputData(other); });
   CheckMeasuresAgain(s, "new view size", [&] { s.View.Window->SetSize(W + 40, H); });
   CheckMeasuresAgain(s, "zoom out 3x", [&] { cam->Zoom(1 / 3.0); });
-  CheckMeasuresAgain(s, "a small turn", [&] { cam->Azimuth(5); }, false);
+  CheckMeasuresAgain(
+    s, "a small turn", [&] { cam->Azimuth(5); }, false);
   return psitest::Report("TestPsiMeasuredChoice");
 }

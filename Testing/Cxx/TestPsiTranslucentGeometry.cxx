@@ -98,9 +98,10 @@ struct Case
 std::vector<Case> Cases()
 {
   const double toEye[3] = { 21 / 38.5, 14 / 38.5, 29 / 38.5 };
-  auto along = [&](double t, double radius, const double rgb[3]) {
-    return Sphere{ { t * toEye[0], t * toEye[1], t * toEye[2] }, radius,
-      { rgb[0], rgb[1], rgb[2] }, 0.5 };
+  auto along = [&](double t, double radius, const double rgb[3])
+  {
+    return Sphere{ { t * toEye[0], t * toEye[1], t * toEye[2] }, radius, { rgb[0], rgb[1], rgb[2] },
+      0.5 };
   };
   const double orange[3] = { 1.0, 0.5, 0.25 };
   return {
@@ -230,8 +231,8 @@ void CheckSpheresAroundOpaquePlane(Scene& s)
   ren->ResetCameraClippingRange(-20, 20, -20, 20, -20, 20);
   psi::ReferenceScene ref = psitest::MakeReferenceScene(s.Grid, s.TF);
   const double toEye[3] = { 21 / 38.5, 14 / 38.5, 29 / 38.5 };
-  const Sphere front{ { 3.5 * toEye[0], 3.5 * toEye[1], 3.5 * toEye[2] }, 2.0,
-    { 1.0, 0.5, 0.25 }, 0.4 };
+  const Sphere front{ { 3.5 * toEye[0], 3.5 * toEye[1], 3.5 * toEye[2] }, 2.0, { 1.0, 0.5, 0.25 },
+    0.4 };
   const Sphere behind{ { -3.0 * toEye[0] + 5.0, -3.0 * toEye[1], -3.0 * toEye[2] }, 3.0,
     { 0.3, 0.4, 1.0 }, 0.4 };
   vtkSmartPointer<vtkActor> a = MakeSphere(front, ref);
@@ -245,7 +246,8 @@ void CheckSpheresAroundOpaquePlane(Scene& s)
     s.View.Volume, ref, plane, s.OutDir, { a, b });
   PSI_CHECK(res.Mean < 0.004 && res.Outliers < 0.002 && res.P999 < 0.015,
     "spheres in front of and behind an opaque plane: mean error %g, %g%% over 0.05, 99.9th "
-    "percentile %g", res.Mean, 100 * res.Outliers, res.P999);
+    "percentile %g",
+    res.Mean, 100 * res.Outliers, res.P999);
   PSI_CHECK(res.Covered > W * H / 8, "spheres around an opaque plane: image nearly empty");
   for (vtkActor* actor : { a.Get(), b.Get(), plane.Get() })
   {
@@ -275,15 +277,13 @@ void CheckOnePeelAndNoVolumePeeling(Scene& s, const std::vector<Sphere>& nested)
   int warnings = 0;
   vtkNew<vtkCallbackCommand> onWarning;
   onWarning->SetClientData(&warnings);
-  onWarning->SetCallback([](vtkObject*, unsigned long, void* count, void*) {
-    ++*static_cast<int*>(count);
-  });
+  onWarning->SetCallback(
+    [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
   s.Mapper->AddObserver(vtkCommand::WarningEvent, onWarning);
   ren->SetUseDepthPeelingForVolumes(false);
   s.View.Window->Render();
   s.View.Window->Render();
-  PSI_CHECK(warnings == 1, "without depth peeling for volumes: %d warnings (1 expected)",
-    warnings);
+  PSI_CHECK(warnings == 1, "without depth peeling for volumes: %d warnings (1 expected)", warnings);
   s.Remove(actors);
   s.View.Window->Render();
   PSI_CHECK(warnings == 1, "no translucent geometry: no more warnings (%d)", warnings);

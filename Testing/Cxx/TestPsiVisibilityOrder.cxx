@@ -132,8 +132,8 @@ bool Clip(const Tet& t, const Vec3& o, const Vec3& d, double& tin, double& tout)
 
 // Along rays through a jittered grid of the camera's pixels: pairs of successive cells drawn in
 // the wrong order (the front one first). Also counts the pairs checked.
-size_t RayViolations(vtkCamera* cam, const std::vector<Tet>& tets,
-  const std::vector<uint32_t>& order, size_t& checked)
+size_t RayViolations(
+  vtkCamera* cam, const std::vector<Tet>& tets, const std::vector<uint32_t>& order, size_t& checked)
 {
   std::vector<size_t> pos(tets.size(), 0);
   for (size_t k = 0; k < order.size(); ++k)
@@ -143,7 +143,8 @@ size_t RayViolations(vtkCamera* cam, const std::vector<Tet>& tets,
   vtkNew<vtkMatrix4x4> m;
   m->DeepCopy(cam->GetCompositeProjectionTransformMatrix(1.0, -1, 1));
   m->Invert();
-  auto unproject = [&](double x, double y, double z) {
+  auto unproject = [&](double x, double y, double z)
+  {
     double in[4] = { x, y, z, 1 }, out[4];
     m->MultiplyPoint(in, out);
     return Vec3{ { out[0] / out[3], out[1] / out[3], out[2] / out[3] } };
@@ -196,7 +197,8 @@ void CheckCentroidDefinition(vtkUnstructuredGrid* grid, const double eye[3], boo
     const vtkIdType* ids;
     vtkIdType n;
     grid->GetCellPoints(c, n, ids);
-    mesh.Tets.insert(mesh.Tets.end(), { uint32_t(ids[0]), uint32_t(ids[1]), uint32_t(ids[2]), uint32_t(ids[3]) });
+    mesh.Tets.insert(
+      mesh.Tets.end(), { uint32_t(ids[0]), uint32_t(ids[1]), uint32_t(ids[2]), uint32_t(ids[3]) });
   }
   std::unique_ptr<psi::TetSort> sort = psi::NewCentroidSort();
   sort->SetMesh(&mesh, {});
@@ -204,7 +206,8 @@ void CheckCentroidDefinition(vtkUnstructuredGrid* grid, const double eye[3], boo
   sort->Sort(eye, parallel, order);
   // The key as the sort defines it: float centroid; squared distance to the eye, or the depth
   // along the view direction. Larger is farther.
-  auto key = [&](uint32_t t) {
+  auto key = [&](uint32_t t)
+  {
     float s[3] = { 0, 0, 0 };
     for (int v = 0; v < 4; ++v)
     {
@@ -333,7 +336,8 @@ int main()
       PSI_CHECK(bad == 0, "MPVONC drawn order: %zu pairs along rays drawn front first", bad);
     }
     // The centroid sort's definition, with many equal keys (grid cells seen along an axis).
-    const double eye[3] = { 3.0, 3.0, 40.0 }, axis[3] = { 0, 0, -1 }, skew[3] = { 0.48, 0.6, -0.64 };
+    const double eye[3] = { 3.0, 3.0, 40.0 }, axis[3] = { 0, 0, -1 },
+                 skew[3] = { 0.48, 0.6, -0.64 };
     CheckCentroidDefinition(grid, eye, false);
     CheckCentroidDefinition(grid, axis, true);
     CheckCentroidDefinition(grid, skew, true);

@@ -49,8 +49,8 @@ struct Scene : psitest::TransferFunction
 
 // The Wavelet source on [-half, half]^3, cells scaled to `cell` units, split into tetrahedra
 // (by vtkDataSetTriangleFilter, or into Kuhn tetrahedra).
-void MakeScene(Scene& s, int half, double cell, double unitDistance, bool linearTF = false,
-  bool kuhn = false)
+void MakeScene(
+  Scene& s, int half, double cell, double unitDistance, bool linearTF = false, bool kuhn = false)
 {
   if (kuhn)
   {
@@ -146,11 +146,10 @@ void CheckPerspectiveMethods(Fixture& f)
   emptyActor->SetMapper(emptyMapper);
   ren->AddActor(emptyActor);
   for (const Case& k :
-    { Case{ "perspective_partial", static_cast<int>(psi::Method::PartialPreIntegration), 0.006,
-        0.03 },
+    { Case{
+        "perspective_partial", static_cast<int>(psi::Method::PartialPreIntegration), 0.006, 0.03 },
       Case{ "perspective_average", static_cast<int>(psi::Method::Average), 0.02, 0.03 },
-      Case{ "perspective_full", static_cast<int>(psi::Method::FullPreIntegration), 0.006,
-        0.015 } })
+      Case{ "perspective_full", static_cast<int>(psi::Method::FullPreIntegration), 0.006, 0.015 } })
   {
     mapper->SetIntegrationMethod(k.Method);
     const psitest::Result r = f.Compare(k.Name, f.Ref);
@@ -158,8 +157,8 @@ void CheckPerspectiveMethods(Fixture& f)
       r.Mean, r.Max);
     PSI_CHECK(r.Covered > W * H / 8, "%s: image nearly empty (%d pixels)", k.Name, r.Covered);
   }
-  PSI_CHECK(mapper->GetNumberOfTetrahedra() == f.S.Grid->GetNumberOfCells(), "tetrahedra drawn %lld",
-    static_cast<long long>(mapper->GetNumberOfTetrahedra()));
+  PSI_CHECK(mapper->GetNumberOfTetrahedra() == f.S.Grid->GetNumberOfCells(),
+    "tetrahedra drawn %lld", static_cast<long long>(mapper->GetNumberOfTetrahedra()));
   PSI_CHECK(!mapper->GetLastUsedNearPlaneClipping(), "outside view must not compile the near path");
   PSI_CHECK(!mapper->GetLastUsedOpaqueClipping(), "no opaque geometry: no depth sampling");
   ren->RemoveActor(emptyActor);
@@ -358,9 +357,10 @@ void CheckCoarseCells(Fixture& f)
   mapper->SetIntegrationMethod(static_cast<int>(psi::Method::FullPreIntegration));
   const psitest::Result full = f.Compare("coarse_full", coarseRef);
   mapper->SetIntegrationMethod(static_cast<int>(psi::Method::PartialPreIntegration));
-  // Means sit near the 8-bit quantization floor (~0.001) for both; the worst pixel tells them apart.
-  PSI_CHECK(ppi.Max < 0.5 * avg.Max, "partial pre-integration max %g vs average %g", ppi.Max,
-    avg.Max);
+  // Means sit near the 8-bit quantization floor (~0.001) for both; the worst pixel tells them
+  // apart.
+  PSI_CHECK(
+    ppi.Max < 0.5 * avg.Max, "partial pre-integration max %g vs average %g", ppi.Max, avg.Max);
   PSI_CHECK(ppi.Max < 0.01 && ppi.Mean < 0.002, "coarse partial pre-integration error %g / %g",
     ppi.Mean, ppi.Max);
   PSI_CHECK(full.Max < 0.01 && full.Mean < 0.002, "coarse full pre-integration error %g / %g",
@@ -457,14 +457,14 @@ void CheckEarlyRayTermination(Fixture& f)
     bool Used;
   };
   using ERT = psi::EarlyRayTerminations;
-  auto draw = [&](ERT mode) {
+  auto draw = [&](ERT mode)
+  {
     mapper->SetEarlyRayTermination(mode);
     std::vector<double> image = psitest::GrabRGB(f.View.Window);
     return Frame{ image, mapper->GetLastSamplesPassed(), mapper->GetLastUsedEarlyRayTermination() };
   };
-  auto largest = [](const Frame& a, const Frame& b) {
-    return psitest::LargestDifference(a.Image, b.Image);
-  };
+  auto largest = [](const Frame& a, const Frame& b)
+  { return psitest::LargestDifference(a.Image, b.Image); };
   Scene dense, faint;
   MakeScene(dense, 16, 0.375, 0.05); // opacity up to 0.9 per 0.05 units
   f.Draw(&dense);
@@ -491,8 +491,8 @@ void CheckEarlyRayTermination(Fixture& f)
   spike.Opacity->AddPoint(r[1], 1.0);
   f.Draw(&spike);
   const Frame forced = draw(ERT::On), spikeBack = draw(ERT::Off), first = draw(ERT::Auto);
-  PSI_CHECK(forced.Used && !spikeBack.Used && first.Used &&
-      largest(forced, spikeBack) <= 1.0 / 255 + 1e-9,
+  PSI_CHECK(
+    forced.Used && !spikeBack.Used && first.Used && largest(forced, spikeBack) <= 1.0 / 255 + 1e-9,
     "spike: 'On' front to back %d, 'Off' %d, 'Auto' first %d (images %g/255 apart)", forced.Used,
     spikeBack.Used, first.Used, 255 * largest(forced, spikeBack));
   MakeScene(faint, 16, 0.375, 100.0); // at most 1 - exp(-0.009 * 20.8) = 0.17 along any ray
@@ -524,6 +524,7 @@ int main(int argc, char* argv[])
 
   vtkPsiVolumeMapper* mapper = f.Mapper;
   psitest::CheckRequestedProjector(mapper->GetLastUsedProjector());
-  std::printf("projector: %s\n", mapper->GetLastUsedProjector() ? "compute shader" : "geometry shader");
+  std::printf(
+    "projector: %s\n", mapper->GetLastUsedProjector() ? "compute shader" : "geometry shader");
   return psitest::Report("TestPsiVolumeRender");
 }

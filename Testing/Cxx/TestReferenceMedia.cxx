@@ -94,10 +94,12 @@ void TestSegments()
     constant = std::max(constant, Largest(psi::IntegrateReferenceMedia({ c1, c2 }), closed));
   }
   std::printf("segments: one medium %.2e, split %.2e, with an empty one %.2e, two constant "
-              "%.2e\n", alone, split, empty, constant);
+              "%.2e\n",
+    alone, split, empty, constant);
   PSI_CHECK(alone < 1e-12 && split < 1e-12 && empty < 1e-12 && constant < 1e-12,
     "the media's segment reduces to the exact ones (one medium %g, split %g, with an empty one "
-    "%g, two constant %g)", alone, split, empty, constant);
+    "%g, two constant %g)",
+    alone, split, empty, constant);
 }
 
 // A camera looking at the Wavelet meshes' centre from (x, y, z), w x h pixels.
@@ -171,12 +173,13 @@ void TestImages()
   psi::ReferenceScene bare = scene, doubled = scene;
   bare.Surfaces.clear();
   const auto transfer = scene.Transfer;
-  doubled.Transfer = [transfer](double v, double out[4]) {
+  doubled.Transfer = [transfer](double v, double out[4])
+  {
     transfer(v, out);
     out[3] *= 2;
   };
-  const double twice = Largest(psi::RenderReferenceMedia({ &scene, &bare }, cam),
-    psi::RenderReference(doubled, cam));
+  const double twice =
+    Largest(psi::RenderReferenceMedia({ &scene, &bare }, cam), psi::RenderReference(doubled, cam));
   const double order = Largest(psi::RenderReferenceMedia({ &scene, &second }, cam),
     psi::RenderReferenceMedia({ &second, &scene }, cam));
   const double differs = Largest(psi::RenderReferenceMedia({ &scene, &second }, cam), one);
@@ -186,7 +189,8 @@ void TestImages()
   PSI_CHECK(alone < 1e-9 && split < 1e-9 && twice < 1e-9 && order < 1e-12 && differs > 0.1 &&
       !lower.Tets.empty() && !upper.Tets.empty(),
     "the media's image reduces to the exact ones (one medium %g, split %g, twice %g, the order %g, "
-    "a second medium changes it by %g)", alone, split, twice, order, differs);
+    "a second medium changes it by %g)",
+    alone, split, twice, order, differs);
 }
 } // namespace
 

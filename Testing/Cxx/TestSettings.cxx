@@ -65,8 +65,8 @@ void CheckXML(vtkPVXMLElement* root)
       continue;
     }
     const double xml = Attribute(prop, "default_values");
-    PSI_CHECK(xml == info.Default, "%s: XML default %g, settings default %g", info.Name, xml,
-      info.Default);
+    PSI_CHECK(
+      xml == info.Default, "%s: XML default %g, settings default %g", info.Name, xml, info.Default);
     PSI_CHECK((prop->FindNestedElementByName("BooleanDomain") != nullptr) ==
         (info.Kind == psi::SettingKind::Boolean),
       "%s: a BooleanDomain exactly for a boolean", info.Name);
@@ -93,8 +93,8 @@ void CheckXML(vtkPVXMLElement* root)
     {
       PSI_CHECK(Attribute(domain, "min") == info.Min, "%s: XML min", info.Name);
       const double max = Attribute(domain, "max");
-      PSI_CHECK(std::isnan(max) || max == info.Max, "%s: XML max %g, range %g", info.Name, max,
-        info.Max);
+      PSI_CHECK(
+        std::isnan(max) || max == info.Max, "%s: XML max %g, range %g", info.Name, max, info.Max);
     }
   }
 }
@@ -111,10 +111,9 @@ void CheckClampOf(const psi::SettingInfo& info)
     "%s: above its range: %g used, warning '%s'", info.Name, psi::ValueOf(s, info.Id),
     high.c_str());
   const std::string low = psi::SetClamped(s, info.Id, info.Min - 1);
-  PSI_CHECK(psi::ValueOf(s, info.Id) == info.Min && !low.empty(), "%s: below its range",
-    info.Name);
-  PSI_CHECK(!psi::SetClamped(s, info.Id, std::nan("")).empty() &&
-      psi::ValueOf(s, info.Id) == info.Min,
+  PSI_CHECK(psi::ValueOf(s, info.Id) == info.Min && !low.empty(), "%s: below its range", info.Name);
+  PSI_CHECK(
+    !psi::SetClamped(s, info.Id, std::nan("")).empty() && psi::ValueOf(s, info.Id) == info.Min,
     "%s: NaN", info.Name);
 }
 
@@ -151,8 +150,8 @@ void CheckClamp()
     "out of range: clamped, changed, warned");
   c = psi::Change(interaction, psi::Setting::InteractiveBudget, 100);
   PSI_CHECK(!c.Changed && !c.Warning.empty(), "the same clamp again: warned, unchanged");
-  PSI_CHECK(psi::SettingTable().size() == static_cast<size_t>(psi::Setting::Count),
-    "one row per setting");
+  PSI_CHECK(
+    psi::SettingTable().size() == static_cast<size_t>(psi::Setting::Count), "one row per setting");
   for (size_t i = 0; i < psi::SettingTable().size(); ++i)
   {
     PSI_CHECK(psi::SettingTable()[i].Id == static_cast<psi::Setting>(i), "row %zu in order", i);

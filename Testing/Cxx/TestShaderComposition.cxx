@@ -12,17 +12,17 @@
 #include "PsiShaderComposer.h"
 #include "PsiTestCheck.h"
 
+#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkRenderWindow.h"
 #include "vtkShader.h"
 #include "vtkShaderProgram.h"
-#include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 
 #include <chrono>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -77,7 +77,8 @@ std::string CompileLog(GLenum stage, const std::string& source)
 
 // Fails the test when a stage of `program` (sources as VTK's shader cache completed them) or
 // the compute shader `compute` draws any message from the compiler.
-void CheckQuietCompile(vtkShaderProgram* program, const std::string& compute, const std::string& what)
+void CheckQuietCompile(
+  vtkShaderProgram* program, const std::string& compute, const std::string& what)
 {
   const std::pair<GLenum, vtkShader*> stages[] = { { GL_VERTEX_SHADER, program->GetVertexShader() },
     { GL_GEOMETRY_SHADER, program->GetGeometryShader() },
@@ -137,8 +138,8 @@ void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
   const std::string& vs = s.Vertex;
   const std::string& gs = s.Geometry;
   const std::string& fs = s.Fragment;
-  PSI_CHECK(Leftovers(vs) + Leftovers(gs) + Leftovers(fs) == 0, "tags or #if left:\n%s",
-    what.c_str());
+  PSI_CHECK(
+    Leftovers(vs) + Leftovers(gs) + Leftovers(fs) == 0, "tags or #if left:\n%s", what.c_str());
   // One declaration of each feature file, present exactly when the feature is on.
   struct Expect
   {
@@ -201,29 +202,32 @@ void CheckComposition(const psi::ShaderFeatures& f, const psi::ShaderSources& s)
   // Counts: the only #defines left.
   PSI_CHECK(Has(gs, "#define PSI_ISO_COUNT ") == iso && Has(fs, "#define PSI_ISO_COUNT ") == iso,
     "PSI_ISO_COUNT:\n%s", what.c_str());
-  PSI_CHECK(Has(fs, "#define PSI_TF_NODES_MAX ") == f.Adaptive, "PSI_TF_NODES_MAX:\n%s",
-    what.c_str());
+  PSI_CHECK(
+    Has(fs, "#define PSI_TF_NODES_MAX ") == f.Adaptive, "PSI_TF_NODES_MAX:\n%s", what.c_str());
   // The geometry-shader budget is the one declared in the source.
   std::smatch m;
   const bool found = std::regex_search(gs, m, std::regex("#define PSI_GS_MAX_VERTICES (\\d+)\n"));
-  PSI_CHECK(found && Has(gs, "max_vertices = PSI_GS_MAX_VERTICES)"), "max_vertices:\n%s",
-    what.c_str());
+  PSI_CHECK(
+    found && Has(gs, "max_vertices = PSI_GS_MAX_VERTICES)"), "max_vertices:\n%s", what.c_str());
   const int vertices = psi::GeometryOutputVertices(f);
   PSI_CHECK(found && std::stoi(m[1]) == vertices, "max_vertices %s != %d:\n%s",
     found ? m[1].str().c_str() : "?", vertices, what.c_str());
   const int niso = f.IsoCount;
   const int projection = sil ? 4 : 8; // a silhouette quad; the fan's strips of 5 and 3
-  PSI_CHECK(vertices == (tri ? projection * (niso + 1) + 4 * niso : projection),
-    "vertices %d:\n%s", vertices, what.c_str());
+  PSI_CHECK(vertices == (tri ? projection * (niso + 1) + 4 * niso : projection), "vertices %d:\n%s",
+    vertices, what.c_str());
   // Per-vertex components: gl_Position, the segment (the four faces' ray terms with their enter
   // flags in the low bits of p0, the scalar's two ray terms and the surface normal; frontPoint +
   // backPlane + scalarGrad; or segment), the flat data of the features (piece, clipTet, isoG0 +
   // isoJ + isoV0).
   const int components = psi::GeometryOutputComponentsPerVertex(f);
-  const int expected = 4 + (sil ? 19 : exact ? 12 : 3) + (separate ? 4 : 0) + (tri ? 1 : 0) + (f.NearClip ? 4 : 0) +
-    (perFragment ? 15 : 0);
-  PSI_CHECK(components == expected, "components %d, expected %d:\n%s", components, expected,
-    what.c_str());
+  const int expected = 4 +
+    (sil        ? 19
+        : exact ? 12
+                : 3) +
+    (separate ? 4 : 0) + (tri ? 1 : 0) + (f.NearClip ? 4 : 0) + (perFragment ? 15 : 0);
+  PSI_CHECK(
+    components == expected, "components %d, expected %d:\n%s", components, expected, what.c_str());
   PSI_CHECK(psi::FitsGeometryOutputLimits(f, vertices, vertices * components) &&
       !psi::FitsGeometryOutputLimits(f, vertices - 1, 1 << 30) &&
       !psi::FitsGeometryOutputLimits(f, vertices, vertices * components - 1),
@@ -238,13 +242,14 @@ void CheckFunctionForm(const psi::ShaderFeatures& f)
   const std::string code = s.Vertex + s.Geometry;
   PSI_CHECK(Leftovers(code) == 0, "tags or #if left in the function form:\n%s", what.c_str());
   // Built-ins and declarations of a stage: none may be left.
-  static const std::regex stageOnly("\\b(gl_Position|EmitVertex|EndPrimitive)\\b|void main\\(|layout\\(|"
-                                    "#extension|//VTK::|(^|\n)[ a-z]*\\b(in|out) \\w+ \\w+(\\[\\])?;");
+  static const std::regex stageOnly(
+    "\\b(gl_Position|EmitVertex|EndPrimitive)\\b|void main\\(|layout\\(|"
+    "#extension|//VTK::|(^|\n)[ a-z]*\\b(in|out) \\w+ \\w+(\\[\\])?;");
   std::smatch m;
   PSI_CHECK(!std::regex_search(code, m, stageOnly), "'%s' in the function form:\n%s",
     m.str().c_str(), what.c_str());
-  for (const char* entry : { "void psiVertexMain()", "void psiGeometryMain()", "PsiTetrahedron tetIn[1];",
-         "PsiTetrahedron tetOut;", "psiEmitVertex(" })
+  for (const char* entry : { "void psiVertexMain()", "void psiGeometryMain()",
+         "PsiTetrahedron tetIn[1];", "PsiTetrahedron tetOut;", "psiEmitVertex(" })
   {
     PSI_CHECK(Has(code, entry), "'%s' missing from the function form:\n%s", entry, what.c_str());
   }
@@ -331,8 +336,8 @@ void CheckAllCompositions()
     const psi::ShaderSources b = psi::ComposeShaders(Make(0, false, false, false, false, 0, false));
     PSI_CHECK(a.Fragment == b.Fragment, "the integrator source argument decides the integrator");
   }
-  std::printf("%zu feature combinations composed, %zu distinct programs\n", all.size(),
-    byKey.size());
+  std::printf(
+    "%zu feature combinations composed, %zu distinct programs\n", all.size(), byKey.size());
 }
 
 // The fan's programs the driver compiles: every method plain and with every feature on, every
@@ -411,10 +416,13 @@ void WriteSources(const std::string& outDir, int index, const psi::ShaderFeature
   const psi::ShaderSources& s, const psi::ComputeProjectorSources& c)
 {
   std::ofstream(outDir + "/program" + std::to_string(index) + ".glsl")
-    << "// " << Describe(f) << "\n// ---- vertex\n" << s.Vertex << "// ---- geometry\n"
-    << s.Geometry << "// ---- fragment\n" << s.Fragment;
+    << "// " << Describe(f) << "\n// ---- vertex\n"
+    << s.Vertex << "// ---- geometry\n"
+    << s.Geometry << "// ---- fragment\n"
+    << s.Fragment;
   std::ofstream(outDir + "/projector" + std::to_string(index) + ".glsl")
-    << "// " << Describe(f) << "\n// ---- compute\n" << c.Compute << "// ---- vertex\n"
+    << "// " << Describe(f) << "\n// ---- compute\n"
+    << c.Compute << "// ---- vertex\n"
     << c.Vertex;
 }
 
@@ -448,8 +456,8 @@ void CheckDriverCompiles(const std::string& outDir)
     }
     vtkShaderProgram* prog = win->GetShaderCache()->ReadyShaderProgram(
       s.Vertex.c_str(), s.Fragment.c_str(), s.Geometry.c_str());
-    PSI_CHECK(prog != nullptr && prog->GetCompiled(), "does not compile or link:\n%s",
-      Describe(f).c_str());
+    PSI_CHECK(
+      prog != nullptr && prog->GetCompiled(), "does not compile or link:\n%s", Describe(f).c_str());
     compiled += prog != nullptr ? 1 : 0;
     if (prog)
     {
@@ -457,8 +465,8 @@ void CheckDriverCompiles(const std::string& outDir)
     }
     std::string error;
     bool built = false;
-    const bool project = projector.ReadyComputeProgram(
-                           f, psi::IntegratorSource(f.Method), error, built) != nullptr;
+    const bool project =
+      projector.ReadyComputeProgram(f, psi::IntegratorSource(f.Method), error, built) != nullptr;
     PSI_CHECK(project && projector.ReadyDrawProgram(win) != nullptr,
       "the compute projector does not build: %s\n%s", error.c_str(), Describe(f).c_str());
     computeBuilt += project ? 1 : 0;

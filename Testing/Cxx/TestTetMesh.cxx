@@ -21,8 +21,8 @@
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDoubleArray.h"
-#include "vtkImageData.h"
 #include "vtkIdList.h"
+#include "vtkImageData.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -107,8 +107,8 @@ void TestBorrowedCells()
   vtkDataArray* s = ug->GetPointData()->GetArray("s");
   const psi::TetMesh m = psi::GatherTetMesh(ug, s, false);
   PSI_CHECK(m.Borrowed && m.Tets.empty(), "tetrahedra with point data: cells borrowed");
-  PSI_CHECK(m.NumberOfTets() == static_cast<size_t>(ug->GetNumberOfCells()) &&
-      CellIds(m) == InputIds(ug),
+  PSI_CHECK(
+    m.NumberOfTets() == static_cast<size_t>(ug->GetNumberOfCells()) && CellIds(m) == InputIds(ug),
     "borrowed cells are the input's");
   vtkNew<vtkUnstructuredGrid> narrow;
   narrow->DeepCopy(ug);
@@ -200,8 +200,8 @@ void TestCellScalars()
   std::vector<int32_t> nb;
   psi::FaceNeighborsFromArray(
     m, ug->GetCellData()->GetArray("FaceNeighbors"), ug->GetNumberOfCells(), nb);
-  PSI_CHECK(psi::FaceNeighborsMatch(m, nb) && std::count(nb.begin(), nb.end(), -1) <
-      static_cast<long>(nb.size()) / 2,
+  PSI_CHECK(psi::FaceNeighborsMatch(m, nb) &&
+      std::count(nb.begin(), nb.end(), -1) < static_cast<long>(nb.size()) / 2,
     "the filter's neighbours match by position");
 }
 
@@ -288,8 +288,10 @@ void TestVectorComponents()
   {
     const double* t = v->GetTuple3(i);
     const double m = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
-    worstMag = std::max(worstMag, std::abs(mm.Points4[4 * i + 3] - psi::UnitScalar(mm.ScalarRange, m)));
-    worstZ = std::max(worstZ, std::abs(mz.Points4[4 * i + 3] - psi::UnitScalar(mz.ScalarRange, t[2])));
+    worstMag =
+      std::max(worstMag, std::abs(mm.Points4[4 * i + 3] - psi::UnitScalar(mm.ScalarRange, m)));
+    worstZ =
+      std::max(worstZ, std::abs(mz.Points4[4 * i + 3] - psi::UnitScalar(mz.ScalarRange, t[2])));
   }
   PSI_CHECK(worstMag < 1e-6 && worstZ < 1e-6, "magnitude (%g) and component 2 (%g) gathered",
     worstMag, worstZ);
@@ -341,8 +343,8 @@ void TestUnitScalars()
     }
     a->Modified();
     PSI_CHECK(psi::UpdateTetMeshScalars(m, a), "%s: new time step taken", field.Name);
-    PSI_CHECK(m.ScalarRange[0] == a->GetRange()[0] && std::abs(m.Points4[3] -
-        psi::UnitScalar(m.ScalarRange, a->GetValue(0))) < 1e-6,
+    PSI_CHECK(m.ScalarRange[0] == a->GetRange()[0] &&
+        std::abs(m.Points4[3] - psi::UnitScalar(m.ScalarRange, a->GetValue(0))) < 1e-6,
       "%s: the new step's range [%g, %g] and fractions", field.Name, m.ScalarRange[0],
       m.ScalarRange[1]);
   }
@@ -370,8 +372,8 @@ void TestUnusedPoints()
       s->InsertNextTuple1(s->GetTuple1(0));
       ug->GetPoints()->Modified(); // InsertNextPoint leaves the points' time as it was
       double used[6];
-      PSI_CHECK(psi::CellPointBounds(ug, used) &&
-          std::equal(used, used + 6, clean) && ug->GetBounds()[1] == far,
+      PSI_CHECK(psi::CellPointBounds(ug, used) && std::equal(used, used + 6, clean) &&
+          ug->GetBounds()[1] == far,
         "unused point at %g (%s ids): the cells' bounds [%g, %g] are the clean mesh's", far,
         use32 ? "32-bit" : "64-bit", used[0], used[1]);
       const psi::TetMesh m = psi::GatherTetMesh(ug, s, false);

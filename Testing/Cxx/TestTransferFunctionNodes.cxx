@@ -66,8 +66,8 @@ void TestSpike()
     sc.Opacity->AddPoint(1, 0);
     const psi::TransferFunctionNodes nodes =
       psi::SampleTransferFunctionNodes(sc.Property, Range, 64, 1.0 / 512);
-    PSI_CHECK(nodes.Size() == 5, "w %g: %d nodes, want the 3 control points and the ends", w,
-      nodes.Size());
+    PSI_CHECK(
+      nodes.Size() == 5, "w %g: %d nodes, want the 3 control points and the ends", w, nodes.Size());
     // exact up to the nodes' float positions: 2 / w * 6e-8 off near a slope of 2 / w
     PSI_CHECK(NodesError(sc.Property, nodes) < 1e-6 + 1.2e-7 / w,
       "w %g: nodes miss the function by %g", w, NodesError(sc.Property, nodes));
@@ -132,11 +132,13 @@ void TestBendingColorMap()
   sc.Color->AddRGBPoint(1, 0.705882, 0.0156863, 0.14902);
   sc.Opacity->AddPoint(0, 0);
   sc.Opacity->AddPoint(1, 1);
-  psi::TransferFunctionNodes corners = psi::SampleTransferFunctionNodes(sc.Property, Range, 3, 1.0 / 512);
+  psi::TransferFunctionNodes corners =
+    psi::SampleTransferFunctionNodes(sc.Property, Range, 3, 1.0 / 512);
   PSI_CHECK(corners.Size() == 3, "3-node budget: %d nodes", corners.Size());
   const double coarse = NodesError(sc.Property, corners);
   PSI_CHECK(coarse > 0.02, "the map bends between its nodes (%g)", coarse);
-  psi::TransferFunctionNodes nodes = psi::SampleTransferFunctionNodes(sc.Property, Range, 64, 1.0 / 512);
+  psi::TransferFunctionNodes nodes =
+    psi::SampleTransferFunctionNodes(sc.Property, Range, 64, 1.0 / 512);
   const double fine = NodesError(sc.Property, nodes);
   PSI_CHECK(fine < 1.5 / 512, "refined nodes miss the map by %g (%d nodes)", fine, nodes.Size());
   PSI_CHECK(nodes.Size() < 64, "refinement stops at the tolerance: %d nodes", nodes.Size());

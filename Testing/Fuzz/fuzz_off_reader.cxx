@@ -37,7 +37,8 @@ public:
 
 vtkPsiOFFTetReader* TheReader()
 {
-  static vtkPsiOFFTetReader* reader = [] {
+  static vtkPsiOFFTetReader* reader = []
+  {
     vtkPsiOFFTetReader* r = vtkPsiOFFTetReader::New();
     vtkNew<Quiet> quiet;
     r->AddObserver(vtkCommand::ErrorEvent, quiet);
