@@ -234,7 +234,7 @@ def readme():
 
 def main():
     build = sys.argv[sys.argv.index("--build-dir") + 1] if "--build-dir" in sys.argv else None
-    errors = malformed_xml() + stale_references(build) + readme()
+    errors = malformed_xml() + stale_references(build) + readme() + unformatted()
     for folder in FOLDERS:
         for path in sorted((ROOT / folder).glob("*.[ch]xx")) + sorted((ROOT / folder).glob("*.h")):
             rel = path.relative_to(ROOT)
