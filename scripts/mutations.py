@@ -270,8 +270,8 @@ MUTATIONS = [
              ["PsiPython.lod_several"]),
     # the panel's read-out shows the representation's own numbers
     Mutation("readout_frame_time_tenfold_small", "Qt/pqPsiFrameStatsWidget.cxx",
-             "                   .arg(milliseconds(stats.Stats.LastRenderSeconds),",
-             "                   .arg(milliseconds(0.1 * stats.Stats.LastRenderSeconds),",
+             ".arg(milliseconds(stats.Stats.LastRenderSeconds),",
+             ".arg(milliseconds(0.1 * stats.Stats.LastRenderSeconds),",
              ["PsiGUI.PsiVolumePanel", "PsiGUI.ClientServer.PsiVolumePanel"]),
     # the MPI watchdog: each rank's stacks on a hang, nothing left running
     Mutation("mpi_watchdog_no_stacks", "scripts/lib/mpi_watchdog.py",
@@ -413,8 +413,9 @@ MUTATIONS = [
              "    const uint32_t cell = this->Order[first + j]; // 2% of adjacent pairs swapped\n",
              ORDER),
     Mutation("draw_order_chunk_not_uploaded", "Rendering/PsiVisibilityOrder.cxx",
-             "  glBufferSubData(GL_ARRAY_BUFFER, at * 4 * sizeof(uint32_t), count * 4 * sizeof(uint32_t),\n"
-             "    this->Staging.data());\n",
+             "  glBufferSubData(\n"
+             "    GL_ARRAY_BUFFER, at * 4 * sizeof(uint32_t), count * 4 * sizeof(uint32_t), "
+             "this->Staging.data());\n",
              "", GL),
     Mutation("chunk_size_rule_inverted", "Rendering/PsiVisibilityOrder.h",
              "return tets > SmallCellsPerPixel * pixels ? size_t(1) << 12 : MaxChunkTets;",
@@ -432,8 +433,8 @@ MUTATIONS = [
              "keys[i] = (static_cast<uint64_t>(~OrderedBits(d)) << 32) |",
              "keys[i] = (static_cast<uint64_t>(OrderedBits(d)) << 32) |", ORDER),
     Mutation("centroid_tie_break_reversed", "Core/PsiVisibilitySort.cxx",
-             "                             static_cast<uint64_t>(i);",
-             "                             static_cast<uint64_t>(n - 1 - i);", ORDER),
+             "<< 32) | static_cast<uint64_t>(i);",
+             "<< 32) | static_cast<uint64_t>(n - 1 - i);", ORDER),
     Mutation("mpvonc_behind_relation_inverted", "Core/PsiMPVONCSort.cxx",
              "return (so > 0) == (se > 0) ? NeighborBehind : NeighborInFront;",
              "return (so > 0) == (se > 0) ? NeighborInFront : NeighborBehind;", ["PsiCore.MPVONC"]),
@@ -480,8 +481,8 @@ MUTATIONS = [
              "if (!this->Started || decides != this->Decides ||",
              "if (!this->Started ||", ["PsiCore.MeasuredChoice", "PsiRendering.MeasuredChoice"]),
     Mutation("measured_choice_fan_in_parallel", "Core/PsiFramePlan.cxx",
-             "!f.SeparateOpacity &&\n    f.ExactSegments;",
-             "!f.SeparateOpacity &&\n    true;", ["PsiCore.FramePlan", "PsiRendering.MeasuredChoice"]),
+             "!f.SeparateOpacity && f.ExactSegments;",
+             "!f.SeparateOpacity && true;", ["PsiCore.FramePlan", "PsiRendering.MeasuredChoice"]),
     Mutation("measured_choice_despite_forced_direction", "Core/PsiFramePlan.cxx",
              "plan.Open.Direction = autoFront;", "plan.Open.Direction = possible;",
              ["PsiCore.FramePlan", "PsiRendering.MeasuredChoice"]),
