@@ -31,7 +31,7 @@ struct PsiSceneFacts
   /// The largest opacity a ray through the mesh's bounds can reach (psi::MaxRayOpacity over the
   /// bounds' diagonal): 1 when unknown.
   double MaxRayOpacity = 1;
-  /// The driver can mask the opaque pixels between draws (PsiRenderTarget::CanMaskOpaquePixels).
+  /// The driver can mask the opaque pixels between draws (PsiOpacityMasks::IsSupported).
   bool MasksOpaquePixels = true;
   /// The driver runs the compute projector (OpenGL 4.3, PsiComputeProjector::Chosen).
   bool ComputeAvailable = false;

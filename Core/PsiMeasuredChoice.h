@@ -18,7 +18,7 @@
 
 namespace psi
 {
-/// Front to back, the opacity masks a frame draws at first (PsiVisibilityOrder::StrideTets), and
+/// Front to back, the opacity masks a frame draws at first (PsiOpacityMasks::StrideTets), and
 /// the alternative with a quarter of the full-screen passes, for scenes where few pixels turn
 /// opaque.
 constexpr int DefaultMasksPerFrame = 16;

@@ -168,7 +168,7 @@ void PsiComputeProjector::ReserveBuffers(size_t tetsPerPass)
 
 bool PsiComputeProjector::Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder& order,
   size_t targetPixels, long long maxBlockBytes, std::string& error,
-  const std::function<bool()>& betweenStrides, int masksPerFrame)
+  const std::function<void(size_t first)>& beforeChunk)
 {
   const size_t vertexBytes = size_t(this->SlotVertices) * this->Vec4sPerVertex * 16;
   const size_t indexBytes = size_t(this->SlotTriangles) * 3 * sizeof(GLuint);
@@ -234,7 +234,7 @@ bool PsiComputeProjector::Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); // the next pass rewrites the buffers
       }
     },
-    targetPixels, betweenStrides, masksPerFrame);
+    targetPixels, beforeChunk);
   glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
   for (GLuint loc : attributes)
   {

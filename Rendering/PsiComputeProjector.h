@@ -9,8 +9,6 @@
 #include "PsiVolumeRenderingModule.h"
 #include "vtkSmartPointer.h"
 
-#include "PsiMeasuredChoice.h" // psi::DefaultMasksPerFrame
-
 #include <cstddef>
 #include <functional>
 #include <map>
@@ -48,11 +46,11 @@ public:
   /// uniforms must be set. Leaves no program bound (VTK's shader cache is told).
   /// Each pass's buffers fit `maxBlockBytes` (GL_MAX_SHADER_STORAGE_BLOCK_SIZE, PsiDriverLimits).
   /// False, with `error` set, when not even one work group's triangles fit it (nothing drawn).
-  /// `betweenStrides` and `masksPerFrame` as for PsiVisibilityOrder::Draw (the vertex array is
+  /// `beforeChunk` as for PsiVisibilityOrder::Draw (the vertex array is
   /// bound again after it).
   bool Draw(vtkOpenGLRenderWindow* renWin, PsiVisibilityOrder& order, size_t targetPixels,
-    long long maxBlockBytes, std::string& error, const std::function<bool()>& betweenStrides = {},
-    int masksPerFrame = psi::DefaultMasksPerFrame);
+    long long maxBlockBytes, std::string& error,
+    const std::function<void(size_t first)>& beforeChunk = {});
   void ReleaseGraphicsResources(vtkWindow* win);
 
   /// Bytes of the reused vertex and index buffers (their size bounds the tetrahedra per pass).

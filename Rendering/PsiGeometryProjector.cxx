@@ -27,7 +27,7 @@ vtkShaderProgram* PsiGeometryProjector::ReadyProgram(
 }
 
 void PsiGeometryProjector::Draw(PsiVisibilityOrder& order, vtkShaderProgram* program,
-  size_t targetPixels, const std::function<bool()>& betweenStrides, int masksPerFrame) const
+  size_t targetPixels, const std::function<void(size_t first)>& beforeChunk) const
 {
   // each tetrahedron is one point whose attribute is its four point ids (PsiVolumeVS.glsl)
   const GLint loc = glGetAttribLocation(static_cast<GLuint>(program->GetHandle()), "tetPointIds");
@@ -41,7 +41,7 @@ void PsiGeometryProjector::Draw(PsiVisibilityOrder& order, vtkShaderProgram* pro
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   order.Draw([](size_t first, size_t count)
     { glDrawArrays(GL_POINTS, static_cast<GLint>(first), static_cast<GLsizei>(count)); },
-    targetPixels, betweenStrides, masksPerFrame);
+    targetPixels, beforeChunk);
 }
 
 void PsiGeometryProjector::ReleaseGraphicsResources()

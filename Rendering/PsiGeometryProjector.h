@@ -6,8 +6,6 @@
 #ifndef PsiGeometryProjector_h
 #define PsiGeometryProjector_h
 
-#include "PsiMeasuredChoice.h" // psi::DefaultMasksPerFrame
-
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -31,8 +29,7 @@ public:
   /// Draws every tetrahedron of `order` as a point with `program` (bound, with the mesh's
   /// vertex array), its four point ids streamed by the order, on a target of `targetPixels`.
   void Draw(PsiVisibilityOrder& order, vtkShaderProgram* program, size_t targetPixels,
-    const std::function<bool()>& betweenStrides = {},
-    int masksPerFrame = psi::DefaultMasksPerFrame) const;
+    const std::function<void(size_t first)>& beforeChunk = {}) const;
   void ReleaseGraphicsResources();
 
 private:

@@ -1,8 +1,6 @@
 #include "PsiRenderTarget.h"
 
 #include "PsiCompositeFS.h"
-#include "PsiFramePlan.h" // psi::SaturatedOpacity
-#include "PsiOpaqueMaskFS.h"
 
 #include "PsiOpenGL.h" // GLEW or glad, as the found VTK provides
 #include "vtkOpenGLFramebufferObject.h"
@@ -161,7 +159,6 @@ void PsiRenderTarget::DrawAndComposite(vtkOpenGLRenderWindow* renWin,
       ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
       drawImage(i);
     }
-    this->PreviousMaskFoundOpaque(); // the last mask's count: its query free for the next frame
     ostate->vtkglBlendEquationSeparate(equation[0], equation[1]);
     ostate->PopFramebufferBindings();
 
@@ -192,66 +189,9 @@ void PsiRenderTarget::ClearDepth(vtkOpenGLState* ostate)
   ostate->vtkglClearDepth(clearDepth);
 }
 
-bool PsiRenderTarget::CanMaskOpaquePixels()
+vtkTextureObject* PsiRenderTarget::GetImage() const
 {
-  return glTextureBarrier != nullptr;
-}
-
-// Whether the previous mask of this image found opaque pixels (true before the first). Its
-// count is read when the next mask is due, a stride later: waiting for it then costs less than
-// the masks its answer saves (llvmpipe had never finished it by then without the wait).
-bool PsiRenderTarget::PreviousMaskFoundOpaque()
-{
-  if (!this->MaskSamples.IsPending())
-  {
-    return true;
-  }
-  return this->MaskSamples.Take() > 0;
-}
-
-bool PsiRenderTarget::MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderProgram* drawProgram)
-{
-  const bool found = this->PreviousMaskFoundOpaque();
-  vtkOpenGLState* ostate = renWin->GetState();
-  GLint vertexArray = 0;
-  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray);
-  // a projector may have bound its programs without VTK's shader cache (the compute projector):
-  // the cache must not take the mask's program for bound
-  renWin->GetShaderCache()->ReleaseCurrentShader();
-  if (!this->MaskQuad)
-  {
-    this->MaskQuad.reset(new vtkOpenGLQuadHelper(renWin, nullptr, PsiOpaqueMaskFS, ""));
-  }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(this->MaskQuad->Program);
-  }
-  vtkShaderProgram* program = this->MaskQuad->Program;
-  if (program)
-  {
-    // the image is read where it was drawn: the barrier makes the draws so far visible
-    glTextureBarrier();
-    vtkOpenGLState::ScopedglColorMask colorMask(ostate);
-    vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
-    vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
-    ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    ostate->vtkglDepthMask(GL_TRUE);
-    ostate->vtkglDepthFunc(GL_ALWAYS);
-    vtkTextureObject* image = this->Framebuffer->GetColorAttachmentAsTextureObject(0);
-    image->Activate();
-    program->SetUniformi("volumeImage", image->GetTextureUnit());
-    program->SetUniformf("saturatedOpacity", static_cast<float>(psi::SaturatedOpacity));
-    this->MaskSamples.Begin(); // the pixels it finds opaque
-    this->MaskQuad->Render();
-    this->MaskSamples.End();
-    image->Deactivate();
-  }
-  if (drawProgram)
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(drawProgram);
-  }
-  glBindVertexArray(static_cast<GLuint>(vertexArray));
-  return found;
+  return this->Framebuffer ? this->Framebuffer->GetColorAttachmentAsTextureObject(0) : nullptr;
 }
 
 // The volume images (premultiplied) into the framebuffer being rendered, with the blending the
@@ -303,7 +243,5 @@ void PsiRenderTarget::ReleaseGraphicsResources(vtkWindow* win)
     this->FrontImage->ReleaseGraphicsResources(win);
   }
   this->CompositeQuad.reset();
-  this->MaskQuad.reset();
-  this->MaskSamples.ReleaseGraphicsResources();
   this->Size[0] = this->Size[1] = 0;
 }

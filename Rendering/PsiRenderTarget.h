@@ -3,15 +3,13 @@
 // attachment is a copy of the scene's depth, so that the hardware depth test hides cells behind
 // opaque geometry; a second copy is sampled by the shaders when opaque geometry or the near
 // plane cuts through cells. The float image is then composited over the scene.
-// Front to back ("under", PsiFramePlan::FrontToBack) the same image is composited from the
-// nearest tetrahedra on, and MaskOpaquePixels, called between chunks of the order, writes the
-// nearest depth where the image is already opaque, so that the fragments still to come there
-// fail the depth test before they are shaded (early ray termination).
+// Front to back ("under", psi::DrawWay::FrontToBack) the same image is composited from the
+// nearest tetrahedra on, with the depth test on, for PsiOpacityMasks to mask the pixels already
+// opaque in it (GetImage) between chunks of the order (early ray termination).
 #ifndef PsiRenderTarget_h
 #define PsiRenderTarget_h
 
 #include "PsiDepthPeelingCalls.h"
-#include "PsiSamplesPassed.h"
 
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
@@ -49,18 +47,12 @@ public:
   /// blending and the depth test set (all GL state restored afterwards); then composites the
   /// images into the framebuffer being rendered (PsiCompositeFS.glsl; `compositeParameters`
   /// sets the pass's uniforms on the composite program). `frontToBack`: "under" blending and
-  /// the depth test on, for drawImage to call MaskOpaquePixels (outside depth peeling only).
+  /// the depth test on, for drawImage's PsiOpacityMasks (outside depth peeling only).
   void DrawAndComposite(vtkOpenGLRenderWindow* renWin, const std::function<void(int)>& drawImage,
     PsiDepthPeelingCalls::Stage peelStage,
     const std::function<void(vtkShaderProgram*)>& compositeParameters, bool frontToBack = false);
-  /// Within drawImage of a front-to-back DrawAndComposite: the nearest depth where the image
-  /// drawn so far is opaque (PsiOpaqueMaskFS.glsl), then `drawProgram` and the vertex array
-  /// bound again. False when the previous mask of this image found no opaque pixel (its count of
-  /// samples passed); true when it found some, or for the first mask of the image.
-  bool MaskOpaquePixels(vtkOpenGLRenderWindow* renWin, vtkShaderProgram* drawProgram);
-  /// Whether this OpenGL has what MaskOpaquePixels needs (glTextureBarrier: OpenGL 4.5 or
-  /// ARB_texture_barrier).
-  static bool CanMaskOpaquePixels();
+  /// The float image being drawn into (within drawImage; the first, outside depth peeling).
+  vtkTextureObject* GetImage() const;
   void ReleaseGraphicsResources(vtkWindow* win);
 
 private:
@@ -70,15 +62,12 @@ private:
     const std::function<void(vtkShaderProgram*)>& compositeParameters);
   void ReserveImages(vtkOpenGLRenderWindow* renWin, int images);
   void ClearDepth(vtkOpenGLState* ostate);
-  bool PreviousMaskFoundOpaque();
 
   vtkNew<vtkTextureObject> DepthTexture;
   vtkNew<vtkTextureObject> DepthSampleTexture;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkNew<vtkTextureObject> FrontImage; // the second image, within depth peeling
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
-  std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
-  PsiSamplesPassed MaskSamples; ///< the pixels the last mask found opaque
   int Size[2] = { 0, 0 };
   int Origin[2] = { 0, 0 };
   bool SampleDepth = false;

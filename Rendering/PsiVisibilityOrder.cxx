@@ -139,7 +139,7 @@ void WaitAndDelete(GLsync fence)
 } // namespace
 
 void PsiVisibilityOrder::Draw(const std::function<void(size_t, size_t)>& drawChunk,
-  size_t targetPixels, const std::function<bool()>& betweenStrides, int masksPerFrame)
+  size_t targetPixels, const std::function<void(size_t first)>& beforeChunk)
 {
   // Streamed in chunks (ChunkTetsFor) through InFlight slots of the stream buffer, so that the
   // GPU holds no copy of the cells and no single draw call is unbounded. Mesa's llvmpipe bins
@@ -151,14 +151,12 @@ void PsiVisibilityOrder::Draw(const std::function<void(size_t, size_t)>& drawChu
   // slot for the next. Each fence also ends llvmpipe's scene (see ChunkTetsFor).
   std::array<GLsync, InFlight> fences{};
   const size_t n = this->Size, chunk = ChunkTetsFor(n, targetPixels);
-  size_t stride = StrideTets(n, chunk, masksPerFrame), next = stride;
   this->Drawn.clear();
   for (size_t first = 0, i = 0; first < n; first += chunk, ++i)
   {
-    if (betweenStrides && first >= next)
+    if (beforeChunk && first > 0)
     {
-      stride *= betweenStrides() ? 1 : 2;
-      next = first + stride;
+      beforeChunk(first);
     }
     GLsync& slot = fences[i % InFlight];
     if (slot)

@@ -52,22 +52,11 @@ public:
   /// Streams the tetrahedra in order, chunk by chunk, each as soon as the sort has finished it:
   /// writes the chunk's four point ids per tetrahedron to the stream buffer (GetStreamBuffer)
   /// and calls drawChunk(first, count), `first` being the chunk's first tetrahedron there.
-  /// Chunks are ChunkTetsFor(GetSize(), targetPixels) tetrahedra. `betweenStrides`, when set, is
-  /// called between chunks after StrideTets(GetSize(), chunk, masksPerFrame) tetrahedra, not
-  /// after the last chunk (front to back, the opaque pixels are masked there); when it returns
-  /// false (its last mask found no opaque pixel) the stride to its next call doubles.
+  /// Chunks are ChunkTetsFor(GetSize(), targetPixels) tetrahedra. `beforeChunk`, when set, is
+  /// called with each chunk's first tetrahedron before it is streamed but the first's (front to
+  /// back, PsiOpacityMasks masks the opaque pixels there).
   void Draw(const std::function<void(size_t first, size_t count)>& drawChunk, size_t targetPixels,
-    const std::function<bool()>& betweenStrides = {},
-    int masksPerFrame = psi::DefaultMasksPerFrame);
-  /// Tetrahedra between two calls of Draw's betweenStrides at first: whole chunks, at most
-  /// `masksPerFrame` strides a frame (psi::DrawWay::MasksPerFrame). Each call is a full-screen
-  /// pass (PsiOpaqueMaskFS.glsl) that waits for the rasterizer; docs/decisions.md, "Early ray
-  /// termination: how it is built", has the figures behind the default and the doubling.
-  static constexpr size_t StrideTets(size_t tets, size_t chunk, int masksPerFrame)
-  {
-    const size_t strides = static_cast<size_t>(std::max(1, masksPerFrame));
-    return std::max(chunk, (tets / strides + chunk - 1) / chunk * chunk);
-  }
+    const std::function<void(size_t first)>& beforeChunk = {});
   /// Waits for the sort (before GetOrder, GetLastCycles and GetLastSortSeconds are read).
   void Finish();
   void ReleaseGraphicsResources(vtkWindow* win);

@@ -277,7 +277,7 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
 
 // One image of the frame (two within depth peeling, `image` naming the interval): the
 // projector's draw of the visibility order, front to back with the opaque pixels masked between
-// strides of the order; the samples that pass counted when asked (SetCountSamplesPassed).
+// its chunks (PsiOpacityMasks); the samples that pass counted when asked (SetCountSamplesPassed).
 void vtkPsiVolumeMapper::DrawImage(vtkOpenGLRenderWindow* renWin, vtkVolume* vol,
   const PsiFramePlan& plan, vtkShaderProgram* draw, bool compute, int image, std::string& error)
 {
@@ -289,42 +289,33 @@ void vtkPsiVolumeMapper::DrawImage(vtkOpenGLRenderWindow* renWin, vtkVolume* vol
     draw->SetUniformi("peelRange", image);
     I.Peeling.SetShaderParameters(draw, this, vol, renWin);
   }
-  // the volume's samples that pass the depth test, when counted (not the masks')
-  const auto startCount = [&]()
-  {
-    if (I.CountSamples)
-    {
-      I.Samples.Begin();
-    }
-  };
-  const auto stopCount = [&]()
-  {
-    I.Samples.End();
-    I.SamplesPassed += I.Samples.Take();
-  };
-  std::function<bool()> mask;
+  const size_t pixels = size_t(I.Target.GetSize()[0]) * size_t(I.Target.GetSize()[1]);
+  std::function<void(size_t)> mask;
   if (plan.Way.FrontToBack)
   {
-    mask = [&]()
+    I.Masks.Begin(I.Target.GetImage(), I.Order.GetSize(),
+      PsiVisibilityOrder::ChunkTetsFor(I.Order.GetSize(), pixels), plan.Way.MasksPerFrame);
+    mask = [&](size_t first)
     {
-      stopCount();
-      const bool found = I.Target.MaskOpaquePixels(renWin, compute ? nullptr : draw);
-      startCount();
-      return found;
+      if (I.Masks.IsDue(first))
+      {
+        I.StopCounting();
+        I.Masks.Mask(first, renWin, compute ? nullptr : draw);
+        I.StartCounting();
+      }
     };
   }
-  const size_t pixels = size_t(I.Target.GetSize()[0]) * size_t(I.Target.GetSize()[1]);
-  startCount();
+  I.StartCounting();
   if (compute)
   {
-    I.Compute.Draw(renWin, I.Order, pixels, I.Limits().MaxStorageBlockBytes, error, mask,
-      plan.Way.MasksPerFrame);
+    I.Compute.Draw(renWin, I.Order, pixels, I.Limits().MaxStorageBlockBytes, error, mask);
   }
   else
   {
-    I.Geometry.Draw(I.Order, draw, pixels, mask, plan.Way.MasksPerFrame);
+    I.Geometry.Draw(I.Order, draw, pixels, mask);
   }
-  stopCount();
+  I.StopCounting();
+  I.Masks.End();
 }
 
 // Gathers and uploads the mesh when the data or the array changed. False: nothing to draw.

@@ -6,7 +6,7 @@
 #include "vtkPsiVolumeMapperInternals.h"
 
 #include "PsiFramePlan.h"
-#include "PsiRenderTarget.h"
+#include "PsiOpacityMasks.h"
 #include "PsiSceneQueries.h"
 #include "PsiShaderComposer.h"
 #include "PsiShaderParameters.h"
@@ -89,7 +89,7 @@ PsiSceneFacts vtkPsiVolumeMapper::SceneFacts(
   facts.MaxRayOpacity = psi::MaxRayOpacity(I.Tables.Transfer.GetTable(),
     std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
       (b[5] - b[4]) * (b[5] - b[4])));
-  facts.MasksOpaquePixels = PsiRenderTarget::CanMaskOpaquePixels();
+  facts.MasksOpaquePixels = PsiOpacityMasks::IsSupported();
   facts.ComputeAvailable =
     PsiComputeProjector::IsSupported(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()));
   if (MayUseIsoTriangles(this->Settings, facts))

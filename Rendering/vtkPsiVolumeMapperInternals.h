@@ -14,6 +14,7 @@
 #include "PsiLookupTextures.h"
 #include "PsiMeasuredChoice.h"
 #include "PsiMeshBuffers.h"
+#include "PsiOpacityMasks.h"
 #include "PsiRenderTarget.h"
 #include "PsiSamplesPassed.h"
 #include "PsiVisibilityOrder.h"
@@ -31,6 +32,7 @@ struct vtkPsiVolumeMapper::Internals
   PsiVisibilityOrder Order;
   PsiLookupTextureSet Tables;
   PsiRenderTarget Target;
+  PsiOpacityMasks Masks; // early ray termination of a front-to-back image
   PsiGeometryProjector Geometry;
   PsiComputeProjector Compute;
   PsiDepthPeelingCalls Peeling; // the depth-peeling stage of this call
@@ -40,6 +42,20 @@ struct vtkPsiVolumeMapper::Internals
   PsiSamplesPassed Samples; // the volume's samples that pass the depth test (testing aid)
   bool CountSamples = false;
   uint64_t SamplesPassed = 0; // counted over the last frame's draws
+  // The volume's samples counted between these two calls, when asked (not the masks': one
+  // GL_SAMPLES_PASSED query runs at a time).
+  void StartCounting()
+  {
+    if (this->CountSamples)
+    {
+      this->Samples.Begin();
+    }
+  }
+  void StopCounting()
+  {
+    this->Samples.End();
+    this->SamplesPassed += this->Samples.Take();
+  }
   // The way each frame draws, timed on the first frames under 'Auto' (PsiMeasuredChoice.h), and
   // the seconds the last frame spent making its programs ready (not the way's cost; -1: nothing
   // drawn).
@@ -76,6 +92,7 @@ struct vtkPsiVolumeMapper::Internals
     this->Tables.ReleaseGraphicsResources(win);
     this->Peeling.ReleaseGraphicsResources(win);
     this->Target.ReleaseGraphicsResources(win);
+    this->Masks.ReleaseGraphicsResources(win);
     this->Geometry.ReleaseGraphicsResources();
     this->Compute.ReleaseGraphicsResources(win);
     if (this->Union)
