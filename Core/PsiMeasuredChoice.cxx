@@ -134,9 +134,17 @@ bool MeasuredChoice::NextTrial()
           w.MasksPerFrame == FewerMasksPerFrame ? DefaultMasksPerFrame : FewerMasksPerFrame;
         break;
       case Dimension::Projector:
+        if (!w.Silhouette)
+        {
+          continue; // the compute projector's fan is not the same image (NotTimedTogether)
+        }
         w.ComputeProjector = !w.ComputeProjector;
         break;
       case Dimension::Decomposition:
+        if (w.ComputeProjector)
+        {
+          continue;
+        }
         w.Silhouette = !w.Silhouette;
         break;
     }
