@@ -3,7 +3,7 @@
 // the scene, not on a rule: early ray termination pays where many pixels turn opaque and costs
 // where a few do (its masks are full-screen passes); the compute projector and the fan pay on
 // some meshes and drivers and not on others. Under 'Auto' the first frames after anything that
-// decides changes (the mesh, its values, the transfer function, a setting, the view's size, the
+// decides changes (the mesh, the transfer function, a setting, the view's size, the
 // volume's projected size by more than ProjectedSizeRatio) time the alternatives one at a time,
 // and the frames after them draw the fastest. A setting that is not 'Auto' leaves its
 // alternative closed. GL-free: the mapper gives the times (TestMeasuredChoice).

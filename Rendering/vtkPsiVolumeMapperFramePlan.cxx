@@ -135,16 +135,16 @@ void vtkPsiVolumeMapper::NotePlan(const PsiFramePlan& plan)
 }
 
 // The way this frame draws (PsiMeasuredChoice.h): the plan's, or where a setting is 'Auto' the
-// way being timed or the fastest timed. What decides which way is fastest: the mesh and its
-// values, the sampled transfer function, the settings (the mapper's modification time), the
-// view's size, the features the scene calls for, and the volume's projected size.
+// way being timed or the fastest timed. What decides which way is fastest: the mesh (not its
+// values: a time step on the same mesh keeps the choice, unless its range changes the sampled
+// transfer function), the sampled transfer function, the settings (the mapper's modification
+// time), the view's size, the features the scene calls for, and the volume's projected size.
 PsiFramePlan vtkPsiVolumeMapper::ChooseWay(
   const PsiFramePlan& plan, vtkRenderer* ren, const PsiFrameCamera& cam)
 {
   Internals& I = *this->Impl;
   const int* size = ren->GetSize();
   const std::string decides = std::to_string(I.Mesh.GetVersion()) + " " +
-    std::to_string(I.Mesh.GetScalarsVersion()) + " " +
     std::to_string(I.Tables.Transfer.GetVersion()) + " " + std::to_string(this->GetMTime()) + " " +
     std::to_string(size[0]) + "x" + std::to_string(size[1]) + " " + plan.Features.Key();
   const double pixels = double(size[0]) * double(size[1]) *
