@@ -4,9 +4,9 @@
 // the literature) and on a ~1M-tetrahedra mesh (a 56^3 image, 6 per hexahedron).
 // Usage: bench_tetrahedralize_sort [DATA_DIR]
 #include "PsiBluntFin.h"
+#include "PsiCellCenterDepthSort.h"
 #include "PsiMPVONCSort.h"
 #include "PsiTetConnectivity.h"
-#include "PsiVisibilitySort.h"
 #include "vtkPsiConformingTetrahedralize.h"
 
 #include "vtkCellArray.h"

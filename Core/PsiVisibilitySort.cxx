@@ -1,95 +1,156 @@
 #include "PsiVisibilitySort.h"
 
+#include "PsiCellCenterDepthSort.h"
+#include "PsiMPVONCSort.h"
 #include "PsiParallel.h"
+#include "PsiTetConnectivity.h"
 
 #include "vtkSMPTools.h"
 
-#include <cstring>
+#include <algorithm>
+#include <atomic>
 
 namespace psi
 {
+VisibilitySort::~VisibilitySort() = default;
+
 namespace
 {
-// Maps a float onto uint32 so that unsigned order equals float order
-// (sign-magnitude flip).
-uint32_t OrderedBits(float f)
+class CentroidSort : public VisibilitySort
 {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof(u));
-  return (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+public:
+  void SetMesh(const TetMesh* mesh, std::vector<int32_t>) override
+  {
+    this->Centroids = ComputeCentroids(mesh->Points4.data(), mesh->Cells(), mesh->NumberOfTets());
+  }
+  size_t Sort(const double eye[3], bool parallel, std::vector<uint32_t>& order,
+    const std::function<void(size_t)>& emitted, SortDirection direction) override
+  {
+    SortBackToFront(this->Centroids, eye, parallel, order);
+    if (direction == SortDirection::NearestFirst)
+    {
+      std::reverse(order.begin(), order.end());
+    }
+    if (emitted)
+    {
+      emitted(order.size());
+    }
+    return 0;
+  }
+
+private:
+  std::vector<float> Centroids;
+};
+
+class MPVONC : public VisibilitySort
+{
+public:
+  void SetMesh(const TetMesh* mesh, std::vector<int32_t> faceNeighbors) override
+  {
+    this->Mesh = mesh;
+    this->Neighbors = std::move(faceNeighbors);
+    if (!this->Neighbors.empty() && !FaceNeighborsMatch(*mesh, this->Neighbors))
+    {
+      this->Neighbors.clear();
+    }
+  }
+  size_t Sort(const double eye[3], bool parallel, std::vector<uint32_t>& order,
+    const std::function<void(size_t)>& emitted, SortDirection direction) override
+  {
+    const size_t n = this->Mesh->NumberOfTets();
+    if (this->Neighbors.size() != 4 * n)
+    {
+      Parallel(
+        [&] {
+          ComputeTetNeighbors(
+            this->Mesh->Cells(), n, this->Mesh->NumberOfPoints(), this->Neighbors);
+        });
+    }
+    const MPVONCResult r = SortMPVONC(this->Mesh->Points4.data(), this->Mesh->Cells(), n,
+      this->Neighbors.data(), eye, parallel, order, emitted, direction);
+    return r.CyclesBroken;
+  }
+
+private:
+  const TetMesh* Mesh = nullptr;
+  std::vector<int32_t> Neighbors;
+};
+
+// Whether tetrahedron `other` has a point at the position of point id `p`.
+bool HasPointAt(const TetMesh& m, TetCells cells, uint32_t other, uint32_t p)
+{
+  const float* q = &m.Points4[4 * static_cast<size_t>(p)];
+  for (int v = 0; v < 4; ++v)
+  {
+    const float* r = &m.Points4[4 * static_cast<size_t>(cells(other, v))];
+    if (r[0] == q[0] && r[1] == q[1] && r[2] == q[2])
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Whether the four neighbour entries of tetrahedron `t` name tetrahedra that have its faces.
+bool NeighborsMatchAt(const TetMesh& m, TetCells cells, const std::vector<int32_t>& nb, uint32_t t)
+{
+  const size_t n = m.NumberOfTets();
+  for (int f = 0; f < 4; ++f)
+  {
+    const int32_t j = nb[4 * static_cast<size_t>(t) + f];
+    if (j < 0)
+    {
+      continue;
+    }
+    bool match = static_cast<size_t>(j) < n && static_cast<uint32_t>(j) != t;
+    for (int v = 0; v < 4 && match; ++v) // face f is opposite vertex f
+    {
+      match = v == f || HasPointAt(m, cells, static_cast<uint32_t>(j), cells(t, v));
+    }
+    if (!match)
+    {
+      return false;
+    }
+  }
+  return true;
 }
 } // namespace
 
-std::vector<float> ComputeCentroids(const float* points4, TetCells tets, size_t numTets)
+bool FaceNeighborsMatch(const TetMesh& m, const std::vector<int32_t>& nb)
 {
-  std::vector<float> c(3 * numTets);
+  const size_t n = m.NumberOfTets();
+  if (nb.size() != 4 * n)
+  {
+    return false;
+  }
+  const TetCells cells = m.Cells();
+  std::atomic<bool> ok(true);
+  // on threads even under ParaView's Sequential default (psi::Parallel)
   Parallel(
     [&]
     {
-      vtkSMPTools::For(0, static_cast<vtkIdType>(numTets),
+      vtkSMPTools::For(0, static_cast<vtkIdType>(n),
         [&](vtkIdType begin, vtkIdType end)
         {
-          for (vtkIdType t = begin; t < end; ++t)
+          for (vtkIdType t = begin; t < end && ok.load(std::memory_order_relaxed); ++t)
           {
-            float s[3] = { 0, 0, 0 };
-            for (int v = 0; v < 4; ++v)
+            if (!NeighborsMatchAt(m, cells, nb, static_cast<uint32_t>(t)))
             {
-              const float* p = points4 + 4 * static_cast<size_t>(tets(t, v));
-              s[0] += p[0];
-              s[1] += p[1];
-              s[2] += p[2];
+              ok = false;
             }
-            c[3 * t + 0] = 0.25f * s[0];
-            c[3 * t + 1] = 0.25f * s[1];
-            c[3 * t + 2] = 0.25f * s[2];
           }
         });
     });
-  return c;
+  return ok;
 }
 
-void SortBackToFront(const std::vector<float>& centroids, const double eye[3], bool parallel,
-  std::vector<uint32_t>& order)
+std::unique_ptr<VisibilitySort> NewCentroidSort()
 {
-  const size_t n = centroids.size() / 3;
-  // Key: ~(distance bits) in the high word so that ascending order is farthest
-  // first; the cell id in the low word makes the order deterministic.
-  std::vector<uint64_t> keys(n);
-  Parallel(
-    [&]
-    {
-      const float e[3] = { static_cast<float>(eye[0]), static_cast<float>(eye[1]),
-        static_cast<float>(eye[2]) };
-      vtkSMPTools::For(0, static_cast<vtkIdType>(n),
-        [&](vtkIdType begin, vtkIdType end)
-        {
-          for (vtkIdType i = begin; i < end; ++i)
-          {
-            const float* c = &centroids[3 * i];
-            float d;
-            if (parallel)
-            {
-              d = c[0] * e[0] + c[1] * e[1] + c[2] * e[2];
-            }
-            else
-            {
-              const float dx = c[0] - e[0], dy = c[1] - e[1], dz = c[2] - e[2];
-              d = dx * dx + dy * dy + dz * dz;
-            }
-            keys[i] = (static_cast<uint64_t>(~OrderedBits(d)) << 32) | static_cast<uint64_t>(i);
-          }
-        });
-      vtkSMPTools::Sort(keys.begin(), keys.end());
-      order.resize(n);
-      vtkSMPTools::For(0, static_cast<vtkIdType>(n),
-        [&](vtkIdType begin, vtkIdType end)
-        {
-          for (vtkIdType i = begin; i < end; ++i)
-          {
-            order[i] = static_cast<uint32_t>(keys[i] & 0xffffffffu);
-          }
-        });
-    });
+  return std::unique_ptr<VisibilitySort>(new CentroidSort);
 }
 
+std::unique_ptr<VisibilitySort> NewMPVONCSort()
+{
+  return std::unique_ptr<VisibilitySort>(new MPVONC);
+}
 } // namespace psi

@@ -1,6 +1,6 @@
 #include "PsiAdaptiveNodes.h"
 
-#include "PsiLookupTextures.h"
+#include "PsiTableTextures.h"
 #include "PsiTetMesh.h"
 #include "PsiTransferFunctionTable.h"
 

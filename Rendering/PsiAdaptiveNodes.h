@@ -1,7 +1,7 @@
 // PsiAdaptiveNodes: the transfer function's nodes for adaptive sampling
 // (psi::TransferFunctionNodes, Moreland 2004, dissertation, §4.3), sent to the fragment shader
 // as uniforms (PsiAdaptiveFS.glsl): a PsiGpuTable that holds no texture, beside the lookup
-// textures (PsiLookupTextures.h); and how far the sampled transfer function is from them, which
+// textures (PsiTableTextures.h); and how far the sampled transfer function is from them, which
 // decides 'Auto'.
 #ifndef PsiAdaptiveNodes_h
 #define PsiAdaptiveNodes_h

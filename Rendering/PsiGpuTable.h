@@ -1,5 +1,5 @@
 // PsiGpuTable: the interface of every GPU table, what the shaders read besides the mesh: a
-// lookup texture (PsiLookupTexture, which owns its texture, and the four of PsiLookupTextures.h)
+// lookup texture (PsiLookupTexture, which owns its texture, and the four of PsiTableTextures.h)
 // or an array of uniforms (PsiAdaptiveNodes). As in VTK's vtkOpenGLVolumeLookupTable:
 // NeedsUpdate and Update from one frame's sources, Activate (bind, and set the uniforms the
 // table's GLSL declares), Deactivate and ReleaseGraphicsResources, with one signature for all.

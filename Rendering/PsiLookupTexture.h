@@ -1,5 +1,5 @@
 // PsiLookupTexture: a GPU table held in one texture, the base of the lookup textures
-// (PsiLookupTextures.h), as VTK's vtkOpenGLVolumeLookupTable is the base of its volume mapper's
+// (PsiTableTextures.h), as VTK's vtkOpenGLVolumeLookupTable is the base of its volume mapper's
 // color and opacity tables. The base owns the texture and does what is the same for every such
 // table: Activate binds the texture and points the table's sampler uniform at its unit before the
 // table sets its other uniforms (SetUniforms); Deactivate unbinds it; ReleaseGraphicsResources

@@ -1,7 +1,7 @@
 // PsiVisibilityOrder: the visibility order of the tetrahedra (farthest first, or nearest first
 // for front-to-back compositing), streamed to the GPU as GL_POINTS
 // (one per tetrahedron carrying its four point ids, Maximo et al. 2010 §3.1). It owns the sort
-// (centroid or MPVONC, psi::TetSort) and re-sorts only when the mesh, the view or the sort
+// (centroid or MPVONC, psi::VisibilitySort) and re-sorts only when the mesh, the view or the sort
 // method changes.
 //
 // The sort runs on a worker thread while the frame draws. MPVONC emits the order from its
@@ -15,7 +15,7 @@
 #include "PsiMeasuredChoice.h" // psi::DefaultMasksPerFrame
 #include "PsiSettings.h"       // psi::Sorts
 #include "PsiSortDirection.h"
-#include "PsiTetSort.h"
+#include "PsiVisibilitySort.h"
 
 #include <algorithm>
 #include <array>
@@ -46,7 +46,7 @@ public:
   }
   /// Starts sorting `mesh` for the view (on the worker thread); `mesh` must stay unchanged while
   /// this order draws it. `faceNeighbors` (may be empty) are offered to the sort when the mesh
-  /// or the method changed (see psi::TetSort::SetMesh).
+  /// or the method changed (see psi::VisibilitySort::SetMesh).
   void Update(const psi::TetMesh& mesh, int meshVersion, std::vector<int32_t> faceNeighbors,
     psi::Sorts method, const double mcvc[16], bool parallel, psi::SortDirection direction);
   /// Streams the tetrahedra in order, chunk by chunk, each as soon as the sort has finished it:
@@ -97,7 +97,7 @@ private:
   /// The sort's report from its thread: entries of Order that are final.
   void Emitted(size_t count);
 
-  std::unique_ptr<psi::TetSort> Sort;
+  std::unique_ptr<psi::VisibilitySort> Sort;
   std::thread Worker;
   std::mutex Lock;
   std::condition_variable Progress;

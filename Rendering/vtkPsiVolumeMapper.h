@@ -7,13 +7,13 @@
  * (docs/architecture.md follows a frame through them):
  *  - PsiMeshBuffers: the tetrahedra gathered from the input (psi::GatherTetMesh) and uploaded
  *    once: the points as a texture buffer;
- *  - PsiVisibilityOrder: back-to-front order (centroid or MPVONC, psi::TetSort), sorted on a
+ *  - PsiVisibilityOrder: back-to-front order (centroid or MPVONC, psi::VisibilitySort), sorted on a
  *    worker thread when the view changes, each tetrahedron's four point ids streamed to the GPU
  *    as one GL_POINTS vertex, chunk by chunk as the sort emits them;
  *  - PlanFrame (PsiFramePlan.h): what the scene calls for, from the settings (psi::Settings,
  *    Core/PsiSettings.h) and the scene's facts, with no GL call: the features and the tables
  *    they read;
- *  - PsiLookupTextures, PsiAdaptiveNodes: transfer function, opacity prefix, Psi and
+ *  - PsiTableTextures, PsiAdaptiveNodes: transfer function, opacity prefix, Psi and
  *    pre-integration tables, adaptive nodes, each a PsiGpuTable;
  *  - psi::ComposeShaders: the program for the plan's features;
  *  - PsiRenderTarget: scene depth copies, the float target, the composite over the scene.

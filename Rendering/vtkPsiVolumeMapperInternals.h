@@ -11,12 +11,12 @@
 #include "PsiDriverLimits.h"
 #include "PsiGeometryProjector.h"
 #include "PsiIntermixedScene.h"
-#include "PsiLookupTextures.h"
 #include "PsiMeasuredChoice.h"
 #include "PsiMeshBuffers.h"
 #include "PsiOpacityMasks.h"
 #include "PsiRenderTarget.h"
 #include "PsiSamplesPassed.h"
+#include "PsiTableTextures.h"
 #include "PsiVisibilityOrder.h"
 
 #include "vtkSmartPointer.h"

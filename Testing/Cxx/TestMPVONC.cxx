@@ -4,10 +4,10 @@
 // here independently with CGAL's exact orientation); disconnected components are ordered by
 // depth; a constructed cycle and random cyclic graphs terminate with a permutation and report
 // the cycles; edge-on faces impose nothing. The centroid sort's violations are printed alongside.
+#include "PsiCellCenterDepthSort.h"
 #include "PsiMPVONCSort.h"
 #include "PsiTestCheck.h"
 #include "PsiTetConnectivity.h"
-#include "PsiVisibilitySort.h"
 #include "vtkPsiConformingTetrahedralize.h"
 
 #include "vtkCellArray.h"

@@ -16,8 +16,8 @@
 #include "PsiTestMeshes.h"
 #include "PsiTestTransferFunction.h"
 #include "PsiTestView.h"
-#include "PsiTetSort.h"
 #include "PsiVec3.h"
+#include "PsiVisibilitySort.h"
 #include "vtkPsiVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -200,7 +200,7 @@ void CheckCentroidDefinition(vtkUnstructuredGrid* grid, const double eye[3], boo
     mesh.Tets.insert(
       mesh.Tets.end(), { uint32_t(ids[0]), uint32_t(ids[1]), uint32_t(ids[2]), uint32_t(ids[3]) });
   }
-  std::unique_ptr<psi::TetSort> sort = psi::NewCentroidSort();
+  std::unique_ptr<psi::VisibilitySort> sort = psi::NewCentroidSort();
   sort->SetMesh(&mesh, {});
   std::vector<uint32_t> order;
   sort->Sort(eye, parallel, order);
@@ -260,7 +260,7 @@ void CheckMPVONCTies()
       mesh.Tets.push_back(4 * static_cast<uint32_t>(t) + v);
     }
   }
-  std::unique_ptr<psi::TetSort> sort = psi::NewMPVONCSort();
+  std::unique_ptr<psi::VisibilitySort> sort = psi::NewMPVONCSort();
   sort->SetMesh(&mesh, {});
   const double dir[3] = { 0, 0, -1 };
   std::vector<uint32_t> order;

@@ -13,8 +13,8 @@
 #include "PsiTestCheck.h"
 #include "PsiTetConnectivity.h"
 #include "PsiTetMesh.h"
-#include "PsiTetSort.h"
 #include "PsiTransferFunctionAnalysis.h"
+#include "PsiVisibilitySort.h"
 #include "vtkPsiConformingTetrahedralize.h"
 
 #include "vtkCellArray.h"

@@ -1,4 +1,4 @@
-// PsiLookupTextures: the lookup textures the fragment and geometry shaders read, one class per
+// PsiTableTextures: the lookup textures the fragment and geometry shaders read, one class per
 // table, each a PsiLookupTexture (which owns the texture, binds, unbinds and releases it) with
 // its own NeedsUpdate and Update from one frame's PsiTableSources and the uniforms beside its
 // sampler. On the CPU side each is made from one of Core's tables (docs/architecture.md, "Words").
@@ -12,8 +12,8 @@
 //  - PsiFullPreIntegrationTexture: the 3D pre-integration table of one transfer function
 //    (psi::PreIntegrationTable; Röttger, Kraus & Ertl 2000 §4), rebuilt when the sampled function
 //    changes.
-#ifndef PsiLookupTextures_h
-#define PsiLookupTextures_h
+#ifndef PsiTableTextures_h
+#define PsiTableTextures_h
 
 #include "PsiLookupTexture.h"
 #include "PsiPreIntegrationTable.h"

@@ -1,4 +1,4 @@
-#include "PsiLookupTextures.h"
+#include "PsiTableTextures.h"
 
 #include "PsiPartialPreIntegrationTable.h"
 #include "PsiTransferFunctionAnalysis.h"
