@@ -51,11 +51,11 @@ bool CanSaturate(const psi::Settings& s, const PsiSceneFacts& facts)
 // image, open to measurement where the setting is 'Auto' (psi::MeasuredChoice). Front to back
 // when 'On' (with the default masks), or under 'Auto' where a pixel can turn opaque, with back
 // to front and fewer masks timed against it.
-// The compute projector where the driver runs it. The fan where its fragments find exact
-// segments from the face planes (perspective with exact segments: in parallel it interpolates
-// HAPT's screen-linear thickness, 6/255 from the silhouettes' image on TestPsiMeasuredChoice's
-// scene) and nothing needs silhouettes. Within depth peeling
-// (one call per peeling stage) nothing is measured.
+// The compute projector where the driver runs it. Not the fan: it is not the silhouettes' image
+// at isolated pixels (8/255 at one pixel of TestPsiMeasuredChoice's view, 38/255 at one of
+// TestPsiVolumeRender's, where the silhouettes are within 1.5/255 of the exact image), and was
+// the slower on every benchmark scene. Within depth peeling (one call per peeling stage)
+// nothing is measured.
 void PlanWay(PsiFramePlan& plan, const psi::Settings& s, const PsiSceneFacts& facts)
 {
   const psi::ShaderFeatures& f = plan.Features;
@@ -68,8 +68,6 @@ void PlanWay(PsiFramePlan& plan, const psi::Settings& s, const PsiSceneFacts& fa
   plan.Open.Direction = autoFront;
   plan.Open.MasksPerFrame = autoFront;
   plan.Open.Projector = s.Projector == psi::Projectors::Auto && facts.ComputeAvailable;
-  plan.Open.Decomposition = s.Decomposition == psi::Decompositions::Auto && f.Silhouette &&
-    !f.SeparateOpacity && f.ExactSegments;
   if (facts.DepthPeeled)
   {
     plan.Open = psi::DrawWayOptions();

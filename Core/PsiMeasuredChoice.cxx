@@ -54,8 +54,7 @@ DrawWay MeasuredChoice::Next(const std::string& decides, double projectedPixels,
   const double ratio = (projectedPixels + 1) / (this->MeasuredPixels + 1);
   const bool sizeChanged = ratio > ProjectedSizeRatio || ratio < 1 / ProjectedSizeRatio;
   const bool openChanged = open.Direction != this->Open.Direction ||
-    open.MasksPerFrame != this->Open.MasksPerFrame || open.Projector != this->Open.Projector ||
-    open.Decomposition != this->Open.Decomposition;
+    open.MasksPerFrame != this->Open.MasksPerFrame || open.Projector != this->Open.Projector;
   if (!this->Started || decides != this->Decides || first != this->First || openChanged ||
     (open.Any() && sizeChanged))
   {
@@ -79,8 +78,7 @@ void MeasuredChoice::Restart(const DrawWay& first)
   this->Pending.clear();
   const std::pair<bool, Dimension> dims[] = { { this->Open.Direction, Dimension::Direction },
     { this->Open.MasksPerFrame, Dimension::MasksPerFrame },
-    { this->Open.Projector, Dimension::Projector },
-    { this->Open.Decomposition, Dimension::Decomposition } };
+    { this->Open.Projector, Dimension::Projector } };
   for (const auto& d : dims)
   {
     if (d.first)
@@ -134,18 +132,7 @@ bool MeasuredChoice::NextTrial()
           w.MasksPerFrame == FewerMasksPerFrame ? DefaultMasksPerFrame : FewerMasksPerFrame;
         break;
       case Dimension::Projector:
-        if (!w.Silhouette)
-        {
-          continue; // the compute projector's fan is not the same image (NotTimedTogether)
-        }
         w.ComputeProjector = !w.ComputeProjector;
-        break;
-      case Dimension::Decomposition:
-        if (w.ComputeProjector)
-        {
-          continue;
-        }
-        w.Silhouette = !w.Silhouette;
         break;
     }
     this->Trial = w;

@@ -1,12 +1,13 @@
 // PsiMeasuredChoice: the ways of drawing one frame that give the same image (within 1/255), and
 // the choice among them by timing them on the user's own scene. Which way is fastest depends on
 // the scene, not on a rule: early ray termination pays where many pixels turn opaque and costs
-// where a few do (its masks are full-screen passes); the compute projector and the fan pay on
-// some meshes and drivers and not on others. Under 'Auto' the first frames after anything that
-// decides changes (the mesh, the transfer function, a setting, the view's size, the
-// volume's projected size by more than ProjectedSizeRatio) time the alternatives one at a time,
-// and the frames after them draw the fastest. A setting that is not 'Auto' leaves its
-// alternative closed. GL-free: the mapper gives the times (TestMeasuredChoice).
+// where a few do (its masks are full-screen passes); the compute projector pays on some meshes
+// and drivers and not on others. Under 'Auto' the first frames after anything that decides
+// changes (the mesh, the transfer function, a setting, the view's size, the volume's projected
+// size by more than ProjectedSizeRatio) time the alternatives one at a time, and the frames
+// after them draw the fastest. A setting that is not 'Auto' leaves its alternative closed. The
+// fan (Decomposition) is not an alternative: at isolated pixels it is not the silhouettes' image
+// (docs/decisions.md). GL-free: the mapper gives the times (TestMeasuredChoice).
 #ifndef PsiMeasuredChoice_h
 #define PsiMeasuredChoice_h
 
@@ -50,11 +51,7 @@ struct DrawWayOptions
   bool Direction = false;     ///< back to front as well as front to back
   bool MasksPerFrame = false; ///< front to back: FewerMasksPerFrame as well
   bool Projector = false;     ///< the compute projector as well
-  bool Decomposition = false; ///< the fan as well
-  bool Any() const
-  {
-    return this->Direction || this->MasksPerFrame || this->Projector || this->Decomposition;
-  }
+  bool Any() const { return this->Direction || this->MasksPerFrame || this->Projector; }
 };
 
 /// The fraction of a view (0..1) that the box `bounds` covers, from its eight corners
@@ -63,9 +60,6 @@ struct DrawWayOptions
 PSIVOLUMECORE_EXPORT double ProjectedFraction(
   const double bounds[6], const double modelToView[16], const double viewToClip[16]);
 
-/// The compute projector is timed with silhouettes only, and the fan with the geometry shader
-/// only: the compute projector's fan draws 8-11/255 from the other ways in perspective
-/// (TestPsiMeasuredChoice), so the two are never timed together.
 class PSIVOLUMECORE_EXPORT MeasuredChoice
 {
 public:
@@ -102,8 +96,7 @@ private:
   {
     Direction,
     MasksPerFrame,
-    Projector,
-    Decomposition
+    Projector
   };
   void Restart(const DrawWay& first);
   bool NextTrial();

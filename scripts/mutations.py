@@ -471,8 +471,7 @@ MUTATIONS = [
              "return facts.MasksOpaquePixels && !f.DepthPeel;",
              "return facts.MasksOpaquePixels;", ["PsiCore.FramePlan"]),
     # 'Auto' and its measurement (psi::MeasuredChoice): the slower way kept; a new transfer
-    # function or mesh not measured again; the fan timed in parallel, where it draws another
-    # image; an alternative opened under a forced setting.
+    # function or mesh not measured again; an alternative opened under a forced setting.
     Mutation("measured_choice_keeps_the_slower", "Core/PsiMeasuredChoice.cxx",
              "if (this->TrialSeconds < this->BestSeconds)",
              "if (this->BestSeconds == std::numeric_limits<double>::infinity())",
@@ -480,9 +479,10 @@ MUTATIONS = [
     Mutation("measured_choice_not_again", "Core/PsiMeasuredChoice.cxx",
              "if (!this->Started || decides != this->Decides ||",
              "if (!this->Started ||", ["PsiCore.MeasuredChoice", "PsiRendering.MeasuredChoice"]),
-    Mutation("measured_choice_fan_in_parallel", "Core/PsiFramePlan.cxx",
-             "!f.SeparateOpacity && f.ExactSegments;",
-             "!f.SeparateOpacity && true;", ["PsiCore.FramePlan", "PsiRendering.MeasuredChoice"]),
+    Mutation("measured_choice_despite_forced_projector", "Core/PsiFramePlan.cxx",
+             "plan.Open.Projector = s.Projector == psi::Projectors::Auto && facts.ComputeAvailable;",
+             "plan.Open.Projector = facts.ComputeAvailable;",
+             ["PsiCore.FramePlan", "PsiRendering.MeasuredChoice"]),
     Mutation("measured_choice_despite_forced_direction", "Core/PsiFramePlan.cxx",
              "plan.Open.Direction = autoFront;", "plan.Open.Direction = possible;",
              ["PsiCore.FramePlan", "PsiRendering.MeasuredChoice"]),

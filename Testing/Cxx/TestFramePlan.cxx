@@ -229,35 +229,26 @@ void TestEarlyRayTermination()
   }
 }
 
-// The projector and the decomposition: their 'Auto' is the geometry shader and the silhouette,
-// with the other open to timing where it draws the same image.
+// The projector and the decomposition: their 'Auto' is the geometry shader and the silhouette;
+// the compute projector is timed against it where the driver has it, the fan never (not the
+// silhouettes' image at isolated pixels).
 void TestOpenWays()
 {
   psi::Settings s; // every 'Auto'
   PsiSceneFacts facts = Facts();
   facts.ComputeAvailable = true;
   PsiFramePlan plan = PlanFrame(s, facts);
-  PSI_CHECK(!plan.Way.ComputeProjector && plan.Way.Silhouette && plan.Open.Projector &&
-      plan.Open.Decomposition,
-    "'Auto': geometry shader and silhouettes first, the others timed");
+  PSI_CHECK(!plan.Way.ComputeProjector && plan.Way.Silhouette && plan.Features.Silhouette &&
+      plan.Open.Projector,
+    "'Auto': geometry shader and silhouettes, the compute projector timed");
   facts.ComputeAvailable = false;
   PSI_CHECK(!PlanFrame(s, facts).Open.Projector, "no compute projector on this driver");
   s.Projector = psi::Projectors::ComputeShader;
   s.Decomposition = psi::Decompositions::Fan;
   plan = PlanFrame(s, facts);
   PSI_CHECK(plan.Way.ComputeProjector && !plan.Way.Silhouette && !plan.Features.Silhouette &&
-      !plan.Open.Projector && !plan.Open.Decomposition,
+      !plan.Open.Projector,
     "an explicit setting forces its way");
-  s = psi::Settings();
-  s.ExactPerspectiveSegments = false;
-  PSI_CHECK(!PlanFrame(s, facts).Open.Decomposition,
-    "the fan without exact segments in perspective draws another image");
-  s.ExactPerspectiveSegments = true;
-  facts.Parallel = true;
-  PSI_CHECK(!PlanFrame(s, facts).Open.Decomposition, "in parallel the fan interpolates HAPT's");
-  facts.Parallel = false;
-  facts.SeparateOpacity = true;
-  PSI_CHECK(!PlanFrame(s, facts).Open.Decomposition, "a separate opacity needs silhouettes");
   plan = UseWay(PlanFrame(Settings(), Facts()), psi::DrawWay{ true, 4, true, false });
   PSI_CHECK(plan.Way.ComputeProjector && !plan.Features.Silhouette && plan.Way.MasksPerFrame == 4,
     "UseWay: the way and its silhouette feature");
