@@ -25,7 +25,8 @@ namespace psi
 constexpr int DefaultMasksPerFrame = 16;
 constexpr int FewerMasksPerFrame = 4;
 
-/// One way of drawing a frame; every way draws the same image within 1/255.
+/// One way of drawing a frame. The alternatives 'Auto' times draw the same image within 1/255;
+/// the decomposition is the settings' (the fan is not timed, PlanFrame).
 struct DrawWay
 {
   /// Front to back with early ray termination ("under"), else back to front ("over").
