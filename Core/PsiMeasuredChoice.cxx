@@ -1,7 +1,8 @@
 #include "PsiMeasuredChoice.h"
 
+#include "vtkMatrix4x4.h"
+
 #include <algorithm>
-#include <cmath>
 
 namespace psi
 {
@@ -19,22 +20,15 @@ std::string DrawWay::Describe() const
 double ProjectedFraction(
   const double b[6], const double modelToView[16], const double viewToClip[16])
 {
+  double modelToClip[16];
+  vtkMatrix4x4::Multiply4x4(viewToClip, modelToView, modelToClip);
   double lo[2] = { 1, 1 }, hi[2] = { -1, -1 };
   for (int corner = 0; corner < 8; ++corner)
   {
     const double p[4] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)],
       1 };
-    double v[4], c[4];
-    for (int r = 0; r < 4; ++r)
-    {
-      v[r] = modelToView[4 * r] * p[0] + modelToView[4 * r + 1] * p[1] +
-        modelToView[4 * r + 2] * p[2] + modelToView[4 * r + 3] * p[3];
-    }
-    for (int r = 0; r < 4; ++r)
-    {
-      c[r] = viewToClip[4 * r] * v[0] + viewToClip[4 * r + 1] * v[1] +
-        viewToClip[4 * r + 2] * v[2] + viewToClip[4 * r + 3] * v[3];
-    }
+    double c[4];
+    vtkMatrix4x4::MultiplyPoint(modelToClip, p, c);
     if (!(c[3] > 0))
     {
       return 1; // behind the eye: the box may cover the whole view
@@ -53,9 +47,7 @@ DrawWay MeasuredChoice::Next(const std::string& decides, double projectedPixels,
 {
   const double ratio = (projectedPixels + 1) / (this->MeasuredPixels + 1);
   const bool sizeChanged = ratio > ProjectedSizeRatio || ratio < 1 / ProjectedSizeRatio;
-  const bool openChanged = open.Direction != this->Open.Direction ||
-    open.MasksPerFrame != this->Open.MasksPerFrame || open.Projector != this->Open.Projector;
-  if (!this->Started || decides != this->Decides || first != this->First || openChanged ||
+  if (!this->Started || decides != this->Decides || first != this->First || open != this->Open ||
     (open.Any() && sizeChanged))
   {
     this->Decides = decides;

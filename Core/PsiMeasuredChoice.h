@@ -53,6 +53,12 @@ struct DrawWayOptions
   bool MasksPerFrame = false; ///< front to back: FewerMasksPerFrame as well
   bool Projector = false;     ///< the compute projector as well
   bool Any() const { return this->Direction || this->MasksPerFrame || this->Projector; }
+  bool operator==(const DrawWayOptions& o) const
+  {
+    return this->Direction == o.Direction && this->MasksPerFrame == o.MasksPerFrame &&
+      this->Projector == o.Projector;
+  }
+  bool operator!=(const DrawWayOptions& o) const { return !(*this == o); }
 };
 
 /// The fraction of a view (0..1) that the box `bounds` covers, from its eight corners
@@ -81,13 +87,10 @@ public:
   void Record(double seconds);
 
   bool IsMeasuring() const { return this->Measuring; }
-  /// Whether any alternative is open (else the way is the settings' and nothing is timed).
-  bool HasAlternatives() const { return this->Open.Any(); }
   /// Ways timed since the measurement started, including the one being timed.
   int GetWaysTimed() const { return this->WaysTimed; }
-  /// The fastest way found so far and its seconds (infinite before the first is timed).
+  /// The fastest way found so far.
   const DrawWay& GetBest() const { return this->Best; }
-  double GetBestSeconds() const { return this->BestSeconds; }
   /// One line for the read-outs: "measuring (way 2)", "chosen by measurement of 4 ways" or
   /// "as set".
   std::string Describe() const;
