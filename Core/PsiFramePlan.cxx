@@ -64,7 +64,6 @@ void PlanWay(PsiFramePlan& plan, const psi::Settings& s, const PsiSceneFacts& fa
   const bool autoFront = s.EarlyRayTermination == ERT::Auto && possible && CanSaturate(s, facts);
   plan.Way.FrontToBack = (s.EarlyRayTermination == ERT::On && possible) || autoFront;
   plan.Way.ComputeProjector = psi::UsesComputeProjector(s);
-  plan.Way.Silhouette = f.Silhouette;
   plan.Open.Direction = autoFront;
   plan.Open.MasksPerFrame = autoFront;
   plan.Open.Projector = s.Projector == psi::Projectors::Auto && facts.ComputeAvailable;
@@ -129,13 +128,5 @@ PsiFramePlan PlanFrame(const psi::Settings& s, const PsiSceneFacts& facts)
   plan.Tables.Gradients = f.IsoSmooth;
   plan.SceneDepth = facts.SceneOpaque || f.NearClip || f.OpaqueClip;
   PlanWay(plan, s, facts);
-  return plan;
-}
-
-PsiFramePlan UseWay(PsiFramePlan plan, const psi::DrawWay& way)
-{
-  plan.Trial = way != plan.Way;
-  plan.Way = way;
-  plan.Features.Silhouette = way.Silhouette;
   return plan;
 }

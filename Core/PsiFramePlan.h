@@ -65,13 +65,13 @@ struct PsiFramePlan
   bool SceneDepth = false;
   /// How the frame is drawn: front to back ("under", the nearest tetrahedra first, shading
   /// stopped where a pixel's opacity has reached psi::SaturatedOpacity: early ray termination)
-  /// or back to front ("over"); the projector; silhouettes or the fan (Features.Silhouette
-  /// follows it). Each 'Auto' resolved to its default; psi::MeasuredChoice may pick another of
-  /// the Open ways, which draw the same image (UseWay).
+  /// or back to front ("over"), with how many masks; the projector. Each 'Auto' resolved to its
+  /// default; psi::MeasuredChoice may put another of the Open ways, which draw the same image,
+  /// in its place (the mapper's ChooseWay). The decomposition is Features.Silhouette.
   psi::DrawWay Way;
   psi::DrawWayOptions Open;
-  /// The way is an alternative to Way being timed (UseWay, psi::MeasuredChoice): a draw error
-  /// of its own is not the user's (the way just loses).
+  /// The way is an alternative to the plan's own being timed (psi::MeasuredChoice): a draw
+  /// error of its own is not the user's (the way just loses).
   bool Trial = false;
   /// Full pre-integration asked for with a separate opacity array draws as partial
   /// pre-integration: Röttger's table tabulates one scalar for color and opacity.
@@ -81,8 +81,6 @@ struct PsiFramePlan
 /// The frame's plan (the rules are commented where they are applied, PsiFramePlan.cxx).
 PSIVOLUMECORE_EXPORT PsiFramePlan PlanFrame(
   const psi::Settings& settings, const PsiSceneFacts& facts);
-/// The plan drawn the way `way` (plan.Way, or one of plan.Open's alternatives to it: a Trial).
-PSIVOLUMECORE_EXPORT PsiFramePlan UseWay(PsiFramePlan plan, const psi::DrawWay& way);
 /// Whether the scene calls for the adaptive nodes to be computed before the plan: adaptive
 /// sampling is on or 'Auto' (the nodes' deviation decides 'Auto').
 PSIVOLUMECORE_EXPORT bool NeedsAdaptiveNodes(const psi::Settings& settings);

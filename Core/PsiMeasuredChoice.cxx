@@ -13,7 +13,6 @@ std::string DrawWay::Describe() const
     ? "front to back (" + std::to_string(this->MasksPerFrame) + " masks)"
     : "back to front";
   s += this->ComputeProjector ? ", compute shader" : ", geometry shader";
-  s += this->Silhouette ? ", silhouettes" : ", fan";
   return s;
 }
 

@@ -25,8 +25,9 @@ namespace psi
 constexpr int DefaultMasksPerFrame = 16;
 constexpr int FewerMasksPerFrame = 4;
 
-/// One way of drawing a frame. The alternatives 'Auto' times draw the same image within 1/255;
-/// the decomposition is the settings' (the fan is not timed, PlanFrame).
+/// One way of drawing a frame; the alternatives 'Auto' times draw the same image within 1/255.
+/// (The decomposition is not one of them: the fan is not the silhouettes' image at isolated
+/// pixels, PlanFrame.)
 struct DrawWay
 {
   /// Front to back with early ray termination ("under"), else back to front ("over").
@@ -34,14 +35,13 @@ struct DrawWay
   /// Front to back: opacity masks a frame at first.
   int MasksPerFrame = DefaultMasksPerFrame;
   bool ComputeProjector = false; ///< the compute pass, else the geometry shader
-  bool Silhouette = true;        ///< the silhouette, else Shirley and Tuchman's fan
   bool operator==(const DrawWay& o) const
   {
     return this->FrontToBack == o.FrontToBack && this->MasksPerFrame == o.MasksPerFrame &&
-      this->ComputeProjector == o.ComputeProjector && this->Silhouette == o.Silhouette;
+      this->ComputeProjector == o.ComputeProjector;
   }
   bool operator!=(const DrawWay& o) const { return !(*this == o); }
-  /// In words: "front to back (16 masks), geometry shader, silhouettes".
+  /// In words: "front to back (16 masks), geometry shader".
   std::string Describe() const;
 };
 

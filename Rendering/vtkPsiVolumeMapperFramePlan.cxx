@@ -117,10 +117,11 @@ void vtkPsiVolumeMapper::NotePlan(const PsiFramePlan& plan)
                                       : psi::IsosurfaceMethods::PerFragment);
   this->LastUsedEarlyDiscard = f.EarlyDiscard;
   this->LastUsedEarlyRayTermination = plan.Way.FrontToBack;
-  this->LastUsedDecomposition = static_cast<int>(
-    plan.Way.Silhouette ? psi::Decompositions::Silhouette : psi::Decompositions::Fan);
+  this->LastUsedDecomposition =
+    static_cast<int>(f.Silhouette ? psi::Decompositions::Silhouette : psi::Decompositions::Fan);
   this->LastUsedMasksPerFrame = plan.Way.FrontToBack ? plan.Way.MasksPerFrame : 0;
-  this->Stats.DrawWay = plan.Way.Describe() + " (" + I.Choice.Describe() + ")";
+  this->Stats.DrawWay = plan.Way.Describe() + (f.Silhouette ? ", silhouettes" : ", fan") + " (" +
+    I.Choice.Describe() + ")";
   this->LastUsedAdaptiveSampling = f.Adaptive;
   this->LastNumberOfAdaptiveNodes = f.Adaptive ? I.AdaptiveNodes.Size() : 0;
   const std::string note = plan.MethodReplaced
@@ -149,8 +150,9 @@ PsiFramePlan vtkPsiVolumeMapper::ChooseWay(
     std::to_string(size[0]) + "x" + std::to_string(size[1]) + " " + plan.Features.Key();
   const double pixels = double(size[0]) * double(size[1]) *
     psi::ProjectedFraction(I.Mesh.GetMesh().Bounds, cam.MCVC, cam.VCDC);
-  PsiFramePlan chosen = UseWay(plan, I.Choice.Next(decides, pixels, plan.Way, plan.Open));
-  chosen.Trial = chosen.Trial && I.Choice.IsMeasuring(); // a chosen way's errors are said
+  PsiFramePlan chosen = plan;
+  chosen.Way = I.Choice.Next(decides, pixels, plan.Way, plan.Open);
+  chosen.Trial = I.Choice.IsMeasuring() && chosen.Way != plan.Way; // a chosen way's errors are said
   return chosen;
 }
 

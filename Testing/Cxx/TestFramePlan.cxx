@@ -238,20 +238,15 @@ void TestOpenWays()
   PsiSceneFacts facts = Facts();
   facts.ComputeAvailable = true;
   PsiFramePlan plan = PlanFrame(s, facts);
-  PSI_CHECK(!plan.Way.ComputeProjector && plan.Way.Silhouette && plan.Features.Silhouette &&
-      plan.Open.Projector,
+  PSI_CHECK(!plan.Way.ComputeProjector && plan.Features.Silhouette && plan.Open.Projector,
     "'Auto': geometry shader and silhouettes, the compute projector timed");
   facts.ComputeAvailable = false;
   PSI_CHECK(!PlanFrame(s, facts).Open.Projector, "no compute projector on this driver");
   s.Projector = psi::Projectors::ComputeShader;
   s.Decomposition = psi::Decompositions::Fan;
   plan = PlanFrame(s, facts);
-  PSI_CHECK(plan.Way.ComputeProjector && !plan.Way.Silhouette && !plan.Features.Silhouette &&
-      !plan.Open.Projector,
+  PSI_CHECK(plan.Way.ComputeProjector && !plan.Features.Silhouette && !plan.Open.Projector,
     "an explicit setting forces its way");
-  plan = UseWay(PlanFrame(Settings(), Facts()), psi::DrawWay{ true, 4, true, false });
-  PSI_CHECK(plan.Way.ComputeProjector && !plan.Features.Silhouette && plan.Way.MasksPerFrame == 4,
-    "UseWay: the way and its silhouette feature");
 }
 } // namespace
 
