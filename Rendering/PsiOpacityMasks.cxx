@@ -24,7 +24,6 @@ void PsiOpacityMasks::Begin(vtkTextureObject* image, size_t tets, size_t chunk, 
 {
   this->Image = image;
   this->Stride = this->Next = StrideTets(tets, chunk, masksPerFrame);
-  this->Masks = this->FoundOpaque = 0;
 }
 
 // Whether the previous mask of this image found opaque pixels (true before the first). Its
@@ -36,9 +35,7 @@ bool PsiOpacityMasks::PreviousFoundOpaque()
   {
     return true;
   }
-  const bool found = this->Samples.Take() > 0;
-  this->FoundOpaque += found ? 1 : 0;
-  return found;
+  return this->Samples.Take() > 0;
 }
 
 void PsiOpacityMasks::Mask(
@@ -78,7 +75,6 @@ void PsiOpacityMasks::Mask(
     this->Quad->Render();
     this->Samples.End();
     this->Image->Deactivate();
-    ++this->Masks;
   }
   if (drawProgram)
   {

@@ -43,9 +43,6 @@ public:
   void Mask(size_t first, vtkOpenGLRenderWindow* renWin, vtkShaderProgram* drawProgram);
   /// Ends the image: the last mask's count taken (its query free for the next image).
   void End();
-  /// Masks of the last image, and how many of them found an opaque pixel.
-  int GetMasks() const { return this->Masks; }
-  int GetMasksFoundOpaque() const { return this->FoundOpaque; }
   void ReleaseGraphicsResources(vtkWindow* win);
 
   /// Tetrahedra between two masks at first: whole chunks, at most `masksPerFrame` a frame.
@@ -64,7 +61,6 @@ private:
   PsiSamplesPassed Samples;          ///< the pixels the last mask found opaque
   vtkTextureObject* Image = nullptr; ///< the image being drawn (null: no image begun)
   size_t Stride = 0, Next = 0;       ///< tetrahedra between masks; where the next one is due
-  int Masks = 0, FoundOpaque = 0;
 };
 
 #endif

@@ -176,8 +176,7 @@ void vtkPsiVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
         ren, renWin, plan.Features.NearClip || plan.Features.OpaqueClip, plan.SceneDepth))
   {
     const psi::Stopwatch draw;
-    this->DrawVolume(renWin, ren, vol, cam, plan, tables);
-    this->TimeWay(draw);
+    this->TimeWay(draw, this->DrawVolume(renWin, ren, vol, cam, plan, tables));
   }
   I.Order.Finish();
   if (sorted)
@@ -226,28 +225,29 @@ bool vtkPsiVolumeMapper::UpdateVisibilityOrder(
 }
 
 // Projects and draws the volume with the chosen projector: the geometry-shader program, or the
-// compute projector's projection pass and draw program.
-void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren, vtkVolume* vol,
-  const PsiFrameCamera& cam, const PsiFramePlan& plan, const std::vector<PsiGpuTable*>& tables)
+// compute projector's projection pass and draw program. Returns the seconds spent making the
+// programs ready (not the way's cost, TimeWay), or -1 when nothing was drawn.
+double vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren,
+  vtkVolume* vol, const PsiFrameCamera& cam, const PsiFramePlan& plan,
+  const std::vector<PsiGpuTable*>& tables)
 {
   vtkVLogScopeF(this->LogVerbosity, "Psi Volume: draw");
   Internals& I = *this->Impl;
   const psi::ShaderFeatures& features = plan.Features;
   const bool gradients = plan.Tables.Gradients;
-  const psi::Stopwatch ready; // building programs is not the way's cost (TimeWay)
-  I.ProgramSeconds = -1;      // nothing drawn
+  const psi::Stopwatch ready;
   const bool compute = PsiComputeProjector::Chosen(plan.Way.ComputeProjector, renWin);
   this->LastUsedProjector =
     static_cast<int>(compute ? psi::Projectors::ComputeShader : psi::Projectors::GeometryShader);
   vtkShaderProgram* program = this->ReadyProjection(renWin, features, compute);
   if (!program)
   {
-    return;
+    return -1;
   }
   this->SetShaderParameters(program, ren, vol, cam, plan, tables);
   I.Mesh.Activate(program, gradients);
   vtkShaderProgram* draw = compute ? I.Compute.ReadyDrawProgram(renWin) : program;
-  I.ProgramSeconds = draw ? ready.Seconds() : -1;
+  const double programSeconds = draw ? ready.Seconds() : -1;
   if (draw && compute)
   {
     this->SetShaderParameters(draw, ren, vol, cam, plan, tables);
@@ -273,6 +273,7 @@ void vtkPsiVolumeMapper::DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* 
   }
   I.Mesh.Deactivate();
   psi::DeactivateTables(tables);
+  return programSeconds;
 }
 
 // One image of the frame (two within depth peeling, `image` naming the interval): the

@@ -326,7 +326,7 @@ private:
   PsiTableSources UpdateTransferFunction(vtkOpenGLRenderWindow* renWin, vtkVolume* vol);
   PsiSceneFacts SceneFacts(vtkRenderer* ren, vtkVolume* vol, const PsiFrameCamera& cam);
   PsiFramePlan ChooseWay(const PsiFramePlan& plan, vtkRenderer* ren, const PsiFrameCamera& cam);
-  void TimeWay(const psi::Stopwatch& draw);
+  void TimeWay(const psi::Stopwatch& draw, double programSeconds);
   void NotePlan(const PsiFramePlan& plan);
   std::vector<PsiGpuTable*> TablesOf(const PsiFramePlan& plan);
   void UpdateTables(vtkOpenGLRenderWindow* renWin, const PsiFramePlan& plan,
@@ -334,7 +334,7 @@ private:
   // the draw (vtkPsiVolumeMapper.cxx)
   vtkShaderProgram* ReadyProjection(
     vtkOpenGLRenderWindow* renWin, const psi::ShaderFeatures& features, bool compute);
-  void DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren, vtkVolume* vol,
+  double DrawVolume(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren, vtkVolume* vol,
     const PsiFrameCamera& cam, const PsiFramePlan& plan, const std::vector<PsiGpuTable*>& tables);
   void DrawImage(vtkOpenGLRenderWindow* renWin, vtkVolume* vol, const PsiFramePlan& plan,
     vtkShaderProgram* draw, bool compute, int image, std::string& error);

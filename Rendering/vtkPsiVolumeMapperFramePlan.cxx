@@ -157,16 +157,16 @@ PsiFramePlan vtkPsiVolumeMapper::ChooseWay(
 }
 
 // The frame's time for the way it drew, while ways are timed: from `draw`'s start to the end of
-// the GL work (waited for), less the time spent building programs; a way that drew nothing
-// never wins.
-void vtkPsiVolumeMapper::TimeWay(const psi::Stopwatch& draw)
+// the GL work (waited for), less `programSeconds` spent building programs (DrawVolume); a way
+// that drew nothing (-1) never wins.
+void vtkPsiVolumeMapper::TimeWay(const psi::Stopwatch& draw, double programSeconds)
 {
   Internals& I = *this->Impl;
   if (I.Choice.IsMeasuring())
   {
     glFinish();
-    I.Choice.Record(I.ProgramSeconds < 0 ? std::numeric_limits<double>::infinity()
-                                         : draw.Seconds() - I.ProgramSeconds);
+    I.Choice.Record(programSeconds < 0 ? std::numeric_limits<double>::infinity()
+                                       : draw.Seconds() - programSeconds);
   }
 }
 

@@ -56,11 +56,8 @@ struct vtkPsiVolumeMapper::Internals
     this->Samples.End();
     this->SamplesPassed += this->Samples.Take();
   }
-  // The way each frame draws, timed on the first frames under 'Auto' (PsiMeasuredChoice.h), and
-  // the seconds the last frame spent making its programs ready (not the way's cost; -1: nothing
-  // drawn).
+  // The way each frame draws, timed on the first frames under 'Auto' (PsiMeasuredChoice.h).
   psi::MeasuredChoice Choice;
-  double ProgramSeconds = -1;
 
   // Transfer-function nodes for adaptive sampling, for the property and range they came from.
   PsiAdaptiveNodes AdaptiveNodes;
